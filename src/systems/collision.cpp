@@ -1,0 +1,103 @@
+#include "systems/collision.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace physics {
+
+Vector Collision::penetration(Vector p, Rect s) {
+  const Vector candidates[4] = {
+      {p.x, 0.0}, {p.x + s.width, 0.0}, {0.0, p.y}, {0.0, p.y + s.height}};
+  Vector best = candidates[0];
+  double best_len = std::abs(p.x);
+  for (int i = 1; i < 4; ++i) {
+    const double len = std::abs(candidates[i].x) + std::abs(candidates[i].y);  // one is 0
+    if (len < best_len) {
+      best = candidates[i];
+      best_len = len;
+    }
+  }
+  return best;
+}
+
+bool Collision::resolve(Components& k, EntityId c, EntityId b, Contact* out) {
+  const double mc = k.mass[c];
+  const double mb = k.mass[b];
+  // Two walls never collide (sheet: "deux murs ne font pas de collision").
+  if (!std::isfinite(mc) && !std::isfinite(mb)) return false;
+
+  const auto [s_pos, s] = Rect::mdiff(k.position[c], k.box[c], k.position[b], k.box[b]);
+  if (!Rect::has_origin(s_pos, s)) return false;
+
+  Vector n = penetration(s_pos, s);
+
+  // Share the position correction in proportion to the speeds (N_c, N_b).
+  // A fixed body is never moved, even a moving one (a platform): the sheet's
+  // ratio would otherwise push a wall out of a block resting against it.
+  const double vc = Vector::norm(k.velocity[c]);
+  const double vb = Vector::norm(k.velocity[b]);
+  double nc, nb;
+  if (!std::isfinite(mb)) {
+    nc = 1.0, nb = 0.0;
+  } else if (!std::isfinite(mc)) {
+    nc = 0.0, nb = 1.0;
+  } else if (vc + vb == 0.0) {
+    // Both at rest: the heavier ejects the lighter; equal masses: b moves.
+    if (mb > mc) nc = 1.0, nb = 0.0;
+    else nc = 0.0, nb = 1.0;
+  } else {
+    nc = vc / (vc + vb);
+    nb = vb / (vc + vb);
+  }
+  k.position[c] = k.position[c] + nc * n;
+  k.position[b] = k.position[b] - nb * n;
+
+  const Vector pen = n;
+  n = Vector::normalize(n);
+  const Vector v = k.velocity[c] - k.velocity[b];
+  const double vn = Vector::dot(v, n);
+  // Only bodies that approach along n exchange an impulse. A pair already
+  // separating (it was pushed apart last frame but still overlaps) gets the
+  // position correction alone: applying j there would pull it back together.
+  const bool approaching = vn < 0.0;
+  if (approaching) {
+    // The pair's restitution is the smaller of the two materials': a body made
+    // of clay stays dead whatever it hits. Default 1 (the sheet's e).
+    const double e = std::min(k.restitution[c], k.restitution[b]);
+    const double wc = 1.0 / mc, wb = 1.0 / mb;  // 1/∞ = 0
+    // The sheet's j = -(1+e)(v·n)/(1/M_c + 1/M_b) and v_c += n j/M_c,
+    // v_b -= n j/M_b, with j/M_c written as
+    // -(1+e)(v·n)·w_c/(w_c+w_b): the same value, but exact when b is fixed
+    // (ratio 1) or the masses are equal (ratio 1/2), so a wall reverses the
+    // normal velocity bit for bit.
+    //
+    // The sheet says to add these changes to sum_forces; the course's
+    // correction sets the velocities. We set them: they are velocity changes
+    // (impulse / mass), not forces, and Forces would scale them by dt/m a
+    // frame late. Setting them now also means a body touching two others in
+    // one pass meets the second one with the velocity the first gave it
+    // (sequential impulses), so nothing is counted twice.
+    const double dv = -(1.0 + e) * vn;
+    k.velocity[c] = k.velocity[c] + (dv * (wc / (wc + wb))) * n;
+    k.velocity[b] = k.velocity[b] - (dv * (wb / (wc + wb))) * n;
+  }
+  if (out) *out = Contact{c, b, pen, n, approaching};
+  return true;
+}
+
+void Collision::update(Components& k) {
+  contacts_.clear();
+  contact_count_ = 0;
+  const std::size_t count = entities_.size();
+  for (std::size_t i = 0; i < count; ++i) {
+    for (std::size_t jdx = i + 1; jdx < count; ++jdx) {
+      Contact contact;
+      if (resolve(k, entities_[i], entities_[jdx], record_contacts ? &contact : nullptr)) {
+        ++contact_count_;
+        if (record_contacts) contacts_.push_back(contact);
+      }
+    }
+  }
+}
+
+}  // namespace physics

@@ -1,0 +1,14 @@
+// Move system (course: systems/move.ml): x += dt * v.
+#pragma once
+
+#include "component_defs.hpp"
+
+namespace physics {
+
+class Move : public System<component::position, component::velocity> {
+ public:
+  // dt in ms (the course's 1000/60); velocities are px/ms.
+  void update(Components& c, double dt) const;
+};
+
+}  // namespace physics

@@ -1,0 +1,57 @@
+// The SDL front end: a window, its renderer and the HUD font, owned RAII-style.
+// This header names no SDL type, so game.cpp and the tests need no SDL headers;
+// window.cpp is built into the game program only.
+#pragma once
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "world.hpp"
+
+namespace physics {
+
+struct WindowError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// What the window reports back each frame, without SDL types.
+struct InputEvent {
+  enum class Kind { quit, key, mouse_down, mouse_up, mouse_move } kind;
+  int key = 0;  // SDL keycode for Kind::key
+  int x = 0, y = 0;
+  int button = 0;
+};
+
+class Window {
+ public:
+  // Opens a window of the given size. Throws WindowError when no display can
+  // be opened (the caller falls back to a headless run). A missing font is
+  // not an error: the HUD is then off and `hud_warning()` says why.
+  Window(int width, int height, const std::string& title);
+  ~Window();
+  Window(const Window&) = delete;
+  Window& operator=(const Window&) = delete;
+
+  std::vector<InputEvent> poll_events();
+  // Clears, draws the world through its Draw system, then the HUD lines.
+  void render(const World& world, const std::vector<std::string>& hud);
+  void present();
+  // Saves what the last render() drew, as PNG.
+  void screenshot(const std::string& path);
+  const std::string& hud_warning() const;
+  // Monotonic seconds, from SDL's high resolution counter.
+  double seconds() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// True when a display looks available (DISPLAY or WAYLAND_DISPLAY set, or an
+// explicit SDL_VIDEODRIVER). Checked before touching SDL at all, so a headless
+// machine never initialises it.
+bool display_available();
+
+}  // namespace physics

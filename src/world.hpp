@@ -1,0 +1,53 @@
+// A world: the component arrays, the systems a scene declared, and the
+// parameters of the step. It replaces the OCaml code's global tables, so that
+// tests and the testbed can hold several worlds at once.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "component_defs.hpp"
+#include "system_defs.hpp"
+
+namespace physics {
+
+inline constexpr double course_dt = 1000.0 / 60.0;  // ms, the sheet's dt
+
+struct Params {
+  double dt = course_dt;    // ms per frame
+  int substeps = 1;         // Forces/Move/Collision run this many times with dt/substeps
+  Vector gravity{};         // px/ms², applied by Forces to finite masses
+};
+
+// Throws std::invalid_argument naming the bad parameter.
+void validate(const Params& p);
+
+// Wall-clock time spent in each physics system since the world was made.
+struct SystemTimes {
+  std::array<std::int64_t, 4> ns{};  // indexed by SystemId
+  std::int64_t steps = 0;
+  double ms_per_step(SystemId s) const;
+  double total_ms_per_step() const;
+};
+
+struct World {
+  Components components;
+  Systems systems;
+  Params params;
+  SystemTimes times;
+  std::int64_t frame = 0;
+
+  explicit World(SystemSet set = {}, Params p = {});
+
+  // One frame of physics, in the sheet's order: Forces, Move, Collision.
+  // (Draw is the front end's business.)
+  void step();
+
+  // Diagnostics over finite masses (fixed bodies carry no kinetic energy and
+  // an infinite momentum that means nothing).
+  double kinetic_energy() const;
+  Vector momentum() const;
+  std::size_t finite_bodies() const;
+};
+
+}  // namespace physics
