@@ -12,6 +12,8 @@ void validate(const Params& p) {
     throw std::invalid_argument("dt must be a finite number > 0 (got " + std::to_string(p.dt) + ")");
   if (p.substeps < 1)
     throw std::invalid_argument("substeps must be >= 1 (got " + std::to_string(p.substeps) + ")");
+  if (p.iterations < 1)
+    throw std::invalid_argument("iterations must be >= 1 (got " + std::to_string(p.iterations) + ")");
   if (!std::isfinite(p.gravity.x) || !std::isfinite(p.gravity.y))
     throw std::invalid_argument("gravity must be finite");
 }

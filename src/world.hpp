@@ -13,10 +13,18 @@ namespace physics {
 
 inline constexpr double course_dt = 1000.0 / 60.0;  // ms, the sheet's dt
 
+// How Collision resolves contacts. `course` is the sheet's one pass over the
+// pairs and stays the default; `stable` is the iterated contact solver for
+// resting contact and stacks (see the numerics options in the README).
+enum class Solver : std::uint8_t { course, stable };
+
 struct Params {
   double dt = course_dt;    // ms per frame
   int substeps = 1;         // Forces/Move/Collision run this many times with dt/substeps
   Vector gravity{};         // px/ms², applied by Forces to finite masses
+  bool ccd = false;         // swept collision (time of impact), no tunnelling
+  Solver solver = Solver::course;
+  int iterations = 8;       // velocity iterations of the stable solver
 };
 
 // Throws std::invalid_argument naming the bad parameter.
