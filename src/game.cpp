@@ -105,14 +105,16 @@ using namespace physics;
 constexpr std::int64_t headless_frames = 600;
 
 void usage(std::ostream& out) {
-  out << "usage: game [--headless] [--frames N] [--seed S] [--help]\n"
+  out << "usage: game [--headless] [--frames N] [--seed S] [--screenshot FILE.png] [--help]\n"
          "  Opens the course's question-9 scene in a window (Esc quits).\n"
-         "  --headless   run without a window and print a summary (also when no display)\n"
-         "  --frames N   frames to run headless (default 600)\n"
-         "  --seed S     seed of the random blocks (default 42)\n";
+         "  --headless          run without a window and print a summary (also when no display)\n"
+         "  --frames N          frames to run (headless default 600; in a window, quit after N)\n"
+         "  --seed S            seed of the random blocks (default 42)\n"
+         "  --screenshot FILE   save the window's last frame as PNG (with --frames)\n";
 }
 
-int run_window(World& w) {
+// frames < 0: until the user quits.
+int run_window(World& w, std::int64_t frames, const std::string& screenshot) {
   Window win(Game::width, Game::height, "physics - course TP3");
   if (!win.hud_warning().empty()) std::cerr << "warning: " << win.hud_warning() << "\n";
   // Fixed time step: the physics advances by dt whatever the display's rate,
@@ -133,6 +135,10 @@ int run_window(World& w) {
       acc -= w.params.dt;
     }
     win.render(w, {Game::hud_line(w, fps)});
+    if (frames >= 0 && w.frame >= frames) {
+      if (!screenshot.empty()) win.screenshot(screenshot);
+      running = false;
+    }
     win.present();
   }
   return 0;
@@ -142,7 +148,8 @@ int run_window(World& w) {
 
 int main(int argc, char** argv) {
   bool headless = false;
-  std::int64_t frames = headless_frames;
+  std::int64_t frames = -1;
+  std::string screenshot;
   std::uint64_t seed = 42;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -162,6 +169,8 @@ int main(int argc, char** argv) {
       } else if (a == "--frames") {
         frames = std::stoll(value("--frames"));
         if (frames < 0) throw std::invalid_argument("negative");
+      } else if (a == "--screenshot") {
+        screenshot = value("--screenshot");
       } else if (a == "--seed") {
         seed = std::stoull(value("--seed"));
       } else {
@@ -178,23 +187,24 @@ int main(int argc, char** argv) {
     headless = true;
     why = "no display (DISPLAY, WAYLAND_DISPLAY and SDL_VIDEODRIVER unset)";
   }
+  if (!screenshot.empty() && frames < 0) frames = 60;
   SystemSet systems;
   systems.draw = !headless;
   World w(systems);
   Game::init_scene(w, seed);
   if (!headless) {
     try {
-      return run_window(w);
+      return run_window(w, frames, screenshot);
     } catch (const WindowError& e) {
       std::cerr << "game: " << e.what() << "; running headless\n";
       why = std::string("window failed: ") + e.what();
       World fresh(SystemSet{false, true, true, true});
       Game::init_scene(fresh, seed);
-      Game::print_summary(std::cout, fresh, Game::run_headless(fresh, frames), why);
+      Game::print_summary(std::cout, fresh, Game::run_headless(fresh, frames < 0 ? headless_frames : frames), why);
       return 0;
     }
   }
-  Game::print_summary(std::cout, w, Game::run_headless(w, frames), why);
+  Game::print_summary(std::cout, w, Game::run_headless(w, frames < 0 ? headless_frames : frames), why);
   return 0;
 }
 #endif
