@@ -10,9 +10,12 @@ OPT      ?= -O2
 CXXFLAGS := -std=c++20 $(OPT) -g -Wall -Wextra -Werror -ffp-contract=off -Isrc -MMD -MP
 LDFLAGS  :=
 BUILD    := build
+ifneq ($(OPT),-O2)
+  BUILD    := build/opt$(subst -,,$(OPT))
+endif
 
 ifeq ($(SANITIZE),1)
-  BUILD    := build/sanitize
+  BUILD    := $(BUILD)/sanitize
   CXXFLAGS += -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
   LDFLAGS  += -fsanitize=address,undefined
 endif
@@ -35,7 +38,7 @@ TEST_OBJ := $(TEST_SRC:%.cpp=$(BUILD)/obj/%.o) $(BUILD)/obj/src/game_nomain.o
 SDL_CFLAGS = $(shell pkg-config --cflags sdl2 SDL2_ttf)
 SDL_LIBS   = $(shell pkg-config --libs sdl2 SDL2_ttf)
 
-.PHONY: all run test deps clean check-no-sdl
+.PHONY: all run test deps clean check-no-sdl determinism
 all: $(BUILD)/game $(BUILD)/tests
 
 deps:
@@ -79,6 +82,11 @@ $(BUILD)/obj/%.o: %.cpp
 $(BUILD)/obj/src/game_nomain.o: src/game.cpp
 	@mkdir -p $(@D)
 	$(CXX) $(CXXFLAGS) -DGAME_NO_MAIN -c $< -o $@
+
+# The committed state hash must come out of -O0 and -O2 builds alike.
+determinism: deps
+	@$(MAKE) --no-print-directory test TEST_ARGS=--run_test=determinism OPT=-O2
+	@$(MAKE) --no-print-directory test TEST_ARGS=--run_test=determinism OPT=-O0
 
 clean:
 	rm -rf build
