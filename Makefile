@@ -38,7 +38,7 @@ TEST_OBJ := $(TEST_SRC:%.cpp=$(BUILD)/obj/%.o) $(BUILD)/obj/src/game_nomain.o
 SDL_CFLAGS = $(shell pkg-config --cflags sdl2 SDL2_ttf)
 SDL_LIBS   = $(shell pkg-config --libs sdl2 SDL2_ttf)
 
-.PHONY: all run test deps clean check-no-sdl determinism
+.PHONY: all run test deps clean check-no-sdl determinism memcheck
 all: $(BUILD)/game $(BUILD)/tests
 
 deps:
@@ -87,6 +87,13 @@ $(BUILD)/obj/src/game_nomain.o: src/game.cpp
 determinism: deps
 	@$(MAKE) --no-print-directory test TEST_ARGS=--run_test=determinism OPT=-O2
 	@$(MAKE) --no-print-directory test TEST_ARGS=--run_test=determinism OPT=-O0
+
+# valgrind memcheck on a headless run of the default scene: no error, no leak.
+memcheck: deps
+	@$(MAKE) --no-print-directory PACKAGES=valgrind deps
+	@$(MAKE) --no-print-directory $(BUILD)/game
+	valgrind --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite,indirect \
+	  ./$(BUILD)/game --headless --frames 2000
 
 clean:
 	rm -rf build
