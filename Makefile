@@ -28,6 +28,7 @@ CORE_SRC := src/utils/vect.cpp src/utils/rect.cpp src/utils/png.cpp \
             src/component_defs.cpp src/system_defs.cpp src/world.cpp \
             src/systems/move.cpp src/systems/forces.cpp src/systems/collision.cpp \
             src/entities/block.cpp
+CORE_SRC += src/systems/broadphase.cpp
 GAME_SRC := src/game.cpp src/window.cpp src/systems/draw.cpp
 TEST_SRC := $(wildcard tests/*.cpp)
 

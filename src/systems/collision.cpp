@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <stdexcept>
 
 namespace physics {
 
@@ -85,7 +87,7 @@ bool Collision::resolve(Components& k, EntityId c, EntityId b, Contact* out) {
   return true;
 }
 
-void Collision::update(Components& k) {
+void Collision::update_all_pairs(Components& k) {
   contacts_.clear();
   contact_count_ = 0;
   const std::size_t count = entities_.size();
@@ -98,6 +100,99 @@ void Collision::update(Components& k) {
       }
     }
   }
+}
+
+void Collision::build_broadphase(const Components& k, double grow) {
+  const std::size_t n = entities_.size();
+  boxes_.resize(n);
+  fixed_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const EntityId e = entities_[i];
+    boxes_[i] = Aabb::around(k.position[e], k.box[e], grow);
+    // The same test as resolve's "two walls never collide".
+    fixed_[i] = !std::isfinite(k.mass[e]);
+  }
+  grid_.build(boxes_, fixed_);
+}
+
+bool Collision::refresh(const Components& k, std::uint32_t i, PairKey current) {
+  const EntityId e = entities_[i];
+  if (boxes_[i].contains(k.position[e], k.box[e])) return false;
+  // Pushed out of its box: the pairs found when the pass began may no longer
+  // hold all of its contacts. Give it a new box and queue the pairs it may
+  // now form that the pass has not reached yet (the earlier ones are behind
+  // us in the sheet's loop too).
+  const Aabb box = Aabb::around(k.position[e], k.box[e], margin);
+  boxes_[i] = box;
+  grid_.move(i, box);
+  grid_.query(box, [&](std::uint32_t j) {
+    if (j == i || (fixed_[i] && fixed_[j])) return;
+    const PairKey key = pair_key(i, j);
+    if (key <= current) return;
+    found_late_.push_back(key);
+    std::push_heap(found_late_.begin(), found_late_.end(), std::greater<>());
+  });
+  ++stats_.requeries;
+  return true;
+}
+
+void Collision::update(Components& k) {
+  contacts_.clear();
+  contact_count_ = 0;
+  stats_ = {};
+  found_late_.clear();
+  // Every body gets a box `margin` px larger than itself, and the pass takes
+  // the pairs of overlapping boxes in the sheet's order. A pair whose boxes
+  // do not overlap cannot collide while both bodies stay in their boxes;
+  // corrections may push a body out of its box, and refresh() then finds
+  // its new pairs. So the pass resolves exactly the pairs that the all-pairs
+  // loop finds overlapping, in the same order, with the same values.
+  build_broadphase(k, margin);
+  stats_.candidates = grid_.pairs().size();
+  // Past this many bodies out of their boxes (a crowded or overlapping
+  // start), rebuilding at the current positions is cheaper than querying on.
+  const std::size_t rebuild_after = std::max<std::size_t>(256, entities_.size() / 4);
+  std::size_t moved = 0, next = 0;
+  PairKey last = ~PairKey{0};  // never a pair: i < j < 2^32 - 1
+  for (;;) {
+    const std::vector<PairKey>& listed = grid_.pairs();
+    const bool in_list = next < listed.size();
+    if (!in_list && found_late_.empty()) break;
+    PairKey key;
+    if (!found_late_.empty() && (!in_list || found_late_.front() < listed[next])) {
+      std::pop_heap(found_late_.begin(), found_late_.end(), std::greater<>());
+      key = found_late_.back();
+      found_late_.pop_back();
+    } else {
+      key = listed[next++];
+    }
+    if (key == last) continue;  // found both when the pass began and later
+    last = key;
+
+    const std::uint32_t i = pair_first(key), j = pair_second(key);
+    Contact contact;
+    if (!resolve(k, entities_[i], entities_[j], record_contacts ? &contact : nullptr)) continue;
+    ++contact_count_;
+    if (record_contacts) contacts_.push_back(contact);
+    moved += refresh(k, i, key) + refresh(k, j, key);
+    if (moved > rebuild_after) {
+      build_broadphase(k, margin);
+      const std::vector<PairKey>& rebuilt = grid_.pairs();
+      next = static_cast<std::size_t>(std::upper_bound(rebuilt.begin(), rebuilt.end(), key) - rebuilt.begin());
+      found_late_.clear();
+      moved = 0;
+      ++stats_.rebuilds;
+    }
+  }
+}
+
+std::vector<std::pair<EntityId, EntityId>> Collision::candidate_pairs(const Components& k, double grow) {
+  if (!(grow >= 0.0)) throw std::invalid_argument("candidate_pairs: margin must be >= 0");
+  build_broadphase(k, grow);
+  std::vector<std::pair<EntityId, EntityId>> out;
+  out.reserve(grid_.pairs().size());
+  for (const PairKey key : grid_.pairs()) out.emplace_back(entities_[pair_first(key)], entities_[pair_second(key)]);
+  return out;
 }
 
 }  // namespace physics

@@ -1,0 +1,170 @@
+// Broadphase: finds the pairs of bodies whose boxes may touch, so that
+// Collision does not test every pair (the sheet's loop is O(n²): fine for ten
+// blocks, hopeless for ten thousand).
+//
+// Why a uniform grid and not sort-and-sweep (measured by `make bench`, section
+// "broadphase", same boxes fed to both, see bench/RESULTS.md): one sorted axis
+// only separates bodies along x, so in a square world of n bodies each box is
+// tested against the ~sqrt(n) boxes that share its x range; at 100 000 gas
+// bodies that is ~100 tests per body per pass and sort-and-sweep was about 10
+// times slower than the grid, which tests each box against the few boxes of
+// its 3×3 neighbouring cells whatever n is. The grid's cost grows linearly.
+//
+// The grid is rebuilt from scratch every pass (counting sort of the boxes by
+// cell): no state survives between passes, so bodies that were moved, resized,
+// given another mass, registered or unregistered by anyone are always seen as
+// they are. Rebuilding costs O(n) and is cheaper than keeping a persistent
+// structure in sync.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "utils/rect.hpp"
+#include "utils/vect.hpp"
+
+namespace physics {
+
+// An axis-aligned box in float, rounded outwards from the double box it was
+// made from, so it always contains it: a pair of bodies whose Aabbs do not
+// overlap cannot overlap either. Float halves the memory the grid walks.
+struct Aabb {
+  float min_x = 0, min_y = 0, max_x = 0, max_y = 0;
+
+  // The box of a body at p of size r, grown by `margin` px on every side.
+  static Aabb around(Vector p, Rect r, double margin);
+  // Whether the body at p of size r is still inside this box, computed as
+  // the body's own corners p and p + r are in double: exactly the values that
+  // Collision::resolve compares.
+  bool contains(Vector p, Rect r) const {
+    return min_x <= p.x && min_y <= p.y && p.x + r.width <= max_x && p.y + r.height <= max_y;
+  }
+  // False when a bound is NaN (a body at NaN collides with nothing, as in
+  // Collision::resolve). Bounds may be infinite for bodies beyond float range.
+  bool valid() const { return min_x == min_x && min_y == min_y && max_x == max_x && max_y == max_y; }
+  double extent() const;  // the larger side
+
+  // Closed test: boxes that merely touch count as overlapping (a superset of
+  // the strict test of Rect::has_origin, so no contact is ever missed).
+  friend bool overlap(const Aabb& a, const Aabb& b) {
+    return a.min_x <= b.max_x && b.min_x <= a.max_x && a.min_y <= b.max_y && b.min_y <= a.max_y;
+  }
+};
+
+// A pair (i, j), i < j, of indices into the boxes given to the broadphase,
+// packed so that sorting keys sorts pairs in the order of the sheet's loop
+// "for i, for j > i".
+using PairKey = std::uint64_t;
+constexpr PairKey pair_key(std::uint32_t a, std::uint32_t b) {
+  return a < b ? (PairKey{a} << 32) | b : (PairKey{b} << 32) | a;
+}
+constexpr std::uint32_t pair_first(PairKey k) { return static_cast<std::uint32_t>(k >> 32); }
+constexpr std::uint32_t pair_second(PairKey k) { return static_cast<std::uint32_t>(k); }
+
+// Uniform grid of square cells, each body stored once, in the cell of its
+// box's lower corner. A cell is at least as wide as the largest "small" box,
+// so a box can only overlap boxes stored in its own cell and the 8 around it.
+// Boxes much larger than the typical one (walls, platforms) would force huge
+// cells: they are kept aside in a short list and tested against the grid.
+class UniformGrid {
+ public:
+  // Finds every pair of overlapping boxes except pairs of two fixed bodies
+  // (two infinite masses never collide, so they never enter the list).
+  // Boxes with a NaN bound (a body at NaN) overlap nothing.
+  // O(n + pairs); the result is in pairs(), sorted.
+  void build(std::span<const Aabb> boxes, std::span<const std::uint8_t> fixed);
+  const std::vector<PairKey>& pairs() const { return pairs_; }
+
+  // Body i now has the box `box` for later queries. The pairs of build() are
+  // left as they are; the box i had when the grid was built stays in its cell
+  // (queries may report it: callers must accept extra candidates).
+  void move(std::uint32_t i, const Aabb& box);
+
+  // Calls f(j) for every body j whose current box may overlap `box`; every j
+  // whose box does overlap is reported at least once. j may be reported more
+  // than once, and the body whose box is queried may be reported itself.
+  template <class F>
+  void query(const Aabb& box, F&& f) const {
+    query_grid(box, f);
+    for (std::size_t l = 0; l < large_.size(); ++l)
+      if (overlap(large_box_[l], box)) f(large_[l]);
+  }
+
+  // Diagnostics for the benchmark.
+  std::size_t cells() const { return static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_); }
+  double cell_size() const { return cell_; }
+  std::size_t large_count() const { return large_.size(); }
+
+ private:
+  struct Entry {
+    Aabb box;
+    std::uint32_t index;
+  };
+  struct Moved {
+    Entry entry;
+    std::int32_t next;  // next moved entry of the same cell, -1 at the end
+  };
+
+  // query() without the large bodies.
+  template <class F>
+  void query_grid(const Aabb& box, F&& f) const;
+  int cell_x(double x) const;
+  int cell_y(double y) const;
+  void size_grid(std::span<const Aabb> boxes, std::size_t small, double max_extent);
+  void emit(std::uint32_t a, std::uint32_t b);
+  void sort_pairs(std::size_t n);
+
+  // Geometry.
+  double x0_ = 0, y0_ = 0, cell_ = 1, inv_cell_ = 1;
+  int nx_ = 1, ny_ = 1;
+  double max_small_extent_ = 0;  // every box in the grid is at most this wide
+
+  std::vector<std::uint32_t> cell_start_;  // entries of cell c: [cell_start_[c], cell_start_[c+1])
+  std::vector<Entry> entries_;             // the small boxes, sorted by cell
+  std::vector<std::uint32_t> cell_of_;     // scratch: cell of each small body
+  std::vector<std::uint8_t> is_large_;     // per body
+  std::vector<std::uint32_t> large_;       // indices of the large bodies
+  std::vector<Aabb> large_box_;            // their current boxes
+  std::vector<std::int32_t> large_slot_;   // per body: position in large_, or -1
+  std::vector<std::uint8_t> fixed_;        // per body, copied from build()
+
+  // Bodies moved after build(), per cell (linked lists, reset at each build).
+  std::vector<std::int32_t> moved_head_;
+  std::vector<std::uint32_t> moved_cells_;
+  std::vector<Moved> moved_;
+
+  // Pairs, unsorted then sorted (counting sort on the first index).
+  std::vector<PairKey> found_;
+  std::vector<std::uint32_t> first_count_;
+  std::vector<PairKey> pairs_;
+};
+
+template <class F>
+void UniformGrid::query_grid(const Aabb& box, F&& f) const {
+  if (!box.valid()) return;
+  // A stored box overlapping `box` has its lower corner at most
+  // max_small_extent_ before box.min: scan from there. The small extra
+  // subtraction covers the rounding of the subtraction itself.
+  double lo_x = box.min_x - max_small_extent_;
+  double lo_y = box.min_y - max_small_extent_;
+  lo_x -= (lo_x < 0 ? -lo_x : lo_x) * 0x1p-40 + 0x1p-40;
+  lo_y -= (lo_y < 0 ? -lo_y : lo_y) * 0x1p-40 + 0x1p-40;
+  const int cx0 = cell_x(lo_x), cx1 = cell_x(box.max_x);
+  const int cy0 = cell_y(lo_y), cy1 = cell_y(box.max_y);
+  for (int cy = cy0; cy <= cy1; ++cy) {
+    const std::size_t row = static_cast<std::size_t>(cy) * static_cast<std::size_t>(nx_);
+    // The cells cx0..cx1 of a row are contiguous in entries_.
+    const std::uint32_t end = cell_start_[row + static_cast<std::size_t>(cx1) + 1];
+    for (std::uint32_t e = cell_start_[row + static_cast<std::size_t>(cx0)]; e < end; ++e)
+      if (overlap(entries_[e].box, box)) f(entries_[e].index);
+    if (moved_.empty()) continue;
+    for (int cx = cx0; cx <= cx1; ++cx)
+      for (std::int32_t m = moved_head_[row + static_cast<std::size_t>(cx)]; m >= 0;
+           m = moved_[static_cast<std::size_t>(m)].next)
+        if (overlap(moved_[static_cast<std::size_t>(m)].entry.box, box))
+          f(moved_[static_cast<std::size_t>(m)].entry.index);
+  }
+}
+
+}  // namespace physics

@@ -1,0 +1,292 @@
+// The broadphase: the grid finds exactly the overlapping boxes, and Collision
+// with the broadphase resolves the same pairs in the same order with the same
+// results as the sheet's all-pairs loop (the oracle), bit for bit.
+#include <algorithm>
+#include <cstring>
+#include <limits>
+#include <vector>
+
+#include "game.hpp"
+#include "helpers.hpp"
+#include "systems/broadphase.hpp"
+#include "utils/random.hpp"
+
+using namespace physics;
+
+namespace {
+
+// Every pair of overlapping boxes, not both fixed, by brute force.
+std::vector<PairKey> brute_pairs(const std::vector<Aabb>& boxes, const std::vector<std::uint8_t>& fixed) {
+  std::vector<PairKey> out;
+  for (std::uint32_t i = 0; i < boxes.size(); ++i)
+    for (std::uint32_t j = i + 1; j < boxes.size(); ++j)
+      if (boxes[i].valid() && boxes[j].valid() && overlap(boxes[i], boxes[j]) && !(fixed[i] && fixed[j]))
+        out.push_back(pair_key(i, j));
+  return out;
+}
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool same_bits(Vector a, Vector b) { return same_bits(a.x, b.x) && same_bits(a.y, b.y); }
+
+// A random scene of `bodies` blocks in a walled region; `spread` < 1 packs
+// them into the top-left part of it so they start overlapping.
+struct Spec {
+  int bodies = 300;
+  int width = 800, height = 600;
+  double spread = 1.0;
+  int min_side = 4, max_side = 30;
+  double speed = 0.3;           // px/ms, per axis
+  double fixed_fraction = 0.0;  // small infinite-mass blocks among the others
+  double big_fraction = 0.0;    // blocks 5-10 times larger (kept out of the grid)
+  Vector gravity{};
+  double margin = 1.0;
+  bool shuffle = false;  // registration order differs from creation order
+  std::uint64_t seed = 1;
+};
+
+World make_scene(const Spec& s) {
+  World w = test::physics_world(Params{.gravity = s.gravity});
+  Game::init_walls(w, s.width, s.height);
+  Random rng(s.seed);
+  for (int n = 0; n < s.bodies; ++n) {
+    int side_x = rng.uniform_int(s.min_side, s.max_side), side_y = rng.uniform_int(s.min_side, s.max_side);
+    if (rng.uniform(0, 1) < s.big_fraction) side_x *= 8, side_y *= 5;
+    const double x = 40 + rng.uniform(0, (s.width - 80 - side_x) * s.spread);
+    const double y = 40 + rng.uniform(0, (s.height - 80 - side_y) * s.spread);
+    const bool fixed = rng.uniform(0, 1) < s.fixed_fraction;
+    const auto b = Block::make(w, x, y, side_x, side_y, test::grey, fixed ? infinity : rng.uniform(0.5, 20.0),
+                               rng.uniform(0, 1) < 0.5 ? 1.0 : rng.uniform(0, 1));
+    w.components.velocity[b.id] = {rng.uniform(-s.speed, s.speed), rng.uniform(-s.speed, s.speed)};
+  }
+  if (s.shuffle) {
+    Collision& c = *w.systems.collision;
+    for (EntityId e = 0; e < w.components.size(); ++e)
+      if (rng.uniform(0, 1) < 0.3) {
+        c.unregister(e);
+        c.register_entity(Block::t{e});
+      }
+  }
+  w.systems.collision->margin = s.margin;
+  w.systems.collision->record_contacts = true;
+  return w;
+}
+
+// Runs the same scene with the broadphase and with the all-pairs loop, frame
+// by frame, comparing the contacts of every pass and the final state.
+struct Outcome {
+  std::size_t contacts = 0, requeries = 0, rebuilds = 0, bad_frames = 0, bad_bodies = 0;
+};
+
+Outcome compare_with_oracle(const Spec& s, int frames) {
+  World fast = make_scene(s), oracle = make_scene(s);
+  Outcome out;
+  for (int f = 0; f < frames; ++f) {
+    for (World* w : {&fast, &oracle}) {
+      w->systems.forces->update(w->components, w->params.dt, w->params.gravity);
+      w->systems.move->update(w->components, w->params.dt);
+    }
+    fast.systems.collision->update(fast.components);
+    oracle.systems.collision->update_all_pairs(oracle.components);
+    const auto& a = fast.systems.collision->contacts();
+    const auto& b = oracle.systems.collision->contacts();
+    bool same = a.size() == b.size() &&
+                fast.systems.collision->contact_count() == oracle.systems.collision->contact_count();
+    for (std::size_t i = 0; same && i < a.size(); ++i)
+      same = a[i].c == b[i].c && a[i].b == b[i].b && same_bits(a[i].penetration, b[i].penetration) &&
+             same_bits(a[i].normal, b[i].normal) && a[i].approaching == b[i].approaching;
+    out.bad_frames += !same;
+    out.contacts += b.size();
+    out.requeries += fast.systems.collision->stats().requeries;
+    out.rebuilds += fast.systems.collision->stats().rebuilds;
+  }
+  for (EntityId e = 0; e < fast.components.size(); ++e)
+    out.bad_bodies += !(same_bits(fast.components.position[e], oracle.components.position[e]) &&
+                        same_bits(fast.components.velocity[e], oracle.components.velocity[e]));
+  return out;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(broadphase)
+
+BOOST_AUTO_TEST_CASE(boxes_are_rounded_outwards_and_contain_the_body) {
+  const Rect r{7, 3};
+  for (const double x : {0.0, 0.1, -0.1, 1.0 / 3.0, 123456.789, -9.87654321e6, 1e7 + 0.3, 3.3e20, -1e39}) {
+    const Vector p{x, -x / 7};
+    const Aabb tight = Aabb::around(p, r, 0.0);
+    BOOST_TEST(tight.contains(p, r));
+    BOOST_TEST(tight.min_x <= p.x);
+    BOOST_TEST(static_cast<double>(tight.max_x) >= p.x + r.width);
+    const Aabb grown = Aabb::around(p, r, 2.0);
+    BOOST_TEST(grown.contains(p, r));
+    BOOST_TEST(static_cast<double>(grown.min_x) <= p.x - 2.0);
+    BOOST_TEST(static_cast<double>(grown.max_y) >= p.y + r.height + 2.0);
+  }
+  // Beyond float range the box becomes infinite rather than wrong.
+  const Aabb far = Aabb::around({1e300, 0}, r, 1.0);
+  BOOST_TEST(far.contains({1e300, 0}, r));
+  BOOST_TEST(far.valid());
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  BOOST_TEST(!Aabb::around({nan, 0}, r, 1.0).valid());
+}
+
+BOOST_AUTO_TEST_CASE(the_grid_finds_exactly_the_overlapping_pairs_in_loop_order) {
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    Random rng(seed);
+    const int n = rng.uniform_int(0, 400);
+    const double world = rng.uniform(50, 3000);
+    std::vector<Aabb> boxes;
+    std::vector<std::uint8_t> fixed;
+    for (int i = 0; i < n; ++i) {
+      const double kind = rng.uniform(0, 1);
+      double w = rng.uniform(0.5, 30), h = rng.uniform(0.5, 30);
+      if (kind < 0.03) w = world, h = 20;  // walls and floors: kept out of the grid
+      const Vector p{rng.uniform(-world / 2, world), rng.uniform(-world / 2, world)};
+      Aabb b{static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.x + w),
+             static_cast<float>(p.y + h)};
+      if (kind > 0.99) b.min_x = std::numeric_limits<float>::quiet_NaN();
+      if (kind > 0.98 && kind <= 0.99) b.max_x = std::numeric_limits<float>::infinity();
+      if (kind > 0.97 && kind <= 0.98 && !boxes.empty()) b = boxes[static_cast<std::size_t>(rng.uniform_int(0, i - 1))];
+      boxes.push_back(b);
+      fixed.push_back(rng.uniform(0, 1) < 0.2);
+    }
+    UniformGrid grid;
+    grid.build(boxes, fixed);
+    const auto expected = brute_pairs(boxes, fixed);
+    BOOST_TEST(grid.pairs() == expected, "seed " << seed << ": " << grid.pairs().size() << " pairs, brute force "
+                                                 << expected.size());
+    BOOST_TEST(std::is_sorted(grid.pairs().begin(), grid.pairs().end()));
+  }
+}
+
+BOOST_AUTO_TEST_CASE(a_query_after_moves_reports_every_overlapping_box) {
+  Random rng(7);
+  std::vector<Aabb> boxes;
+  std::vector<std::uint8_t> fixed;
+  for (int i = 0; i < 500; ++i) {
+    const Vector p{rng.uniform(0, 1000), rng.uniform(0, 1000)};
+    boxes.push_back(Aabb::around(p, {rng.uniform_int(1, 20), rng.uniform_int(1, 20)}, 0.5));
+    fixed.push_back(0);
+  }
+  boxes.push_back(Aabb::around({0, 0}, {1000, 10}, 0.5));  // a large one
+  fixed.push_back(1);
+  UniformGrid grid;
+  grid.build(boxes, fixed);
+  // Move a third of the bodies anywhere, even far outside the grid.
+  for (std::uint32_t i = 0; i < boxes.size(); i += 3) {
+    const Vector p{rng.uniform(-2000, 3000), rng.uniform(-2000, 3000)};
+    boxes[i] = Aabb::around(p, {rng.uniform_int(1, 20), rng.uniform_int(1, 20)}, 0.5);
+    grid.move(i, boxes[i]);
+  }
+  std::size_t missed = 0, checked = 0;
+  for (int q = 0; q < 2000; ++q) {
+    const double reach = q % 2 ? 3100 : 1000;  // half of them where most boxes are
+    const Aabb box = Aabb::around({rng.uniform(-reach + 900, reach), rng.uniform(-reach + 900, reach)},
+                                  {rng.uniform_int(1, 150), rng.uniform_int(1, 150)}, 0.5);
+    std::vector<std::uint32_t> seen;
+    grid.query(box, [&](std::uint32_t j) { seen.push_back(j); });
+    for (std::uint32_t j = 0; j < boxes.size(); ++j)
+      if (overlap(boxes[j], box)) {
+        ++checked;
+        missed += std::find(seen.begin(), seen.end(), j) == seen.end();
+      }
+  }
+  BOOST_TEST(checked > 500u);
+  BOOST_TEST(missed == 0u);
+}
+
+BOOST_AUTO_TEST_CASE(candidate_pairs_are_the_overlapping_grown_boxes_never_two_infinite_masses) {
+  for (const double margin : {0.0, 1.0, 7.5}) {
+    World w = make_scene(Spec{.bodies = 300, .fixed_fraction = 0.2, .big_fraction = 0.05, .shuffle = true});
+    const Collision& c = *w.systems.collision;
+    const auto pairs = w.systems.collision->candidate_pairs(w.components, margin);
+    // Brute force over the registration order, with the same boxes.
+    std::vector<std::pair<EntityId, EntityId>> expected;
+    const auto ids = c.entities();
+    for (std::size_t i = 0; i < ids.size(); ++i)
+      for (std::size_t j = i + 1; j < ids.size(); ++j) {
+        const Components& k = w.components;
+        if (!std::isfinite(k.mass[ids[i]]) && !std::isfinite(k.mass[ids[j]])) continue;
+        if (overlap(Aabb::around(k.position[ids[i]], k.box[ids[i]], margin),
+                    Aabb::around(k.position[ids[j]], k.box[ids[j]], margin)))
+          expected.emplace_back(ids[i], ids[j]);
+      }
+    BOOST_TEST(pairs.size() == expected.size());
+    BOOST_TEST((pairs == expected));
+    std::size_t both_fixed = 0;
+    for (const auto& [a, b] : pairs) both_fixed += !std::isfinite(w.components.mass[a]) && !std::isfinite(w.components.mass[b]);
+    BOOST_TEST(both_fixed == 0u);
+  }
+  // The walls touch at their corners; they never make a pair.
+  World walls = test::physics_world();
+  Game::init_walls(walls);
+  BOOST_TEST(walls.systems.collision->candidate_pairs(walls.components, 5.0).empty());
+}
+
+BOOST_AUTO_TEST_CASE(sparse_gas_matches_the_all_pairs_loop_bit_for_bit) {
+  const Outcome o = compare_with_oracle(Spec{.bodies = 300, .seed = 11}, 300);
+  BOOST_TEST(o.contacts > 1000u);  // the comparison is not vacuous
+  BOOST_TEST(o.bad_frames == 0u);
+  BOOST_TEST(o.bad_bodies == 0u);
+}
+
+BOOST_AUTO_TEST_CASE(a_crowded_overlapping_start_matches_the_all_pairs_loop) {
+  // 400 blocks thrown into a quarter of the box: corrections push bodies far
+  // out of their boxes during the pass, which must be found again.
+  for (const double margin : {0.0, 1.0, 4.0}) {
+    const Outcome o = compare_with_oracle(
+        Spec{.bodies = 400, .spread = 0.25, .speed = 0.1, .margin = margin, .seed = 21}, 150);
+    BOOST_TEST(o.requeries > 100u, "margin " << margin << ": the in-pass path ran " << o.requeries << " times");
+    BOOST_TEST(o.bad_frames == 0u, "margin " << margin);
+    BOOST_TEST(o.bad_bodies == 0u, "margin " << margin);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(everything_on_one_spot_rebuilds_mid_pass_and_still_matches) {
+  // 500 blocks on a 10 px square: most leave their box on the first pass.
+  const Outcome o = compare_with_oracle(Spec{.bodies = 500, .spread = 0.01, .speed = 0.0, .seed = 5}, 40);
+  BOOST_TEST(o.rebuilds > 0u);
+  BOOST_TEST(o.bad_frames == 0u);
+  BOOST_TEST(o.bad_bodies == 0u);
+}
+
+BOOST_AUTO_TEST_CASE(gravity_static_blocks_big_blocks_and_shuffled_registration_match) {
+  const Vector g{0.0, 0.001};
+  const Spec specs[] = {
+      Spec{.bodies = 300, .spread = 0.6, .gravity = g, .seed = 31},
+      Spec{.bodies = 250, .spread = 0.5, .fixed_fraction = 0.15, .gravity = g, .shuffle = true, .seed = 32},
+      Spec{.bodies = 200, .spread = 0.7, .min_side = 1, .max_side = 12, .speed = 1.0, .big_fraction = 0.04,
+           .gravity = g, .margin = 0.25, .shuffle = true, .seed = 33},
+      Spec{.bodies = 300, .spread = 1.0, .min_side = 2, .max_side = 6, .speed = 3.0, .seed = 34},  // fast, tunnels
+  };
+  for (const Spec& s : specs) {
+    const Outcome o = compare_with_oracle(s, 200);
+    BOOST_TEST(o.contacts > 500u, "seed " << s.seed);
+    BOOST_TEST(o.bad_frames == 0u, "seed " << s.seed);
+    BOOST_TEST(o.bad_bodies == 0u, "seed " << s.seed);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(changes_between_passes_are_seen) {
+  // A body teleported, resized or made fixed between two passes: the
+  // broadphase keeps no state across passes, so it sees them.
+  World w = test::physics_world();
+  const auto a = Block::make(w, 100, 100, 20, 20, test::grey, 1.0);
+  const auto b = Block::make(w, 500, 500, 20, 20, test::grey, 1.0);
+  w.systems.collision->update(w.components);
+  BOOST_TEST(w.systems.collision->contact_count() == 0u);
+  w.components.position[b.id] = {110, 110};
+  w.systems.collision->update(w.components);
+  BOOST_TEST(w.systems.collision->contact_count() == 1u);
+  w.components.position[b.id] = {125, 100};
+  w.components.box[a.id] = {30, 20};
+  w.systems.collision->update(w.components);
+  BOOST_TEST(w.systems.collision->contact_count() == 1u);
+  w.components.mass[a.id] = w.components.mass[b.id] = infinity;
+  w.components.position[b.id] = {110, 100};
+  BOOST_TEST(w.systems.collision->candidate_pairs(w.components, 0.0).empty());
+  w.systems.collision->update(w.components);
+  BOOST_TEST(w.systems.collision->contact_count() == 0u);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
