@@ -133,7 +133,7 @@ Options parse(std::span<const std::string> args) {
   po::variables_map vm;
   try {
     std::vector<std::string> argv(args.begin(), args.end());
-    po::store(po::command_line_parser(argv).options(descriptions()).run(), vm);
+    po::store(po::command_line_parser(argv).options(descriptions()).positional({}).run(), vm);
     po::notify(vm);
   } catch (const po::error& e) {
     throw UsageError(std::string(e.what()) + " (see --help)");

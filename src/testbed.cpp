@@ -66,12 +66,14 @@ int Testbed::advance(double elapsed_ms, std::int64_t last_frame) {
   if (paused_ || !(elapsed_ms > 0.0)) return 0;
   const double dt = world_.params.dt;
   acc_ms_ = std::min(acc_ms_ + elapsed_ms * (slow_ ? slow_motion : 1.0), max_steps_per_frame * dt);
+  // Whole steps covered; the 1e-9 keeps k·dt summed from k pieces a step.
+  const int due = static_cast<int>(std::floor(acc_ms_ / dt + 1e-9));
   int n = 0;
-  while (acc_ms_ >= dt && n < max_steps_per_frame && world_.frame < last_frame) {
+  while (n < due && world_.frame < last_frame) {
     step();
-    acc_ms_ -= dt;
     ++n;
   }
+  acc_ms_ = due > 0 ? std::max(0.0, acc_ms_ - due * dt) : acc_ms_;
   return n;
 }
 
