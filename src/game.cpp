@@ -76,7 +76,6 @@ std::string hud_line(const World& w, double fps) {
 }  // namespace physics::Game
 
 #ifndef GAME_NO_MAIN
-#include <chrono>
 #include <limits>
 #include <optional>
 
@@ -118,9 +117,7 @@ int run_window(Cli::Session& s) {
     if (elapsed > 0) fps = 0.9 * fps + 0.1 / elapsed;
     // With --frames, stop at exactly that frame whatever the display's speed.
     tb.advance(elapsed * 1000.0, frames.value_or(std::numeric_limits<std::int64_t>::max()));
-    const auto t0 = std::chrono::steady_clock::now();
-    win->render(tb.world(), tb.view(fps, draw_ms));
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    const double ms = win->render(tb.world(), tb.view(fps, draw_ms));
     draw_ms = draw_ms == 0.0 ? ms : 0.9 * draw_ms + 0.1 * ms;
     if (frames && tb.world().frame >= *frames) {
       if (!o.screenshot.empty()) win->screenshot(o.screenshot);

@@ -57,10 +57,13 @@ class StrictDom : public nlohmann::json_sax<json> {
     position = std::max<std::size_t>(pos, 1);
     // nlohmann says "[json.exception.parse_error.101] parse error at line 2,
     // column 5: syntax error while ..."; keep what follows the position.
+    // Other errors (number overflow) have no position text: drop the "[...] " tag.
     std::string what = ex.what();
-    const auto col = what.find("column ");
-    if (const auto colon = what.find(": ", col == std::string::npos ? 0 : col); colon != std::string::npos)
-      what = what.substr(colon + 2);
+    if (const auto col = what.find("column "); col != std::string::npos) {
+      if (const auto colon = what.find(": ", col); colon != std::string::npos) what = what.substr(colon + 2);
+    } else if (const auto tag = what.find("] "); !what.empty() && what[0] == '[' && tag != std::string::npos) {
+      what = what.substr(tag + 2) + " (numbers must be finite)";
+    }
     error = what;
     return false;
   }

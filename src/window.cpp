@@ -146,14 +146,17 @@ Vector centre(const Components& c, EntityId e) {
 
 }  // namespace
 
-void Window::render(const World& world, const View& view) {
+double Window::render(const World& world, const View& view) {
   SDL_Renderer* r = impl_->renderer.get();
   SDL_SetRenderDrawBlendMode(r, SDL_BLENDMODE_BLEND);
   SDL_SetRenderDrawColor(r, 255, 255, 255, 255);
   SDL_RenderClear(r);
-  if (!world.systems.draw) return;
+  if (!world.systems.draw) return 0.0;
   const Draw& draw = *world.systems.draw;
+  const Uint64 t0 = SDL_GetPerformanceCounter();
   draw.update(world.components, r);
+  const double draw_ms =
+      1000.0 * static_cast<double>(SDL_GetPerformanceCounter() - t0) / static_cast<double>(SDL_GetPerformanceFrequency());
 
   const Components& c = world.components;
   if (view.overlays.aabb) {
@@ -187,7 +190,7 @@ void Window::render(const World& world, const View& view) {
     SDL_RenderDrawRectF(r, &ghost);
   }
 
-  if (!impl_->font) return;
+  if (!impl_->font) return draw_ms;
   const auto text = [&](const std::string& s, int x, int y, SDL_Color col) {
     Owned<SDL_Surface> surf(TTF_RenderUTF8_Blended(impl_->font.get(), s.c_str(), col));
     if (!surf) return 0;
@@ -201,7 +204,8 @@ void Window::render(const World& world, const View& view) {
   for (const std::string& s : view.hud) y += text(s, 48, y, SDL_Color{20, 20, 20, 255}) + 2;
   if (!view.help.empty()) {
     const int line_h = TTF_FontLineSkip(impl_->font.get());
-    const SDL_Rect panel{impl_->width - 460, 50, 410, static_cast<int>(view.help.size()) * line_h + 16};
+    // Below the HUD, so that neither hides the other.
+    const SDL_Rect panel{impl_->width - 460, y + 8, 410, static_cast<int>(view.help.size()) * line_h + 16};
     SDL_SetRenderDrawColor(r, 255, 255, 240, 225);
     SDL_RenderFillRect(r, &panel);
     SDL_SetRenderDrawColor(r, 60, 60, 60, 255);
@@ -209,6 +213,7 @@ void Window::render(const World& world, const View& view) {
     int hy = panel.y + 8;
     for (const std::string& s : view.help) hy += text(s, panel.x + 10, hy, SDL_Color{20, 20, 20, 255});
   }
+  return draw_ms;
 }
 
 void Window::present() { SDL_RenderPresent(impl_->renderer.get()); }

@@ -30,8 +30,8 @@ class Window {
   std::vector<InputEvent> poll_events();
   // Clears, draws the world through its Draw system, then the overlays the
   // view asks for (AABBs, velocities, contacts, the slingshot), the HUD lines
-  // and the key list.
-  void render(const World& world, const View& view);
+  // and the key list. Returns the Draw system's time, ms.
+  double render(const World& world, const View& view);
   void present();
   // Saves what the last render() drew, as PNG.
   void screenshot(const std::string& path);
