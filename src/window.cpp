@@ -144,6 +144,17 @@ Vector centre(const Components& c, EntityId e) {
   return c.position[e] + Vector{c.box[e].width / 2.0, c.box[e].height / 2.0};
 }
 
+// Where two boxes meet: the middle of the overlap of their x and y ranges
+// (after the correction they touch, so this lies on the shared edge).
+Vector contact_point(const Components& c, EntityId a, EntityId b) {
+  const auto mid = [](double lo1, double hi1, double lo2, double hi2) {
+    return (std::max(lo1, lo2) + std::min(hi1, hi2)) / 2.0;
+  };
+  const Vector pa = c.position[a], pb = c.position[b];
+  return {mid(pa.x, pa.x + c.box[a].width, pb.x, pb.x + c.box[b].width),
+          mid(pa.y, pa.y + c.box[a].height, pb.y, pb.y + c.box[b].height)};
+}
+
 }  // namespace
 
 double Window::render(const World& world, const View& view) {
@@ -175,7 +186,7 @@ double Window::render(const World& world, const View& view) {
   }
   for (const Contact& k : view.contacts) {
     if (k.c >= c.size() || k.b >= c.size()) continue;
-    const Vector at = centre(c, k.c);
+    const Vector at = contact_point(c, k.c, k.b);
     set_colour(r, penetration_colour);
     arrow(r, at, at + penetration_scale * k.penetration);
     set_colour(r, normal_colour);
@@ -191,12 +202,15 @@ double Window::render(const World& world, const View& view) {
   }
 
   if (!impl_->font) return draw_ms;
+  // Text on a pale backdrop, readable over a crowded scene.
   const auto text = [&](const std::string& s, int x, int y, SDL_Color col) {
     Owned<SDL_Surface> surf(TTF_RenderUTF8_Blended(impl_->font.get(), s.c_str(), col));
     if (!surf) return 0;
     Owned<SDL_Texture> tex(SDL_CreateTextureFromSurface(r, surf.get()));
     if (!tex) return 0;
     const SDL_Rect dst{x, y, surf->w, surf->h};
+    SDL_SetRenderDrawColor(r, 255, 255, 255, 170);
+    SDL_RenderFillRect(r, &dst);
     SDL_RenderCopy(r, tex.get(), nullptr, &dst);
     return surf->h;
   };
