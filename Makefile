@@ -1,7 +1,8 @@
 # 2D physics engine, the C++ port of the course's TP3 ("moteur physique").
 #   make run    installs what is missing, builds, opens the default scene
 #   make test   installs what is missing, builds, runs every test
-# Variables: SANITIZE=1 (ASan+UBSan build in build/sanitize), OPT=-O0 ..., ARGS="..." for run.
+# Variables: SANITIZE=1 (ASan+UBSan build in build/sanitize), OPT=-O0 ..., SCENE=name|file.json and
+# ARGS="..." for run (make run SCENE=gas ARGS="--headless --frames 1000").
 
 CXX      ?= g++
 OPT      ?= -O2
@@ -21,7 +22,8 @@ ifeq ($(SANITIZE),1)
 endif
 
 # Debian packages each target needs; `deps` installs the missing ones.
-PACKAGES := g++ make pkg-config libsdl2-dev libsdl2-ttf-dev libboost-test-dev fonts-dejavu-core
+PACKAGES := g++ make pkg-config libsdl2-dev libsdl2-ttf-dev libboost-test-dev fonts-dejavu-core \
+            nlohmann-json3-dev libboost-program-options-dev
 SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 CORE_SRC := src/utils/vect.cpp src/utils/rect.cpp src/utils/png.cpp \
@@ -29,8 +31,13 @@ CORE_SRC := src/utils/vect.cpp src/utils/rect.cpp src/utils/png.cpp \
             src/systems/move.cpp src/systems/forces.cpp src/systems/collision.cpp \
             src/entities/block.cpp
 CORE_SRC += src/systems/broadphase.cpp
-GAME_SRC := src/game.cpp src/window.cpp src/systems/draw.cpp
-TEST_SRC := $(wildcard tests/*.cpp)
+# Scenes (description, built-ins, JSON files), dumps and offscreen pictures: SDL-free, in the library.
+CORE_SRC += src/scene.cpp src/scene_json.cpp src/builtin_scenes.cpp src/dump.cpp src/offscreen.cpp
+# The command line and the testbed's input logic: SDL-free, linked into the game and the tests.
+APP_SRC  := src/cli.cpp src/testbed.cpp
+GAME_SRC := src/game.cpp src/window.cpp src/systems/draw.cpp $(APP_SRC)
+TEST_SRC := $(wildcard tests/*.cpp) $(APP_SRC)
+APP_LIBS := -lboost_program_options
 
 CORE_OBJ := $(CORE_SRC:%.cpp=$(BUILD)/obj/%.o)
 GAME_OBJ := $(GAME_SRC:%.cpp=$(BUILD)/obj/%.o)
@@ -53,10 +60,10 @@ deps:
 
 run: deps
 	@$(MAKE) --no-print-directory $(BUILD)/game
-	./$(BUILD)/game $(ARGS)
+	./$(BUILD)/game $(if $(SCENE),--scene $(SCENE)) $(ARGS)
 
 test: deps
-	@$(MAKE) --no-print-directory $(BUILD)/tests check-no-sdl
+	@$(MAKE) --no-print-directory $(BUILD)/tests $(BUILD)/game check-no-sdl
 	BOOST_TEST_COLOR_OUTPUT=no ./$(BUILD)/tests $(TEST_ARGS) 2>&1
 
 # The physics core must not depend on SDL: its library names no SDL symbol.
@@ -68,10 +75,10 @@ $(BUILD)/libphysics.a: $(CORE_OBJ)
 	ar rcs $@ $^
 
 $(BUILD)/game: $(GAME_OBJ) $(BUILD)/libphysics.a
-	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS) $(SDL_LIBS)
+	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS) $(SDL_LIBS) $(APP_LIBS)
 
 $(BUILD)/tests: $(TEST_OBJ) $(BUILD)/libphysics.a
-	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS) -lboost_unit_test_framework
+	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS) -lboost_unit_test_framework $(APP_LIBS)
 
 $(BUILD)/obj/src/window.o $(BUILD)/obj/src/systems/draw.o: CXXFLAGS += $(SDL_CFLAGS)
 

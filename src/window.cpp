@@ -3,12 +3,19 @@
 #include <SDL.h>
 #include <SDL_ttf.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <vector>
 
 #include "utils/png.hpp"
 
 namespace physics {
+
+// testbed.hpp's key codes are SDL's.
+static_assert(key::escape == SDLK_ESCAPE && key::tab == SDLK_TAB && key::space == SDLK_SPACE &&
+              key::right == SDLK_RIGHT && 'a' == SDLK_a && '1' == SDLK_1);
+
 namespace {
 
 struct SdlDeleter {
@@ -101,22 +108,126 @@ std::vector<InputEvent> Window::poll_events() {
   return out;
 }
 
-void Window::render(const World& world, const std::vector<std::string>& hud) {
+namespace {
+
+// Overlay colours: distinct from the walls (blue/black) and the blocks.
+constexpr SDL_Color aabb_colour{0, 170, 0, 255};
+constexpr SDL_Color velocity_colour{200, 0, 200, 255};
+constexpr SDL_Color normal_colour{230, 0, 0, 255};
+constexpr SDL_Color penetration_colour{0, 120, 255, 255};
+constexpr double velocity_scale = 100.0;    // px of arrow per px/ms: the distance covered in 100 ms
+constexpr double normal_length = 24.0;      // px
+constexpr double penetration_scale = 4.0;   // penetrations are a few px: drawn 4x
+
+void set_colour(SDL_Renderer* r, SDL_Color c) { SDL_SetRenderDrawColor(r, c.r, c.g, c.b, c.a); }
+
+bool drawable(Vector p) { return std::abs(p.x) < 1e6 && std::abs(p.y) < 1e6; }
+
+void line(SDL_Renderer* r, Vector a, Vector b) {
+  if (!drawable(a) || !drawable(b)) return;
+  SDL_RenderDrawLineF(r, float(a.x), float(a.y), float(b.x), float(b.y));
+}
+
+// A line with a small head, so the direction reads at a glance.
+void arrow(SDL_Renderer* r, Vector from, Vector to) {
+  line(r, from, to);
+  const Vector d = to - from;
+  const double n = Vector::norm(d);
+  if (n < 1e-9) return;
+  const Vector u = Vector::mult(1.0 / n, d), side{-u.y, u.x};
+  const double head = std::min(6.0, n / 2);
+  line(r, to, to - head * u + (head / 2) * side);
+  line(r, to, to - head * u - (head / 2) * side);
+}
+
+Vector centre(const Components& c, EntityId e) {
+  return c.position[e] + Vector{c.box[e].width / 2.0, c.box[e].height / 2.0};
+}
+
+// Where two boxes meet: the middle of the overlap of their x and y ranges
+// (after the correction they touch, so this lies on the shared edge).
+Vector contact_point(const Components& c, EntityId a, EntityId b) {
+  const auto mid = [](double lo1, double hi1, double lo2, double hi2) {
+    return (std::max(lo1, lo2) + std::min(hi1, hi2)) / 2.0;
+  };
+  const Vector pa = c.position[a], pb = c.position[b];
+  return {mid(pa.x, pa.x + c.box[a].width, pb.x, pb.x + c.box[b].width),
+          mid(pa.y, pa.y + c.box[a].height, pb.y, pb.y + c.box[b].height)};
+}
+
+}  // namespace
+
+double Window::render(const World& world, const View& view) {
   SDL_Renderer* r = impl_->renderer.get();
+  SDL_SetRenderDrawBlendMode(r, SDL_BLENDMODE_BLEND);
   SDL_SetRenderDrawColor(r, 255, 255, 255, 255);
   SDL_RenderClear(r);
-  if (world.systems.draw) world.systems.draw->update(world.components, r);
-  if (!impl_->font) return;
-  int y = 44;
-  for (const std::string& line : hud) {
-    Owned<SDL_Surface> surf(TTF_RenderUTF8_Blended(impl_->font.get(), line.c_str(), SDL_Color{20, 20, 20, 255}));
-    if (!surf) continue;
-    Owned<SDL_Texture> tex(SDL_CreateTextureFromSurface(r, surf.get()));
-    if (!tex) continue;
-    const SDL_Rect dst{48, y, surf->w, surf->h};
-    SDL_RenderCopy(r, tex.get(), nullptr, &dst);
-    y += surf->h + 2;
+  if (!world.systems.draw) return 0.0;
+  const Draw& draw = *world.systems.draw;
+  const Uint64 t0 = SDL_GetPerformanceCounter();
+  draw.update(world.components, r);
+  const double draw_ms =
+      1000.0 * static_cast<double>(SDL_GetPerformanceCounter() - t0) / static_cast<double>(SDL_GetPerformanceFrequency());
+
+  const Components& c = world.components;
+  if (view.overlays.aabb) {
+    set_colour(r, aabb_colour);
+    for (const EntityId e : draw.entities()) {
+      if (!drawable(c.position[e])) continue;
+      const SDL_FRect box{float(c.position[e].x), float(c.position[e].y), float(c.box[e].width),
+                          float(c.box[e].height)};
+      SDL_RenderDrawRectF(r, &box);
+    }
   }
+  if (view.overlays.velocity) {
+    set_colour(r, velocity_colour);
+    for (const EntityId e : draw.entities())
+      if (!Vector::is_zero(c.velocity[e])) arrow(r, centre(c, e), centre(c, e) + velocity_scale * c.velocity[e]);
+  }
+  for (const Contact& k : view.contacts) {
+    if (k.c >= c.size() || k.b >= c.size()) continue;
+    const Vector at = contact_point(c, k.c, k.b);
+    set_colour(r, penetration_colour);
+    arrow(r, at, at + penetration_scale * k.penetration);
+    set_colour(r, normal_colour);
+    arrow(r, at, at + normal_length * k.normal);
+  }
+  if (view.sling) {
+    const auto [from, to] = *view.sling;
+    set_colour(r, SDL_Color{255, 140, 0, 255});
+    line(r, from, to);
+    const SDL_FRect ghost{float(from.x - Testbed::spawn_size / 2.0), float(from.y - Testbed::spawn_size / 2.0),
+                          float(Testbed::spawn_size), float(Testbed::spawn_size)};
+    SDL_RenderDrawRectF(r, &ghost);
+  }
+
+  if (!impl_->font) return draw_ms;
+  // Text on a pale backdrop, readable over a crowded scene.
+  const auto text = [&](const std::string& s, int x, int y, SDL_Color col) {
+    Owned<SDL_Surface> surf(TTF_RenderUTF8_Blended(impl_->font.get(), s.c_str(), col));
+    if (!surf) return 0;
+    Owned<SDL_Texture> tex(SDL_CreateTextureFromSurface(r, surf.get()));
+    if (!tex) return 0;
+    const SDL_Rect dst{x, y, surf->w, surf->h};
+    SDL_SetRenderDrawColor(r, 255, 255, 255, 170);
+    SDL_RenderFillRect(r, &dst);
+    SDL_RenderCopy(r, tex.get(), nullptr, &dst);
+    return surf->h;
+  };
+  int y = 44;
+  for (const std::string& s : view.hud) y += text(s, 48, y, SDL_Color{20, 20, 20, 255}) + 2;
+  if (!view.help.empty()) {
+    const int line_h = TTF_FontLineSkip(impl_->font.get());
+    // Below the HUD, so that neither hides the other.
+    const SDL_Rect panel{impl_->width - 460, y + 8, 410, static_cast<int>(view.help.size()) * line_h + 16};
+    SDL_SetRenderDrawColor(r, 255, 255, 240, 225);
+    SDL_RenderFillRect(r, &panel);
+    SDL_SetRenderDrawColor(r, 60, 60, 60, 255);
+    SDL_RenderDrawRect(r, &panel);
+    int hy = panel.y + 8;
+    for (const std::string& s : view.help) hy += text(s, panel.x + 10, hy, SDL_Color{20, 20, 20, 255});
+  }
+  return draw_ms;
 }
 
 void Window::present() { SDL_RenderPresent(impl_->renderer.get()); }

@@ -8,20 +8,13 @@
 #include <string>
 #include <vector>
 
+#include "testbed.hpp"
 #include "world.hpp"
 
 namespace physics {
 
 struct WindowError : std::runtime_error {
   using std::runtime_error::runtime_error;
-};
-
-// What the window reports back each frame, without SDL types.
-struct InputEvent {
-  enum class Kind { quit, key, mouse_down, mouse_up, mouse_move } kind;
-  int key = 0;  // SDL keycode for Kind::key
-  int x = 0, y = 0;
-  int button = 0;
 };
 
 class Window {
@@ -35,8 +28,10 @@ class Window {
   Window& operator=(const Window&) = delete;
 
   std::vector<InputEvent> poll_events();
-  // Clears, draws the world through its Draw system, then the HUD lines.
-  void render(const World& world, const std::vector<std::string>& hud);
+  // Clears, draws the world through its Draw system, then the overlays the
+  // view asks for (AABBs, velocities, contacts, the slingshot), the HUD lines
+  // and the key list. Returns the Draw system's time, ms.
+  double render(const World& world, const View& view);
   void present();
   // Saves what the last render() drew, as PNG.
   void screenshot(const std::string& path);

@@ -1,0 +1,320 @@
+#include "cli.hpp"
+
+#include <boost/program_options.hpp>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "builtin_scenes.hpp"
+#include "dump.hpp"
+#include "game.hpp"
+#include "offscreen.hpp"
+#include "scene_json.hpp"
+
+namespace physics::Cli {
+namespace po = boost::program_options;
+namespace {
+
+constexpr std::int64_t max_screenshot_pixels = std::int64_t{1} << 26;
+
+[[noreturn]] void bad(const std::string& flag, const std::string& problem, const std::string& value) {
+  throw UsageError(flag + ": " + problem + " (got '" + value + "')");
+}
+
+double real(const std::string& flag, const std::string& s) {
+  double v = 0;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc{} || end != s.data() + s.size()) bad(flag, "must be a number", s);
+  if (!std::isfinite(v)) bad(flag, "must be a finite number", s);
+  return v;
+}
+
+std::int64_t integer(const std::string& flag, const std::string& s, std::int64_t lo, std::int64_t hi) {
+  std::int64_t v = 0;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc{} || end != s.data() + s.size() || v < lo || v > hi)
+    bad(flag, "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]", s);
+  return v;
+}
+
+bool on_off(const std::string& flag, const std::string& s) {
+  if (s == "on" || s == "true" || s == "1" || s == "yes") return true;
+  if (s == "off" || s == "false" || s == "0" || s == "no") return false;
+  bad(flag, "must be on or off", s);
+}
+
+Overlays overlays(const std::string& s) {
+  Overlays o;
+  std::stringstream in(s);
+  for (std::string item; std::getline(in, item, ',');) {
+    if (item == "aabb") o.aabb = true;
+    else if (item == "velocity") o.velocity = true;
+    else if (item == "contacts") o.contacts = true;
+    else if (item == "help") o.help = true;
+    else if (item == "nohud") o.hud = false;
+    else if (item == "all") o.aabb = o.velocity = o.contacts = true;
+    else bad("--overlays", "must be a comma-separated list of aabb, velocity, contacts, help, nohud, all", s);
+  }
+  return o;
+}
+
+po::options_description descriptions() {
+  po::options_description d("options");
+  d.add_options()
+      ("help,h", "print this help and exit")
+      ("list-scenes", "list the built-in scenes and exit")
+      ("scene", po::value<std::string>()->value_name("NAME|FILE"),
+       "a built-in scene (see --list-scenes; default many) or a scene file (.json)")
+      ("print-scene", "print the scene as a scene file (JSON) and exit")
+      ("headless", "run without a window and print a summary (also when there is no display)")
+      ("frames", po::value<std::string>()->value_name("N"),
+       "frames to run: headless default 600; in a window, quit after N (default: when the user quits)")
+      ("dt", po::value<std::string>()->value_name("MS"), "time step, ms (> 0; the sheet's is 1000/60)")
+      ("substeps", po::value<std::string>()->value_name("K"), "physics substeps per frame, each of dt/K (1-1000)")
+      ("gravity", po::value<std::string>()->value_name("X,Y"), "gravity, px/ms^2 (y grows downwards), e.g. 0,0.001")
+      ("restitution", po::value<std::string>()->value_name("E"),
+       "restitution in [0, 1] of the walls and every block")
+      ("seed", po::value<std::string>()->value_name("S"),
+       "seed of the random generators (the k-th generator gets S + k)")
+      ("ccd", po::value<std::string>()->value_name("on|off")->implicit_value("on"),
+       "swept collision (no tunnelling); --ccd alone means on")
+      ("solver", po::value<std::string>()->value_name("course|stable"),
+       "contact solver: the sheet's one pass (course) or the iterated one (stable)")
+      ("iterations", po::value<std::string>()->value_name("N"), "iterations of the stable solver (1-1000)")
+      ("dump", po::value<std::string>()->value_name("FILE.csv"),
+       "write the final state as CSV: id,x,y,w,h,vx,vy,mass")
+      ("trace", po::value<std::string>()->value_name("FILE.csv"),
+       "write every frame as CSV: frame,id,x,y,w,h,vx,vy,mass (frame 0 = the initial state)")
+      ("screenshot", po::value<std::string>()->value_name("FILE.png"),
+       "save the last frame as PNG (window, or offscreen when headless); 60 frames unless --frames")
+      ("overlays", po::value<std::string>()->value_name("LIST"),
+       "window overlays at start: aabb,velocity,contacts,help,nohud or all");
+  return d;
+}
+
+// Where the scene came from, for messages: its file, or "scene NAME".
+std::string scene_source(const std::string& name_or_file) {
+  return find_builtin(name_or_file) ? "scene " + name_or_file : name_or_file;
+}
+
+int headless_run(const SceneSpec& spec, const Options& o, Recorder& rec, const std::string& why, std::ostream& out,
+                 std::ostream& err) {
+  const bool picture = !o.screenshot.empty();
+  World w = make_world(spec, picture && spec.systems.draw, scene_source(o.scene));
+  rec.start(w);
+  const std::int64_t frames = o.frames.value_or(picture ? screenshot_frames : headless_frames);
+  const auto summary = Game::run_headless(w, frames, [&](const World& world) { rec.after_step(world); });
+  Game::print_summary(out, w, summary, why, spec.name);
+  rec.finish(w);
+  if (picture && !Offscreen::screenshot(w, spec.width, spec.height, o.screenshot)) {
+    err << "game: cannot write " << o.screenshot << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace
+
+std::string usage() {
+  std::ostringstream o;
+  o << "usage: game [--scene NAME|FILE] [--headless] [--frames N] [options]\n"
+       "  Runs a scene of the 2D physics engine in a window (the testbed; H lists its keys,\n"
+       "  Esc quits), or headless with a summary when --headless is given or there is no display.\n"
+       "  Values given here override the scene's. Bad input exits with code 2.\n\n"
+    << descriptions()
+    << "\nValues may follow the flag or an '=' (--gravity=0,-0.001 for a value starting with '-').\n";
+  return o.str();
+}
+
+Options parse(std::span<const std::string> args) {
+  po::variables_map vm;
+  try {
+    std::vector<std::string> argv(args.begin(), args.end());
+    po::store(po::command_line_parser(argv).options(descriptions()).positional({}).run(), vm);
+    po::notify(vm);
+  } catch (const po::error& e) {
+    throw UsageError(std::string(e.what()) + " (see --help)");
+  }
+  Options o;
+  const auto has = [&](const char* k) { return vm.count(k) > 0; };
+  const auto get = [&](const char* k) { return vm[k].as<std::string>(); };
+  o.help = has("help");
+  o.list_scenes = has("list-scenes");
+  o.print_scene = has("print-scene");
+  o.headless = has("headless");
+  if (has("scene")) {
+    o.scene = get("scene");
+    if (o.scene.empty()) throw UsageError("--scene: needs a scene name or a file");
+  }
+  if (has("frames")) o.frames = integer("--frames", get("frames"), 0, std::int64_t{1} << 53);
+  Overrides& ov = o.overrides;
+  if (has("dt")) {
+    ov.dt = real("--dt", get("dt"));
+    if (*ov.dt <= 0) bad("--dt", "must be > 0", get("dt"));
+  }
+  if (has("substeps")) ov.substeps = static_cast<int>(integer("--substeps", get("substeps"), 1, max_substeps));
+  if (has("iterations"))
+    ov.iterations = static_cast<int>(integer("--iterations", get("iterations"), 1, max_iterations));
+  if (has("gravity")) {
+    const std::string g = get("gravity");
+    const auto comma = g.find(',');
+    if (comma == std::string::npos) bad("--gravity", "must be two numbers X,Y", g);
+    ov.gravity = Vector{real("--gravity", g.substr(0, comma)), real("--gravity", g.substr(comma + 1))};
+  }
+  if (has("restitution")) {
+    ov.restitution = real("--restitution", get("restitution"));
+    if (*ov.restitution < 0 || *ov.restitution > 1) bad("--restitution", "must be in [0, 1]", get("restitution"));
+  }
+  if (has("seed")) {
+    const std::string s = get("seed");
+    std::uint64_t v = 0;
+    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (ec != std::errc{} || end != s.data() + s.size()) bad("--seed", "must be an integer >= 0", s);
+    ov.seed = v;
+  }
+  if (has("ccd")) ov.ccd = on_off("--ccd", get("ccd"));
+  if (has("solver")) {
+    const std::string s = get("solver");
+    if (s == "course") ov.solver = Solver::course;
+    else if (s == "stable") ov.solver = Solver::stable;
+    else bad("--solver", "must be course or stable", s);
+  }
+  if (has("dump")) o.dump = get("dump");
+  if (has("trace")) o.trace = get("trace");
+  if (has("screenshot")) o.screenshot = get("screenshot");
+  for (const auto* f : {&o.dump, &o.trace, &o.screenshot})
+    if (f->empty() && vm.count(f == &o.dump ? "dump" : f == &o.trace ? "trace" : "screenshot"))
+      throw UsageError("an output file name must not be empty");
+  if (has("overlays")) o.overlays = overlays(get("overlays"));
+  return o;
+}
+
+SceneSpec resolve_scene(const std::string& name) {
+  if (const SceneSpec* s = find_builtin(name)) return *s;
+  const bool looks_like_file = name.find('/') != std::string::npos || name.ends_with(".json");
+  std::error_code ec;
+  if (!looks_like_file && !std::filesystem::exists(name, ec)) {
+    std::string list;
+    for (const SceneSpec& s : builtin_scenes()) list += (list.empty() ? "" : ", ") + s.name;
+    throw SceneError("unknown scene '" + name + "' (built-in scenes: " + list + "; or give a .json file)");
+  }
+  return load_scene_file(name);
+}
+
+Recorder::Recorder(const std::string& dump, const std::string& trace) : dump_path_(dump), trace_path_(trace) {
+  const auto open = [](std::ofstream& f, const std::string& path, const char* flag) {
+    if (path.empty()) return;
+    f.open(path, std::ios::binary | std::ios::trunc);
+    if (!f) throw UsageError(std::string(flag) + ": cannot write " + path + ": " + std::strerror(errno));
+    f.precision(17);
+  };
+  open(dump_, dump, "--dump");
+  open(trace_, trace, "--trace");
+}
+
+void Recorder::start(const World& w) {
+  if (!trace_.is_open()) return;
+  Dump::write_trace_header(trace_);
+  Dump::write_trace_rows(trace_, w);
+}
+
+void Recorder::after_step(const World& w) {
+  if (trace_.is_open()) Dump::write_trace_rows(trace_, w);
+}
+
+void Recorder::restart(const World& w) { after_step(w); }
+
+void Recorder::finish(const World& w) {
+  if (dump_.is_open()) {
+    Dump::write_state(dump_, w);
+    dump_.flush();
+    if (!dump_) throw std::runtime_error("cannot write " + dump_path_);
+  }
+  if (trace_.is_open()) {
+    trace_.flush();
+    if (!trace_) throw std::runtime_error("cannot write " + trace_path_);
+  }
+}
+
+int run(std::span<const std::string> args, std::ostream& out, std::ostream& err, const WindowFrontEnd* window) {
+  Options o;
+  try {
+    o = parse(args);
+  } catch (const UsageError& e) {
+    err << "game: " << e.what() << "\n";
+    return 2;
+  }
+  if (o.help) {
+    out << usage();
+    return 0;
+  }
+  if (o.list_scenes) {
+    for (const SceneSpec& s : builtin_scenes()) {
+      std::string name = s.name;
+      name.resize(std::max<std::size_t>(name.size(), 9), ' ');
+      out << name << s.description << "\n";
+    }
+    return 0;
+  }
+  SceneSpec spec;
+  try {
+    spec = resolve_scene(o.scene);
+    apply(spec, o.overrides);
+    validate(spec, scene_source(o.scene));
+  } catch (const SceneError& e) {
+    err << "game: " << e.what() << "\n";
+    return 2;
+  }
+  if (o.print_scene) {
+    out << to_json(spec);
+    return 0;
+  }
+  if (!o.screenshot.empty() && std::int64_t{spec.width} * spec.height > max_screenshot_pixels) {
+    err << "game: --screenshot: the " << spec.width << "x" << spec.height << " world is too large to save\n";
+    return 2;
+  }
+  try {
+    Recorder rec(o.dump, o.trace);
+    std::string why = "--headless given";
+    if (!o.headless) {
+      if (!window) {
+        why = "no window front end";
+      } else if (!window->display_available()) {
+        why = "no display (DISPLAY, WAYLAND_DISPLAY and SDL_VIDEODRIVER unset)";
+      } else {
+        Session session;
+        // The testbed walks the built-in scenes; a scene file joins the list.
+        for (const SceneSpec& s : builtin_scenes()) session.scenes.push_back(s);
+        session.current = session.scenes.size();
+        for (std::size_t i = 0; i < session.scenes.size(); ++i)
+          if (session.scenes[i].name == o.scene) session.current = i;
+        if (session.current == session.scenes.size()) session.scenes.push_back(resolve_scene(o.scene));
+        session.options = o;
+        session.recorder = &rec;
+        session.err = &err;
+        try {
+          return window->run(session);
+        } catch (const NoWindow& e) {
+          err << "game: " << e.what() << "; running headless\n";
+          why = std::string("window failed: ") + e.what();
+          rec = Recorder(o.dump, o.trace);  // start the files again
+        }
+      }
+    }
+    return headless_run(spec, o, rec, why, out, err);
+  } catch (const UsageError& e) {
+    err << "game: " << e.what() << "\n";
+    return 2;
+  } catch (const SceneError& e) {
+    err << "game: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    err << "game: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace physics::Cli

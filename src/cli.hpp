@@ -1,0 +1,90 @@
+// The command line: options, choosing the scene, the headless run, and the
+// hand-over to the window front end. No SDL here: game.cpp's main() passes
+// the window front end in; the tests pass none, and so run every headless
+// path and every bad-input case in-process, without SDL linked at all.
+//
+// Exit codes: 0 done, 1 failed at run time (e.g. a disk full while writing),
+// 2 bad input (flag, value, scene name or scene file), with one line on
+// stderr naming the flag, file, key or line, and the problem.
+#pragma once
+
+#include <cstdint>
+#include <fstream>
+#include <functional>
+#include <iosfwd>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "scene.hpp"
+#include "testbed.hpp"
+
+namespace physics::Cli {
+
+inline constexpr std::int64_t headless_frames = 600;
+inline constexpr std::int64_t screenshot_frames = 60;  // --screenshot without --frames
+
+struct Options {
+  bool help = false, list_scenes = false, print_scene = false, headless = false;
+  std::string scene{"many"};
+  std::optional<std::int64_t> frames;
+  Overrides overrides;
+  std::string dump, trace, screenshot;
+  Overlays overlays;
+};
+
+// Bad flag or value: the message names the flag (main prefixes "game: ").
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+Options parse(std::span<const std::string> args);  // throws UsageError
+std::string usage();
+
+// A built-in name, else a file (a name that is neither is an error listing
+// the built-in scenes). Throws SceneError.
+SceneSpec resolve_scene(const std::string& name_or_file);
+
+// --dump and --trace files, opened before the run so that a bad path is bad
+// input (exit 2) rather than a lost run.
+class Recorder {
+ public:
+  Recorder(const std::string& dump, const std::string& trace);  // throws UsageError
+  void start(const World& w);       // trace: header and frame 0
+  void after_step(const World& w);  // trace: this frame
+  void restart(const World& w);     // trace: a new world's frame 0 (testbed reset)
+  void finish(const World& w);      // dump: the final state; throws std::runtime_error on I/O error
+
+ private:
+  std::string dump_path_, trace_path_;
+  std::ofstream dump_, trace_;
+};
+
+// What the window front end runs: the testbed over `scenes`, starting at
+// `current`, for `frames` frames (until the user quits if unset).
+struct Session {
+  std::vector<SceneSpec> scenes;
+  std::size_t current = 0;
+  Options options;
+  Recorder* recorder = nullptr;
+  std::ostream* err = nullptr;
+};
+
+// Thrown by the front end when no window can be opened: the run goes on headless.
+struct NoWindow : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct WindowFrontEnd {
+  std::function<bool()> display_available;
+  std::function<int(Session&)> run;
+};
+
+// The whole program but the window. `window` may be null (tests): then
+// every run is headless.
+int run(std::span<const std::string> args, std::ostream& out, std::ostream& err,
+        const WindowFrontEnd* window = nullptr);
+
+}  // namespace physics::Cli

@@ -1,0 +1,26 @@
+// CSV state of a world, for --dump (final state) and --trace (every frame).
+//   id,x,y,w,h,vx,vy,mass            one row per entity in creation order
+//   frame,id,x,y,w,h,vx,vy,mass      the trace: the same, for frame 0 (the
+//                                    initial state) and after every step
+// Numbers are the shortest text that reads back as the same double (so a
+// dump is exact and two runs compare with diff); infinite mass is `inf`.
+#pragma once
+
+#include <iosfwd>
+#include <string>
+
+#include "world.hpp"
+
+namespace physics::Dump {
+
+inline constexpr const char* header = "id,x,y,w,h,vx,vy,mass";
+inline constexpr const char* trace_header = "frame,id,x,y,w,h,vx,vy,mass";
+
+// The shortest round-trip decimal text of v; "inf", "-inf", "nan" otherwise.
+std::string number(double v);
+
+void write_state(std::ostream& out, const World& w);        // header + rows
+void write_trace_header(std::ostream& out);
+void write_trace_rows(std::ostream& out, const World& w);   // rows of w.frame
+
+}  // namespace physics::Dump

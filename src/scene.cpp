@@ -1,0 +1,312 @@
+#include "scene.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "entities/block.hpp"
+
+namespace physics {
+namespace {
+
+// "%g"-like text for messages: short, and exact enough to find the value.
+std::string num(double v) {
+  std::ostringstream o;
+  o.precision(10);
+  o << v;
+  return o.str();
+}
+
+std::string entry_path(std::size_t i) { return "blocks[" + std::to_string(i) + "]"; }
+
+// Raises the error for one scene; every message starts with "source: path: ".
+struct Checker {
+  const std::string& source;
+  [[noreturn]] void fail(const std::string& path, const std::string& problem) const {
+    throw SceneError(source + ": " + path + ": " + problem);
+  }
+  void finite(double v, const std::string& path) const {
+    if (!std::isfinite(v)) fail(path, "must be a finite number (got " + num(v) + ")");
+  }
+  void finite(Vector v, const std::string& path) const {
+    if (!std::isfinite(v.x) || !std::isfinite(v.y))
+      fail(path, "must be finite (got [" + num(v.x) + ", " + num(v.y) + "])");
+  }
+  void size(int v, const std::string& path) const {
+    if (v <= 0) fail(path, "must be > 0 (got " + std::to_string(v) + ")");
+    if (v > max_block_size) fail(path, "must be <= " + std::to_string(max_block_size) + " (got " + std::to_string(v) + ")");
+  }
+  void mass(double m, const std::string& path) const {
+    if (std::isnan(m) || m <= 0.0 || m == -infinity)
+      fail(path, "must be > 0 or \"inf\" (got " + num(m) + ")");
+  }
+  void restitution(double e, const std::string& path) const {
+    if (!(e >= 0.0 && e <= 1.0)) fail(path, "must be in [0, 1] (got " + num(e) + ")");
+  }
+  void range(const RealSpec& r, const std::string& path) const {
+    finite(r.lo, path);
+    finite(r.hi, path);
+    if (r.drawn && r.lo > r.hi) fail(path, "range [" + num(r.lo) + ", " + num(r.hi) + "] is empty (min > max)");
+  }
+  void range(const VecSpec& v, const std::string& path) const {
+    range(v.x, path);
+    range(v.y, path);
+  }
+  void size_range(const IntSpec& r, const std::string& path) const {
+    size(r.lo, path);
+    size(r.hi, path);
+    if (r.drawn && r.lo > r.hi)
+      fail(path, "range [" + std::to_string(r.lo) + ", " + std::to_string(r.hi) + "] is empty (min > max)");
+  }
+};
+
+void check_block(const Checker& k, const BlockSpec& b, const std::string& p) {
+  k.finite(b.pos, p + ".pos");
+  k.size(b.width, p + ".size");
+  k.size(b.height, p + ".size");
+  k.mass(b.mass, p + ".mass");
+  k.finite(b.velocity, p + ".velocity");
+  k.finite(b.force, p + ".force");
+  k.finite(b.impulse, p + ".impulse");
+  if (b.restitution) k.restitution(*b.restitution, p + ".restitution");
+}
+
+void check_random(const Checker& k, const RandomSpec& r, const std::string& p) {
+  if (r.count < 1) k.fail(p + ".count", "must be >= 1 (got " + std::to_string(r.count) + ")");
+  if (r.side) {
+    k.size_range(*r.side, p + ".side");
+  } else {
+    k.size_range(r.width, p + ".size");
+    k.size_range(r.height, p + ".size");
+  }
+  k.range(r.mass, p + ".mass");
+  if (r.mass.drawn) {
+    if (!(r.mass.lo > 0.0)) k.fail(p + ".mass", "range must be > 0 (got min " + num(r.mass.lo) + ")");
+  } else if (r.mass.lo != infinity) {
+    k.mass(r.mass.lo, p + ".mass");
+  }
+  k.range(r.velocity, p + ".velocity");
+  k.range(r.force, p + ".force");
+  k.range(r.impulse, p + ".impulse");
+  if (r.restitution) {
+    k.range(*r.restitution, p + ".restitution");
+    k.restitution(r.restitution->lo, p + ".restitution");
+    k.restitution(r.restitution->hi, p + ".restitution");
+  }
+  k.finite(r.origin, p + (r.use_cells ? ".cells.pos" : ".area.pos"));
+  const int max_w = r.side ? r.side->hi : r.width.hi, max_h = r.side ? r.side->hi : r.height.hi;
+  if (r.use_cells) {
+    if (r.columns < 1) k.fail(p + ".cells.columns", "must be >= 1 (got " + std::to_string(r.columns) + ")");
+    k.finite(r.step, p + ".cells.step");
+    k.finite(r.jitter, p + ".cells.jitter");
+    if (r.jitter.x < 0 || r.jitter.y < 0) k.fail(p + ".cells.jitter", "must be >= 0");
+  } else {
+    k.finite(r.extent, p + ".area.size");
+    if (r.extent.x < max_w || r.extent.y < max_h)
+      k.fail(p + ".area.size", "[" + num(r.extent.x) + ", " + num(r.extent.y) + "] is smaller than the largest body (" +
+                                    std::to_string(max_w) + "x" + std::to_string(max_h) + ")");
+  }
+}
+
+// Where a body is, for messages: "blocks[2]" or "blocks[2] (grid body 17)".
+std::string body_path(const SceneSpec& s, const Body& b) {
+  std::string p = entry_path(b.entry);
+  const BlockEntry& e = s.blocks[b.entry];
+  if (std::holds_alternative<GridSpec>(e)) p += " (grid body " + std::to_string(b.index) + ")";
+  if (std::holds_alternative<RandomSpec>(e)) p += " (random body " + std::to_string(b.index) + ")";
+  return p;
+}
+
+// Every block inside the world; with walls, inside the space they enclose
+// (touching a wall is fine: touching boxes do not collide).
+void check_placement(const Checker& k, const SceneSpec& s, const std::vector<Body>& bodies) {
+  const double t = s.walls ? wall_thickness : 0.0;
+  const double x0 = t, y0 = t, x1 = s.width - t, y1 = s.height - t;
+  for (const Body& b : bodies) {
+    const double l = b.pos.x, top = b.pos.y, r = b.pos.x + b.width, bot = b.pos.y + b.height;
+    std::string where;
+    if (s.walls) {
+      if (l < x0) where = "left wall";
+      else if (r > x1) where = "right wall";
+      else if (top < y0) where = "top wall";
+      else if (bot > y1) where = "bottom wall";
+    }
+    const std::string at = "block at (" + num(b.pos.x) + ", " + num(b.pos.y) + ") of size " + std::to_string(b.width) +
+                           "x" + std::to_string(b.height);
+    if (l < 0 || top < 0 || r > s.width || bot > s.height)
+      k.fail(body_path(s, b), at + " lies outside the " + std::to_string(s.width) + "x" + std::to_string(s.height) +
+                                  " world");
+    if (!where.empty())
+      k.fail(body_path(s, b), at + " overlaps the " + where + " (the walls are " + std::to_string(wall_thickness) +
+                                  " px thick)");
+  }
+}
+
+Body body_of(const BlockSpec& b, double world_e, std::size_t entry, std::int64_t index) {
+  return Body{b.pos, b.width, b.height, b.mass, b.velocity, b.force, b.impulse, b.color,
+              b.restitution.value_or(world_e), entry, index};
+}
+
+void expand_random(const RandomSpec& r, double world_e, std::size_t entry, std::vector<Body>& out) {
+  Random rng(r.seed);
+  for (std::int64_t i = 0; i < r.count; ++i) {
+    Body b;
+    b.entry = entry;
+    b.index = i;
+    if (r.side) {
+      b.width = b.height = r.side->get(rng);
+    } else {
+      b.width = r.width.get(rng);
+      b.height = r.height.get(rng);
+    }
+    b.mass = r.mass.get(rng);
+    b.velocity = r.velocity.get(rng);
+    b.force = r.force.get(rng);
+    b.impulse = r.impulse.get(rng);
+    b.restitution = r.restitution ? r.restitution->get(rng) : world_e;
+    if (r.color) {
+      b.color = *r.color;
+    } else {
+      const auto c = [&] { return static_cast<std::uint8_t>(rng.uniform_int(40, 220)); };
+      b.color.r = c();
+      b.color.g = c();
+      b.color.b = c();
+    }
+    if (r.use_cells) {
+      const auto col = static_cast<double>(i % r.columns), row = static_cast<double>(i / r.columns);
+      b.pos.x = r.origin.x + r.step.x * col;
+      b.pos.y = r.origin.y + r.step.y * row;
+      if (r.jitter.x > 0) b.pos.x = b.pos.x + rng.uniform(0, r.jitter.x);
+      if (r.jitter.y > 0) b.pos.y = b.pos.y + rng.uniform(0, r.jitter.y);
+    } else {
+      b.pos.x = rng.uniform(r.origin.x, r.origin.x + r.extent.x - b.width);
+      b.pos.y = rng.uniform(r.origin.y, r.origin.y + r.extent.y - b.height);
+    }
+    out.push_back(b);
+  }
+}
+
+}  // namespace
+
+void apply(SceneSpec& s, const Overrides& o) {
+  if (o.dt) s.params.dt = *o.dt;
+  if (o.substeps) s.params.substeps = *o.substeps;
+  if (o.gravity) s.params.gravity = *o.gravity;
+  if (o.ccd) s.params.ccd = *o.ccd;
+  if (o.solver) s.params.solver = *o.solver;
+  if (o.iterations) s.params.iterations = *o.iterations;
+  std::uint64_t k = 0;
+  for (BlockEntry& e : s.blocks) {
+    if (o.restitution) {
+      if (auto* b = std::get_if<BlockSpec>(&e)) b->restitution.reset();
+      if (auto* g = std::get_if<GridSpec>(&e)) g->first.restitution.reset();
+      if (auto* r = std::get_if<RandomSpec>(&e)) r->restitution.reset();
+    }
+    if (auto* r = std::get_if<RandomSpec>(&e); r && o.seed) r->seed = *o.seed + k++;
+  }
+  if (o.restitution) s.restitution = *o.restitution;
+}
+
+std::int64_t body_count(const SceneSpec& s) {
+  std::int64_t n = 0;
+  for (const BlockEntry& e : s.blocks) {
+    std::int64_t m = 1;
+    if (const auto* g = std::get_if<GridSpec>(&e)) m = std::int64_t{g->columns} * g->rows;
+    if (const auto* r = std::get_if<RandomSpec>(&e)) m = r->count;
+    // Saturate: counts are checked against max_bodies, never multiplied further.
+    n = (m < 0 || n > max_bodies || m > max_bodies) ? max_bodies + 1 : n + m;
+  }
+  return n;
+}
+
+void validate(const SceneSpec& s, const std::string& source) {
+  const Checker k{source};
+  if (s.width < 1 || s.width > max_world_size)
+    k.fail("world.width", "must be in [1, " + std::to_string(max_world_size) + "] (got " + std::to_string(s.width) + ")");
+  if (s.height < 1 || s.height > max_world_size)
+    k.fail("world.height",
+           "must be in [1, " + std::to_string(max_world_size) + "] (got " + std::to_string(s.height) + ")");
+  if (s.walls && (s.width <= 2 * wall_thickness || s.height <= 2 * wall_thickness))
+    k.fail("world.walls", "the world must be larger than " + std::to_string(2 * wall_thickness) + "x" +
+                              std::to_string(2 * wall_thickness) + " px to hold its walls");
+  const Params& p = s.params;
+  if (!std::isfinite(p.dt) || p.dt <= 0.0) k.fail("world.dt", "must be a finite number > 0 (got " + num(p.dt) + ")");
+  if (p.substeps < 1 || p.substeps > max_substeps)
+    k.fail("world.substeps",
+           "must be in [1, " + std::to_string(max_substeps) + "] (got " + std::to_string(p.substeps) + ")");
+  if (p.iterations < 1 || p.iterations > max_iterations)
+    k.fail("world.iterations",
+           "must be in [1, " + std::to_string(max_iterations) + "] (got " + std::to_string(p.iterations) + ")");
+  k.finite(p.gravity, "world.gravity");
+  k.restitution(s.restitution, "world.restitution");
+  if (body_count(s) > max_bodies)
+    k.fail("blocks", "too many bodies (more than " + std::to_string(max_bodies) + ")");
+  for (std::size_t i = 0; i < s.blocks.size(); ++i) {
+    const std::string path = entry_path(i);
+    const BlockEntry& e = s.blocks[i];
+    if (const auto* b = std::get_if<BlockSpec>(&e)) check_block(k, *b, path);
+    if (const auto* g = std::get_if<GridSpec>(&e)) {
+      check_block(k, g->first, path + ".grid");
+      if (g->columns < 1 || g->rows < 1)
+        k.fail(path + ".grid.count", "must be >= 1 each (got [" + std::to_string(g->columns) + ", " +
+                                         std::to_string(g->rows) + "])");
+      k.finite(g->step, path + ".grid.step");
+    }
+    if (const auto* r = std::get_if<RandomSpec>(&e)) check_random(k, *r, path + ".random");
+  }
+}
+
+std::vector<Body> expand(const SceneSpec& s, const std::string& source) {
+  validate(s, source);
+  std::vector<Body> out;
+  out.reserve(static_cast<std::size_t>(body_count(s)));
+  for (std::size_t i = 0; i < s.blocks.size(); ++i) {
+    const BlockEntry& e = s.blocks[i];
+    if (const auto* b = std::get_if<BlockSpec>(&e)) out.push_back(body_of(*b, s.restitution, i, 0));
+    if (const auto* g = std::get_if<GridSpec>(&e)) {
+      std::int64_t n = 0;
+      for (int r = 0; r < g->rows; ++r)
+        for (int c = 0; c < g->columns; ++c) {
+          BlockSpec b = g->first;
+          b.pos = Vector{g->first.pos.x + g->step.x * c, g->first.pos.y + g->step.y * r};
+          out.push_back(body_of(b, s.restitution, i, n++));
+        }
+    }
+    if (const auto* r = std::get_if<RandomSpec>(&e)) expand_random(*r, s.restitution, i, out);
+  }
+  // A body far outside can come from a finite but huge step or origin.
+  for (const Body& b : out) Checker{source}.finite(b.pos, body_path(s, b) + " position");
+  check_placement(Checker{source}, s, out);
+  return out;
+}
+
+void add_walls(World& w, int width, int height, double e) {
+  const int t = wall_thickness;
+  Block::make(w, 0, 0, width, t, wall_blue, infinity, e);                   // top
+  Block::make(w, 0, height - t, width, t, wall_blue, infinity, e);          // bottom
+  Block::make(w, 0, t, t, height - 2 * t, wall_black, infinity, e);         // left
+  Block::make(w, width - t, t, t, height - 2 * t, wall_black, infinity, e); // right
+}
+
+void populate(World& w, const SceneSpec& s, const std::string& source) {
+  const std::vector<Body> bodies = expand(s, source);
+  w.components.reserve(w.components.size() + bodies.size() + (s.walls ? 4 : 0));
+  if (s.walls) add_walls(w, s.width, s.height, s.restitution);
+  for (const Body& b : bodies) {
+    const auto e = Block::make(w, b.pos.x, b.pos.y, b.width, b.height, b.color, b.mass, b.restitution);
+    w.components.velocity[e.id] = b.velocity;
+    // An impulse J changes the velocity by J/m. Forces applies Σf·dt/m on the
+    // first frame, so the initial force J/dt is exactly that impulse.
+    w.components.sum_forces[e.id] = b.force + Vector::mult(1.0 / w.params.dt, b.impulse);
+  }
+}
+
+World make_world(const SceneSpec& s, bool with_draw, const std::string& source) {
+  validate(s, source);
+  SystemSet set = s.systems;
+  set.draw = set.draw && with_draw;
+  World w(set, s.params);
+  populate(w, s, source);
+  return w;
+}
+
+}  // namespace physics

@@ -1,0 +1,183 @@
+// A scene as data: the world's size and parameters, the systems it declares,
+// whether it has the walls of question 1, and its blocks, single or made by
+// generators (a grid of equal blocks, or seeded random blocks). Built-in
+// scenes (builtin_scenes.hpp) and scene files (scene_json.hpp) both produce a
+// SceneSpec; `make_world` turns one into a World. No SDL here: this is part
+// of the physics library, so headless runs, benchmarks and fuzzers use it.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "utils/random.hpp"
+#include "world.hpp"
+
+namespace physics {
+
+// The course's screen and walls (question 1).
+inline constexpr int default_width = 800;  // px
+inline constexpr int default_height = 600;
+inline constexpr int wall_thickness = 40;
+inline constexpr Color wall_blue{0, 0, 255, 255};   // horizontal walls
+inline constexpr Color wall_black{0, 0, 0, 255};    // vertical walls
+inline constexpr Color default_block_color{128, 128, 128, 255};
+
+// Limits that keep any input from exhausting memory or hanging the loader.
+inline constexpr int max_world_size = 1 << 20;  // px, per side
+inline constexpr int max_block_size = 1 << 20;  // px, per side
+inline constexpr std::int64_t max_bodies = 1'000'000;
+inline constexpr int max_substeps = 1000;
+inline constexpr int max_iterations = 1000;
+
+// Every error in a scene (file or built-in): the message names the source,
+// the key path or line, and the problem, e.g.
+//   scenes/x.json: blocks[3].mass: must be > 0 or "inf" (got -1)
+struct SceneError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// A value that is either fixed or drawn uniformly from [lo, hi) by a random
+// generator. Only drawn values consume random numbers, so a scene's draws
+// are fixed by which properties are ranges.
+struct RealSpec {
+  double lo = 0.0, hi = 0.0;
+  bool drawn = false;
+  static RealSpec fixed(double v) { return {v, v, false}; }
+  static RealSpec uniform(double lo, double hi) { return {lo, hi, true}; }
+  double get(Random& rng) const { return drawn ? rng.uniform(lo, hi) : lo; }
+  friend bool operator==(const RealSpec&, const RealSpec&) = default;
+};
+// Same for integers, drawn uniformly from [lo, hi] (both included).
+struct IntSpec {
+  int lo = 0, hi = 0;
+  bool drawn = false;
+  static IntSpec fixed(int v) { return {v, v, false}; }
+  static IntSpec uniform(int lo, int hi) { return {lo, hi, true}; }
+  int get(Random& rng) const { return drawn ? rng.uniform_int(lo, hi) : lo; }
+  friend bool operator==(const IntSpec&, const IntSpec&) = default;
+};
+struct VecSpec {
+  RealSpec x, y;
+  static VecSpec fixed(Vector v) { return {RealSpec::fixed(v.x), RealSpec::fixed(v.y)}; }
+  // x is drawn before y (braced initialisation evaluates in order).
+  Vector get(Random& rng) const { return Vector{x.get(rng), y.get(rng)}; }
+  friend bool operator==(const VecSpec&, const VecSpec&) = default;
+};
+
+// One block, as in Block::make, plus its initial motion.
+//   velocity  px/ms at start
+//   force     initial sum_forces (the sheet's Q5 "force instead of velocity")
+//   impulse   px·mass/ms: changes the velocity by impulse/mass on frame 1
+//             (given to Forces as the force impulse/dt)
+struct BlockSpec {
+  Vector pos{};
+  int width = 0, height = 0;
+  double mass = 0.0;  // > 0, or infinity
+  Vector velocity{}, force{}, impulse{};
+  Color color = default_block_color;
+  std::optional<double> restitution;  // unset: the world's
+  friend bool operator==(const BlockSpec&, const BlockSpec&) = default;
+};
+
+// columns × rows copies of `first`, the body in column c and row r at
+// first.pos + (c·step.x, r·step.y). Row by row, left to right.
+struct GridSpec {
+  BlockSpec first;
+  int columns = 1, rows = 1;
+  Vector step{};
+  friend bool operator==(const GridSpec&, const GridSpec&) = default;
+};
+
+// `count` blocks whose properties may be drawn from ranges, from a
+// SplitMix64 generator seeded with `seed`. For each body, in this order:
+// size (side, or width then height), mass, velocity, force, impulse,
+// restitution, colour (r, g, b), position (x, y). Positions come from either
+//   cells: body i in the cell (i % columns, i / columns) of a grid at
+//          `origin` with cells of `step`, offset by a draw in [0, jitter)
+//   area:  anywhere the body fits inside the rectangle at `origin` of `extent`
+struct RandomSpec {
+  std::int64_t count = 0;
+  std::uint64_t seed = 42;
+  std::optional<IntSpec> side;  // set: square bodies, one draw
+  IntSpec width, height;
+  RealSpec mass;
+  VecSpec velocity, force, impulse;
+  std::optional<RealSpec> restitution;  // unset: the world's
+  std::optional<Color> color;           // unset: random, each channel in [40, 220]
+  bool use_cells = true;
+  Vector origin{};
+  int columns = 1;
+  Vector step{}, jitter{};  // cells
+  Vector extent{};          // area
+  friend bool operator==(const RandomSpec&, const RandomSpec&) = default;
+};
+
+using BlockEntry = std::variant<BlockSpec, GridSpec, RandomSpec>;
+
+struct SceneSpec {
+  std::string name;
+  std::string description;
+  int width = default_width, height = default_height;
+  Params params;
+  double restitution = 1.0;  // walls, and blocks that give none
+  bool walls = true;
+  SystemSet systems;
+  std::vector<BlockEntry> blocks;
+};
+
+// Command-line values; each set one replaces the scene's.
+struct Overrides {
+  std::optional<double> dt;
+  std::optional<int> substeps;
+  std::optional<Vector> gravity;
+  std::optional<double> restitution;  // also replaces every block's own
+  std::optional<std::uint64_t> seed;  // random generator k gets seed + k
+  std::optional<bool> ccd;
+  std::optional<Solver> solver;
+  std::optional<int> iterations;
+};
+void apply(SceneSpec& s, const Overrides& o);
+
+// One concrete body of a scene, after generators are expanded. `entry` and
+// `index` say where it came from, for error messages.
+struct Body {
+  Vector pos{};
+  int width = 0, height = 0;
+  double mass = 0.0;
+  Vector velocity{}, force{}, impulse{};
+  Color color{};
+  double restitution = 1.0;
+  std::size_t entry = 0;
+  std::int64_t index = 0;
+};
+
+// Number of bodies the entries make (walls excluded), without expanding them.
+std::int64_t body_count(const SceneSpec& s);
+
+// The scene's blocks in creation order. Throws SceneError (prefixed with
+// `source`) when the scene is invalid: see validate().
+std::vector<Body> expand(const SceneSpec& s, const std::string& source);
+
+// Checks everything about a scene that a file could get wrong: parameters,
+// sizes, masses, restitutions, counts, and that every block lies inside the
+// world and overlaps no wall. Throws SceneError naming `source` and the key
+// path (blocks[3], blocks[2] body 17, world.dt, ...).
+void validate(const SceneSpec& s, const std::string& source);
+
+// Q1: the four walls of infinite mass on the edges of width × height, 40 px
+// thick, top and bottom blue and full width, left and right black between them.
+void add_walls(World& w, int width, int height, double restitution = 1.0);
+
+// Adds the walls (if any) and the blocks to `w`, using w.params.dt to turn
+// impulses into initial forces. Throws SceneError if the scene is invalid.
+void populate(World& w, const SceneSpec& s, const std::string& source = "scene");
+
+// A world with the scene's parameters and systems (Draw only if `with_draw`:
+// a headless run has nothing to draw), populated.
+World make_world(const SceneSpec& s, bool with_draw, const std::string& source = "scene");
+
+}  // namespace physics

@@ -1,0 +1,641 @@
+#include "scene_json.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace physics {
+
+using json = nlohmann::json;
+
+namespace {
+
+constexpr std::size_t max_depth = 64;                    // scene files need 5
+constexpr std::uintmax_t max_file_size = 64u << 20;      // bytes
+
+// ---------------------------------------------------------------------------
+// Parsing: a SAX handler that builds the document like nlohmann's own DOM
+// parser, but rejects duplicate keys (nlohmann keeps the last one silently)
+// and nesting deeper than max_depth, and keeps the error's byte position.
+
+class StrictDom : public nlohmann::json_sax<json> {
+ public:
+  json root;
+  std::string error;          // set when the parse failed
+  std::size_t position = 0;   // byte position of a syntax error, else 0
+
+  bool null() override { return add(nullptr); }
+  bool boolean(bool v) override { return add(v); }
+  bool number_integer(number_integer_t v) override { return add(v); }
+  bool number_unsigned(number_unsigned_t v) override { return add(v); }
+  bool number_float(number_float_t v, const string_t&) override { return add(v); }
+  bool string(string_t& v) override { return add(v); }
+  bool binary(binary_t&) override {
+    error = "binary values are not JSON";
+    return false;
+  }
+  bool start_object(std::size_t) override { return open(json::object()); }
+  bool start_array(std::size_t) override { return open(json::array()); }
+  bool end_object() override { return close(); }
+  bool end_array() override { return close(); }
+  bool key(string_t& k) override {
+    Open& top = stack_.back();
+    if (top.value->contains(k)) {
+      error = path() + (path().empty() ? "" : ": ") + "duplicate key \"" + k + "\"";
+      return false;
+    }
+    pending_key_ = k;
+    return true;
+  }
+  bool parse_error(std::size_t pos, const std::string&, const nlohmann::detail::exception& ex) override {
+    position = std::max<std::size_t>(pos, 1);
+    // nlohmann says "[json.exception.parse_error.101] parse error at line 2,
+    // column 5: syntax error while ..."; keep what follows the position.
+    // Other errors (number overflow) have no position text: drop the "[...] " tag.
+    std::string what = ex.what();
+    if (const auto col = what.find("column "); col != std::string::npos) {
+      if (const auto colon = what.find(": ", col); colon != std::string::npos) what = what.substr(colon + 2);
+    } else if (const auto tag = what.find("] "); !what.empty() && what[0] == '[' && tag != std::string::npos) {
+      what = what.substr(tag + 2) + " (numbers must be finite)";
+    }
+    error = what;
+    return false;
+  }
+
+ private:
+  struct Open {
+    json* value;
+    std::string name;  // path segment: ".key" or "[i]"
+  };
+  std::vector<Open> stack_;
+  std::string pending_key_;
+
+  std::string path() const {
+    std::string p;
+    for (const Open& o : stack_) p += o.name;
+    if (!p.empty() && p[0] == '.') p.erase(0, 1);
+    return p;
+  }
+  // Places v in the open container (or as the root); returns where it went.
+  json* place(json&& v, std::string& name) {
+    if (stack_.empty()) {
+      root = std::move(v);
+      return &root;
+    }
+    json& top = *stack_.back().value;
+    if (top.is_array()) {
+      name = "[" + std::to_string(top.size()) + "]";
+      top.push_back(std::move(v));
+      return &top.back();
+    }
+    name = "." + pending_key_;
+    json& slot = top[pending_key_];
+    slot = std::move(v);
+    return &slot;
+  }
+  bool add(json&& v) {
+    std::string name;
+    place(std::move(v), name);
+    return true;
+  }
+  bool open(json&& v) {
+    if (stack_.size() >= max_depth) {
+      error = "nesting deeper than " + std::to_string(max_depth) + " levels";
+      return false;
+    }
+    std::string name;
+    json* where = place(std::move(v), name);
+    stack_.push_back({where, name});
+    return true;
+  }
+  bool close() {
+    stack_.pop_back();
+    return true;
+  }
+};
+
+// ---------------------------------------------------------------------------
+// Reading: every accessor takes the value and its key path, and throws
+// SceneError("source: path: problem").
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diag = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diag = up;
+    }
+  }
+  return row[b.size()];
+}
+
+std::string quote(std::string_view s) {
+  std::string out = "\"";
+  for (const char c : s.substr(0, 60)) out += (c >= 32 && c < 127) ? c : '?';
+  if (s.size() > 60) out += "...";
+  return out + "\"";
+}
+
+std::string short_text(double v) {
+  std::ostringstream o;
+  o.precision(10);
+  o << v;
+  return o.str();
+}
+
+class Reader {
+ public:
+  explicit Reader(const std::string& source) : source_(source) {}
+
+  [[noreturn]] void fail(const std::string& path, const std::string& problem) const {
+    throw SceneError(source_ + ": " + (path.empty() ? "" : path + ": ") + problem);
+  }
+
+  std::string got(const json& v) const {
+    if (v.is_number()) return short_text(v.get<double>());
+    if (v.is_string()) return "the string " + quote(v.get_ref<const std::string&>());
+    if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
+    return std::string(v.is_null() ? "null" : v.is_array() ? "an array" : "an object");
+  }
+
+  void object(const json& v, const std::string& path) const {
+    if (!v.is_object()) fail(path, "must be an object {...} (got " + got(v) + ")");
+  }
+
+  // Unknown keys are errors, with the nearest known key as a hint.
+  void keys(const json& v, const std::string& path, std::initializer_list<std::string_view> allowed) const {
+    object(v, path);
+    for (const auto& item : v.items()) {
+      const std::string& k = item.key();
+      if (std::find(allowed.begin(), allowed.end(), k) != allowed.end()) continue;
+      std::string hint, list;
+      std::size_t best = 3;
+      for (const std::string_view a : allowed) {
+        list += (list.empty() ? "" : ", ") + std::string(a);
+        if (const std::size_t d = edit_distance(k, a); d < best) best = d, hint = std::string(a);
+      }
+      fail(path.empty() ? quote(k) : path + "." + k,
+           "unknown key" + (hint.empty() ? "" : " (did you mean \"" + hint + "\"?)") + "; expected one of: " + list);
+    }
+  }
+
+  double number(const json& v, const std::string& path) const {
+    if (!v.is_number()) fail(path, "must be a number (got " + got(v) + ")");
+    const double d = v.get<double>();
+    if (!std::isfinite(d)) fail(path, "must be a finite number (got " + short_text(d) + ")");
+    return d;
+  }
+
+  std::int64_t integer(const json& v, const std::string& path, std::int64_t lo, std::int64_t hi) const {
+    if (!v.is_number()) fail(path, "must be an integer (got " + got(v) + ")");
+    std::int64_t i;
+    if (v.is_number_unsigned()) {
+      const auto u = v.get<std::uint64_t>();
+      if (u > static_cast<std::uint64_t>(hi)) range_fail(path, lo, hi, std::to_string(u));
+      i = static_cast<std::int64_t>(u);
+    } else if (v.is_number_integer()) {
+      i = v.get<std::int64_t>();
+    } else {
+      const double d = v.get<double>();
+      if (!std::isfinite(d) || std::floor(d) != d) fail(path, "must be an integer (got " + short_text(d) + ")");
+      if (d < static_cast<double>(lo) || d > static_cast<double>(hi)) range_fail(path, lo, hi, short_text(d));
+      i = static_cast<std::int64_t>(d);
+    }
+    if (i < lo || i > hi) range_fail(path, lo, hi, std::to_string(i));
+    return i;
+  }
+
+  std::uint64_t seed(const json& v, const std::string& path) const {
+    if (v.is_number_unsigned()) return v.get<std::uint64_t>();
+    return static_cast<std::uint64_t>(integer(v, path, 0, std::int64_t{1} << 53));
+  }
+
+  bool boolean(const json& v, const std::string& path) const {
+    if (!v.is_boolean()) fail(path, "must be true or false (got " + got(v) + ")");
+    return v.get<bool>();
+  }
+
+  std::string text(const json& v, const std::string& path) const {
+    if (!v.is_string()) fail(path, "must be a string (got " + got(v) + ")");
+    return v.get<std::string>();
+  }
+
+  const json& pair(const json& v, const std::string& path, const char* what) const {
+    if (!v.is_array() || v.size() != 2) fail(path, std::string("must be ") + what + " (got " + got(v) + ")");
+    return v;
+  }
+
+  Vector vec(const json& v, const std::string& path) const {
+    pair(v, path, "an array of two numbers [x, y]");
+    return {number(v[0], path + "[0]"), number(v[1], path + "[1]")};
+  }
+
+  int size_value(const json& v, const std::string& path) const {
+    if (v.is_number() && v.get<double>() <= 0) fail(path, "must be > 0 (got " + got(v) + ")");
+    return static_cast<int>(integer(v, path, 1, max_block_size));
+  }
+
+  double mass(const json& v, const std::string& path) const {
+    if (v.is_string()) {
+      if (v.get_ref<const std::string&>() == "inf") return infinity;
+      fail(path, "must be a number > 0 or \"inf\" (got " + got(v) + ")");
+    }
+    if (v.is_number() && !std::isfinite(v.get<double>()))
+      fail(path, "must be a finite number > 0, or the string \"inf\" for a fixed body (got " + got(v) + ")");
+    const double m = number(v, path);
+    if (m <= 0.0) fail(path, "must be > 0 or \"inf\" (got " + got(v) + ")");
+    return m;
+  }
+
+  double restitution(const json& v, const std::string& path) const {
+    const double e = number(v, path);
+    if (e < 0.0 || e > 1.0) fail(path, "must be in [0, 1] (got " + got(v) + ")");
+    return e;
+  }
+
+  Color color(const json& v, const std::string& path) const {
+    if (v.is_string()) {
+      const std::string& s = v.get_ref<const std::string&>();
+      const bool hex = s.size() == 7 && s[0] == '#' &&
+                       std::all_of(s.begin() + 1, s.end(), [](char c) { return std::isxdigit(static_cast<unsigned char>(c)); });
+      if (hex) {
+        const auto byte = [&](int i) { return static_cast<std::uint8_t>(std::stoi(s.substr(i, 2), nullptr, 16)); };
+        return {byte(1), byte(3), byte(5), 255};
+      }
+    }
+    fail(path, "must be a colour \"#rrggbb\" (got " + got(v) + ")");
+  }
+
+  // A number, or a range [min, max] a generator draws from.
+  RealSpec real_spec(const json& v, const std::string& path) const {
+    if (v.is_array()) {
+      pair(v, path, "a number or a range [min, max]");
+      const double lo = number(v[0], path + "[0]"), hi = number(v[1], path + "[1]");
+      if (lo > hi) fail(path, "range [" + short_text(lo) + ", " + short_text(hi) + "] is empty (min > max)");
+      return RealSpec::uniform(lo, hi);
+    }
+    return RealSpec::fixed(number(v, path));
+  }
+  IntSpec size_spec(const json& v, const std::string& path) const {
+    if (v.is_array()) {
+      pair(v, path, "an integer or a range [min, max]");
+      const int lo = size_value(v[0], path + "[0]"), hi = size_value(v[1], path + "[1]");
+      if (lo > hi)
+        fail(path, "range [" + std::to_string(lo) + ", " + std::to_string(hi) + "] is empty (min > max)");
+      return IntSpec::uniform(lo, hi);
+    }
+    return IntSpec::fixed(size_value(v, path));
+  }
+  VecSpec vec_spec(const json& v, const std::string& path) const {
+    pair(v, path, "an array [x, y] of numbers or ranges [min, max]");
+    return {real_spec(v[0], path + "[0]"), real_spec(v[1], path + "[1]")};
+  }
+
+ private:
+  [[noreturn]] void range_fail(const std::string& path, std::int64_t lo, std::int64_t hi, const std::string& v) const {
+    fail(path, "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] (got " + v + ")");
+  }
+  const std::string& source_;
+};
+
+const json* find(const json& obj, const char* key) {
+  const auto it = obj.find(key);
+  return it == obj.end() ? nullptr : &*it;
+}
+
+void read_world(const Reader& r, const json& w, SceneSpec& s) {
+  r.keys(w, "world",
+         {"width", "height", "dt", "substeps", "gravity", "restitution", "walls", "systems", "ccd", "solver",
+          "iterations"});
+  if (const json* v = find(w, "width")) s.width = static_cast<int>(r.integer(*v, "world.width", 1, max_world_size));
+  if (const json* v = find(w, "height")) s.height = static_cast<int>(r.integer(*v, "world.height", 1, max_world_size));
+  if (const json* v = find(w, "dt")) {
+    s.params.dt = r.number(*v, "world.dt");
+    if (s.params.dt <= 0) r.fail("world.dt", "must be > 0 (got " + r.got(*v) + ")");
+  }
+  if (const json* v = find(w, "substeps"))
+    s.params.substeps = static_cast<int>(r.integer(*v, "world.substeps", 1, max_substeps));
+  if (const json* v = find(w, "gravity")) s.params.gravity = r.vec(*v, "world.gravity");
+  if (const json* v = find(w, "restitution")) s.restitution = r.restitution(*v, "world.restitution");
+  if (const json* v = find(w, "walls")) s.walls = r.boolean(*v, "world.walls");
+  if (const json* v = find(w, "ccd")) s.params.ccd = r.boolean(*v, "world.ccd");
+  if (const json* v = find(w, "solver")) {
+    const std::string name = r.text(*v, "world.solver");
+    if (name == "course") s.params.solver = Solver::course;
+    else if (name == "stable") s.params.solver = Solver::stable;
+    else r.fail("world.solver", "must be \"course\" or \"stable\" (got " + r.got(*v) + ")");
+  }
+  if (const json* v = find(w, "iterations"))
+    s.params.iterations = static_cast<int>(r.integer(*v, "world.iterations", 1, max_iterations));
+  if (const json* v = find(w, "systems")) {
+    if (!v->is_array()) r.fail("world.systems", "must be an array of system names (got " + r.got(*v) + ")");
+    SystemSet set{false, false, false, false};
+    for (std::size_t i = 0; i < v->size(); ++i) {
+      const std::string path = "world.systems[" + std::to_string(i) + "]";
+      const std::string name = r.text((*v)[i], path);
+      const auto id = system_from_name(name);
+      if (!id) r.fail(path, "unknown system " + quote(name) + "; expected draw, move, forces or collision");
+      if (set.has(*id)) r.fail(path, "system " + quote(name) + " listed twice");
+      set.set(*id, true);
+    }
+    s.systems = set;
+  }
+}
+
+// The keys a block and a grid share: everything but the placement.
+void read_block_keys(const Reader& r, const json& b, const std::string& p, BlockSpec& out) {
+  const json* pos = find(b, "pos");
+  const json* size = find(b, "size");
+  const json* mass = find(b, "mass");
+  if (!pos) r.fail(p, "missing key \"pos\" (the top-left corner [x, y], px)");
+  if (!size) r.fail(p, "missing key \"size\" ([width, height], px)");
+  if (!mass) r.fail(p, "missing key \"mass\" (a number > 0, or \"inf\" for a fixed body)");
+  out.pos = r.vec(*pos, p + ".pos");
+  r.pair(*size, p + ".size", "an array of two integers [width, height]");
+  out.width = r.size_value((*size)[0], p + ".size[0]");
+  out.height = r.size_value((*size)[1], p + ".size[1]");
+  out.mass = r.mass(*mass, p + ".mass");
+  if (const json* v = find(b, "velocity")) out.velocity = r.vec(*v, p + ".velocity");
+  if (const json* v = find(b, "force")) out.force = r.vec(*v, p + ".force");
+  if (const json* v = find(b, "impulse")) out.impulse = r.vec(*v, p + ".impulse");
+  if (const json* v = find(b, "color")) out.color = r.color(*v, p + ".color");
+  if (const json* v = find(b, "restitution")) out.restitution = r.restitution(*v, p + ".restitution");
+}
+
+BlockSpec read_block(const Reader& r, const json& b, const std::string& p) {
+  r.keys(b, p, {"pos", "size", "mass", "velocity", "force", "impulse", "color", "restitution"});
+  BlockSpec out;
+  read_block_keys(r, b, p, out);
+  return out;
+}
+
+GridSpec read_grid(const Reader& r, const json& g, const std::string& p) {
+  r.keys(g, p, {"pos", "size", "mass", "velocity", "force", "impulse", "color", "restitution", "count", "step"});
+  GridSpec out;
+  read_block_keys(r, g, p, out.first);
+  const json* count = find(g, "count");
+  if (!count) r.fail(p, "missing key \"count\" ([columns, rows])");
+  r.pair(*count, p + ".count", "an array of two integers [columns, rows]");
+  out.columns = static_cast<int>(r.integer((*count)[0], p + ".count[0]", 1, max_bodies));
+  out.rows = static_cast<int>(r.integer((*count)[1], p + ".count[1]", 1, max_bodies));
+  // Default step: the block's size, so the blocks touch.
+  out.step = {static_cast<double>(out.first.width), static_cast<double>(out.first.height)};
+  if (const json* v = find(g, "step")) out.step = r.vec(*v, p + ".step");
+  return out;
+}
+
+RandomSpec read_random(const Reader& r, const json& g, const std::string& p, const SceneSpec& s) {
+  r.keys(g, p,
+         {"count", "side", "size", "mass", "velocity", "force", "impulse", "restitution", "color", "cells", "area"});
+  RandomSpec out;
+  const json* count = find(g, "count");
+  if (!count) r.fail(p, "missing key \"count\" (the number of blocks)");
+  out.count = r.integer(*count, p + ".count", 1, max_bodies);
+  const json* side = find(g, "side");
+  const json* size = find(g, "size");
+  if (side && size) r.fail(p, "give \"side\" (square blocks) or \"size\", not both");
+  if (!side && !size) r.fail(p, "missing key \"size\" ([width, height]) or \"side\" (square blocks)");
+  if (side) {
+    out.side = r.size_spec(*side, p + ".side");
+  } else {
+    r.pair(*size, p + ".size", "an array [width, height] of integers or ranges [min, max]");
+    out.width = r.size_spec((*size)[0], p + ".size[0]");
+    out.height = r.size_spec((*size)[1], p + ".size[1]");
+  }
+  const json* mass = find(g, "mass");
+  if (!mass) r.fail(p, "missing key \"mass\" (a number > 0, a range [min, max], or \"inf\")");
+  if (mass->is_array()) {
+    out.mass = r.real_spec(*mass, p + ".mass");
+    if (out.mass.lo <= 0) r.fail(p + ".mass", "range must be > 0 (got min " + short_text(out.mass.lo) + ")");
+  } else {
+    out.mass = RealSpec::fixed(r.mass(*mass, p + ".mass"));
+  }
+  if (const json* v = find(g, "velocity")) out.velocity = r.vec_spec(*v, p + ".velocity");
+  if (const json* v = find(g, "force")) out.force = r.vec_spec(*v, p + ".force");
+  if (const json* v = find(g, "impulse")) out.impulse = r.vec_spec(*v, p + ".impulse");
+  if (const json* v = find(g, "restitution")) {
+    out.restitution = r.real_spec(*v, p + ".restitution");
+    for (const double e : {out.restitution->lo, out.restitution->hi})
+      if (e < 0 || e > 1) r.fail(p + ".restitution", "must be in [0, 1] (got " + short_text(e) + ")");
+  }
+  if (const json* v = find(g, "color"); v && !(v->is_string() && v->get<std::string>() == "random"))
+    out.color = r.color(*v, p + ".color");
+  const json* cells = find(g, "cells");
+  const json* area = find(g, "area");
+  if (cells && area) r.fail(p, "give \"cells\" or \"area\", not both");
+  if (cells) {
+    const std::string c = p + ".cells";
+    r.keys(*cells, c, {"pos", "columns", "step", "jitter"});
+    out.use_cells = true;
+    for (const char* k : {"pos", "columns", "step"})
+      if (!find(*cells, k)) r.fail(c, std::string("missing key \"") + k + "\"");
+    out.origin = r.vec(cells->at("pos"), c + ".pos");
+    out.columns = static_cast<int>(r.integer(cells->at("columns"), c + ".columns", 1, max_bodies));
+    out.step = r.vec(cells->at("step"), c + ".step");
+    if (const json* v = find(*cells, "jitter")) {
+      out.jitter = r.vec(*v, c + ".jitter");
+      if (out.jitter.x < 0 || out.jitter.y < 0) r.fail(c + ".jitter", "must be >= 0");
+    }
+  } else {
+    // Default area: the inside of the walls, or the whole world.
+    out.use_cells = false;
+    const double t = s.walls ? wall_thickness : 0;
+    out.origin = {t, t};
+    out.extent = {s.width - 2 * t, s.height - 2 * t};
+    if (area) {
+      const std::string a = p + ".area";
+      r.keys(*area, a, {"pos", "size"});
+      if (const json* v = find(*area, "pos")) out.origin = r.vec(*v, a + ".pos");
+      if (const json* v = find(*area, "size")) out.extent = r.vec(*v, a + ".size");
+    }
+  }
+  return out;
+}
+
+BlockEntry read_entry(const Reader& r, const json& e, const std::string& p, const SceneSpec& s) {
+  r.object(e, p);
+  const bool grid = e.contains("grid"), random = e.contains("random");
+  if (grid && random) r.fail(p, "an entry is a \"grid\" or a \"random\" generator, not both");
+  if (grid) {
+    r.keys(e, p, {"grid"});
+    return read_grid(r, e["grid"], p + ".grid");
+  }
+  if (random) {
+    r.keys(e, p, {"random", "seed"});
+    RandomSpec out = read_random(r, e["random"], p + ".random", s);
+    if (const json* v = find(e, "seed")) out.seed = r.seed(*v, p + ".seed");
+    return out;
+  }
+  return read_block(r, e, p);
+}
+
+std::string stem(const std::string& source) {
+  std::string name = std::filesystem::path(source).stem().string();
+  return name.empty() ? "scene" : name;
+}
+
+}  // namespace
+
+TextPos line_column(std::string_view text, std::size_t position) {
+  // position counts the characters read, the offending one included.
+  const std::size_t at = std::min(position == 0 ? 0 : position - 1, text.size());
+  TextPos p;
+  for (std::size_t i = 0; i < at; ++i) {
+    if (text[i] == '\n') {
+      ++p.line;
+      p.column = 1;
+    } else {
+      ++p.column;
+    }
+  }
+  return p;
+}
+
+SceneSpec parse_scene(std::string_view text, const std::string& source) {
+  StrictDom dom;
+  // Comments (// and /* */) are allowed: scene files are written by hand.
+  const bool ok = json::sax_parse(text, &dom, json::input_format_t::json, true, true);
+  if (!ok || !dom.error.empty()) {
+    if (dom.position > 0) {
+      const TextPos p = line_column(text, dom.position);
+      throw SceneError(source + ":" + std::to_string(p.line) + ":" + std::to_string(p.column) +
+                       ": invalid JSON: " + dom.error);
+    }
+    throw SceneError(source + ": " + (dom.error.empty() ? std::string("invalid JSON") : dom.error));
+  }
+  const json& doc = dom.root;
+  const Reader r(source);
+  if (!doc.is_object()) r.fail("", "a scene file must hold one JSON object {...} (got " + r.got(doc) + ")");
+  r.keys(doc, "", {"name", "description", "world", "blocks"});
+  SceneSpec s;
+  s.name = stem(source);
+  if (const json* v = find(doc, "name")) s.name = r.text(*v, "name");
+  if (const json* v = find(doc, "description")) s.description = r.text(*v, "description");
+  if (const json* v = find(doc, "world")) read_world(r, *v, s);
+  if (const json* v = find(doc, "blocks")) {
+    if (!v->is_array()) r.fail("blocks", "must be an array of blocks (got " + r.got(*v) + ")");
+    for (std::size_t i = 0; i < v->size(); ++i)
+      s.blocks.push_back(read_entry(r, (*v)[i], "blocks[" + std::to_string(i) + "]", s));
+  }
+  // The checks that need the whole scene (counts, placement against the walls).
+  expand(s, source);
+  return s;
+}
+
+SceneSpec load_scene_file(const std::string& path) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(status))
+    throw SceneError(path + ": cannot read the scene file: no such file");
+  if (std::filesystem::is_directory(status)) throw SceneError(path + ": cannot read the scene file: it is a directory");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SceneError(path + ": cannot read the scene file: " + std::strerror(errno));
+  const auto size = std::filesystem::file_size(path, ec);
+  if (!ec && size > max_file_size)
+    throw SceneError(path + ": cannot read the scene file: larger than " + std::to_string(max_file_size >> 20) + " MB");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw SceneError(path + ": cannot read the scene file: read error");
+  return parse_scene(text.str(), path);
+}
+
+// ---------------------------------------------------------------------------
+// Writing.
+
+namespace {
+
+using ojson = nlohmann::ordered_json;
+
+std::string hex(Color c) {
+  char buf[8];
+  std::snprintf(buf, sizeof buf, "#%02x%02x%02x", c.r, c.g, c.b);
+  return buf;
+}
+ojson vec(Vector v) { return ojson::array({v.x, v.y}); }
+ojson mass(double m) { return std::isfinite(m) ? ojson(m) : ojson("inf"); }
+ojson real(const RealSpec& r) { return r.drawn ? ojson::array({r.lo, r.hi}) : ojson(r.lo); }
+ojson integer(const IntSpec& r) { return r.drawn ? ojson::array({r.lo, r.hi}) : ojson(r.lo); }
+ojson vec(const VecSpec& v) { return ojson::array({real(v.x), real(v.y)}); }
+bool zero(const VecSpec& v) { return v == VecSpec{}; }
+
+void block_keys(ojson& o, const BlockSpec& b) {
+  o["pos"] = vec(b.pos);
+  o["size"] = ojson::array({b.width, b.height});
+  o["mass"] = mass(b.mass);
+  if (!Vector::is_zero(b.velocity)) o["velocity"] = vec(b.velocity);
+  if (!Vector::is_zero(b.force)) o["force"] = vec(b.force);
+  if (!Vector::is_zero(b.impulse)) o["impulse"] = vec(b.impulse);
+  if (!(b.color == default_block_color)) o["color"] = hex(b.color);
+  if (b.restitution) o["restitution"] = *b.restitution;
+}
+
+ojson entry(const BlockEntry& e) {
+  ojson o = ojson::object();
+  if (const auto* b = std::get_if<BlockSpec>(&e)) block_keys(o, *b);
+  if (const auto* g = std::get_if<GridSpec>(&e)) {
+    ojson grid = ojson::object();
+    block_keys(grid, g->first);
+    grid["count"] = ojson::array({g->columns, g->rows});
+    grid["step"] = vec(g->step);
+    o["grid"] = grid;
+  }
+  if (const auto* r = std::get_if<RandomSpec>(&e)) {
+    ojson gen = ojson::object();
+    gen["count"] = r->count;
+    if (r->side) gen["side"] = integer(*r->side);
+    else gen["size"] = ojson::array({integer(r->width), integer(r->height)});
+    gen["mass"] = r->mass.drawn ? real(r->mass) : mass(r->mass.lo);
+    if (!zero(r->velocity)) gen["velocity"] = vec(r->velocity);
+    if (!zero(r->force)) gen["force"] = vec(r->force);
+    if (!zero(r->impulse)) gen["impulse"] = vec(r->impulse);
+    if (r->restitution) gen["restitution"] = real(*r->restitution);
+    gen["color"] = r->color ? ojson(hex(*r->color)) : ojson("random");
+    if (r->use_cells) {
+      gen["cells"] = {{"pos", vec(r->origin)}, {"columns", r->columns}, {"step", vec(r->step)},
+                      {"jitter", vec(r->jitter)}};
+    } else {
+      gen["area"] = {{"pos", vec(r->origin)}, {"size", vec(r->extent)}};
+    }
+    o["random"] = gen;
+    o["seed"] = r->seed;
+  }
+  return o;
+}
+
+}  // namespace
+
+std::string to_json(const SceneSpec& s) {
+  ojson o = ojson::object();
+  o["name"] = s.name;
+  if (!s.description.empty()) o["description"] = s.description;
+  ojson systems = ojson::array();
+  for (const SystemId id : all_systems)
+    if (s.systems.has(id)) systems.push_back(std::string(name(id)));
+  o["world"] = {{"width", s.width},
+                {"height", s.height},
+                {"dt", s.params.dt},
+                {"substeps", s.params.substeps},
+                {"gravity", vec(s.params.gravity)},
+                {"restitution", s.restitution},
+                {"walls", s.walls},
+                {"systems", systems},
+                {"ccd", s.params.ccd},
+                {"solver", s.params.solver == Solver::stable ? "stable" : "course"},
+                {"iterations", s.params.iterations}};
+  ojson blocks = ojson::array();
+  for (const BlockEntry& e : s.blocks) blocks.push_back(entry(e));
+  o["blocks"] = blocks;
+  return o.dump(2) + "\n";
+}
+
+}  // namespace physics

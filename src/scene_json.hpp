@@ -1,0 +1,39 @@
+// Scene files: JSON in, SceneSpec out (and back, for --print-scene).
+//
+// The format is documented in docs/scenes.md. The reader is strict, since a
+// typo must not pass silently: unknown and duplicate keys are errors, every
+// value is type- and range-checked, and each error is one line naming the
+// file and either the line:column (syntax) or the key path (meaning):
+//   scenes/x.json:4:17: invalid JSON: syntax error while parsing object ...
+//   scenes/x.json: blocks[3].mass: must be > 0 or "inf" (got -1)
+// Part of the physics library (no SDL), so it can be fuzzed on its own: any
+// input either gives a valid SceneSpec or throws SceneError, within bounded
+// time and memory (see the limits in scene.hpp).
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "scene.hpp"
+
+namespace physics {
+
+// Parses and validates a scene file's text. `source` names it in messages
+// and gives the default scene name (its file name without directory and
+// extension). Throws SceneError.
+SceneSpec parse_scene(std::string_view text, const std::string& source);
+
+// Reads and parses a file. Throws SceneError (also when it cannot be read).
+SceneSpec load_scene_file(const std::string& path);
+
+// The scene as a scene file that parse_scene reads back to the same scene.
+std::string to_json(const SceneSpec& s);
+
+// 1-based line and column of the byte at 1-based `position` in `text`, as
+// nlohmann's parse errors give it (the count of characters read so far).
+struct TextPos {
+  std::size_t line = 1, column = 1;
+};
+TextPos line_column(std::string_view text, std::size_t position);
+
+}  // namespace physics

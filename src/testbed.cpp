@@ -1,0 +1,188 @@
+#include "testbed.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+
+#include "entities/block.hpp"
+#include "game.hpp"
+
+namespace physics {
+namespace {
+
+constexpr Color spawn_color{255, 140, 0, 255};
+
+SceneSpec with_overrides(SceneSpec s, const Overrides& o) {
+  apply(s, o);
+  return s;
+}
+
+}  // namespace
+
+Testbed::Testbed(std::vector<SceneSpec> scenes, std::size_t current, Overrides overrides, Overlays overlays)
+    : scenes_(std::move(scenes)),
+      current_(current < scenes_.size() ? current : 0),
+      overrides_(overrides),
+      overlays_(overlays),
+      world_(make_world(with_overrides(scenes_.at(current_), overrides_), true, scenes_.at(current_).name)) {
+  if (world_.systems.collision) world_.systems.collision->record_contacts = overlays_.contacts;
+}
+
+void Testbed::rebuild() {
+  try {
+    world_ = make_world(with_overrides(scenes_[current_], overrides_), true, scenes_[current_].name);
+    message_.clear();
+  } catch (const SceneError& e) {
+    message_ = e.what();  // keep the world we have
+  }
+  if (world_.systems.collision) world_.systems.collision->record_contacts = overlays_.contacts;
+  last_contacts_.clear();
+  acc_ms_ = 0.0;
+  press_.reset();
+  if (on_reset) on_reset(world_);
+}
+
+void Testbed::reset() { rebuild(); }
+
+void Testbed::select(std::size_t i) {
+  if (i >= scenes_.size()) return;
+  current_ = i;
+  rebuild();
+}
+
+void Testbed::after_step() {
+  if (world_.systems.collision && overlays_.contacts && world_.systems.collision->contact_count() > 0)
+    last_contacts_ = world_.systems.collision->contacts();
+  if (on_step) on_step(world_);
+}
+
+void Testbed::step() {
+  world_.step();
+  after_step();
+}
+
+int Testbed::advance(double elapsed_ms, std::int64_t last_frame) {
+  if (paused_ || !(elapsed_ms > 0.0)) return 0;
+  const double dt = world_.params.dt;
+  acc_ms_ = std::min(acc_ms_ + elapsed_ms * (slow_ ? slow_motion : 1.0), max_steps_per_frame * dt);
+  // Whole steps covered; the 1e-9 keeps k·dt summed from k pieces a step.
+  const int due = static_cast<int>(std::floor(acc_ms_ / dt + 1e-9));
+  int n = 0;
+  while (n < due && world_.frame < last_frame) {
+    step();
+    ++n;
+  }
+  acc_ms_ = due > 0 ? std::max(0.0, acc_ms_ - due * dt) : acc_ms_;
+  return n;
+}
+
+bool Testbed::spawn(Vector centre, Vector v) {
+  const SceneSpec& s = scene();
+  const double half = spawn_size / 2.0;
+  const Vector pos{centre.x - half, centre.y - half};
+  const double t = s.walls ? wall_thickness : 0.0;
+  if (!(pos.x >= t && pos.y >= t && pos.x + spawn_size <= s.width - t && pos.y + spawn_size <= s.height - t)) {
+    message_ = s.walls ? "no room there: a block cannot overlap the walls" : "no room there: outside the world";
+    return false;
+  }
+  const auto b = Block::make(world_, pos.x, pos.y, spawn_size, spawn_size, spawn_color, spawn_mass,
+                             with_overrides(s, overrides_).restitution);
+  world_.components.velocity[b.id] = v;
+  message_.clear();
+  return true;
+}
+
+Testbed::Action Testbed::handle(const InputEvent& e) {
+  using Kind = InputEvent::Kind;
+  switch (e.kind) {
+    case Kind::quit: return Action::quit;
+    case Kind::mouse_down:
+      if (e.button == 1) press_ = mouse_ = Vector{double(e.x), double(e.y)};
+      return Action::none;
+    case Kind::mouse_move:
+      mouse_ = {double(e.x), double(e.y)};
+      return Action::none;
+    case Kind::mouse_up: {
+      if (e.button != 1 || !press_) return Action::none;
+      const Vector from = *press_;
+      press_.reset();
+      // Slingshot: the block leaves from where the drag began, opposite to the drag.
+      const Vector pull = from - Vector{double(e.x), double(e.y)};
+      Vector v{};
+      if (Vector::norm(pull) > click_radius) {
+        v = fling_scale * pull;
+        if (const double speed = Vector::norm(v); speed > max_fling) v = (max_fling / speed) * v;
+      }
+      spawn(from, v);
+      return Action::none;
+    }
+    case Kind::key: break;
+  }
+  const int k = (e.key >= 'A' && e.key <= 'Z') ? e.key - 'A' + 'a' : e.key;
+  switch (k) {
+    case key::escape:
+    case 'q': return Action::quit;
+    case key::space: paused_ = !paused_; acc_ms_ = 0.0; break;
+    case 'n':
+    case key::right:
+      paused_ = true;
+      step();
+      break;
+    case 'r': reset(); break;
+    case key::tab: select((current_ + 1) % scenes_.size()); break;
+    case 'a': overlays_.aabb = !overlays_.aabb; break;
+    case 'v': overlays_.velocity = !overlays_.velocity; break;
+    case 'c':
+      overlays_.contacts = !overlays_.contacts;
+      if (world_.systems.collision) world_.systems.collision->record_contacts = overlays_.contacts;
+      if (!overlays_.contacts) last_contacts_.clear();
+      break;
+    case 'i': overlays_.hud = !overlays_.hud; break;
+    case 's': slow_ = !slow_; break;
+    case 'h': overlays_.help = !overlays_.help; break;
+    default:
+      if (k >= '1' && k <= '9') select(static_cast<std::size_t>(k - '1'));
+      break;
+  }
+  return Action::none;
+}
+
+std::vector<std::string> Testbed::key_list() {
+  return {"Space  pause / resume",
+          "N, ->  one step",
+          "R      reset the scene",
+          "1-9    choose a scene, Tab: next scene",
+          "click  spawn a block; drag: fling it (slingshot)",
+          "A      AABBs",
+          "V      velocity vectors",
+          "C      contact normals and penetration vectors",
+          "I      HUD on/off",
+          "S      slow motion (x1/4)",
+          "H      this list",
+          "Esc, Q quit"};
+}
+
+View Testbed::view(double fps, double draw_ms) const {
+  View v;
+  v.overlays = overlays_;
+  if (overlays_.contacts) v.contacts = last_contacts_;
+  if (press_) v.sling = std::pair{*press_, mouse_};
+  if (overlays_.hud) {
+    const SceneSpec& s = scene();
+    std::string title = "scene " + std::to_string(current_ + 1) + "/" + std::to_string(scenes_.size()) + " " + s.name;
+    if (paused_) title += "  [paused]";
+    if (slow_) title += "  [slow x0.25]";
+    title += "   H: keys";
+    v.hud.push_back(title);
+    v.hud.push_back(Game::hud_line(world_, fps) + "  frame " + std::to_string(world_.frame));
+    char draw[64];
+    std::snprintf(draw, sizeof draw, "  draw %.3f ms/frame", draw_ms);
+    v.hud.push_back("ms/step: " + Game::system_times(world_) + (world_.systems.draw ? draw : "  draw off"));
+    if (!message_.empty()) v.hud.push_back(message_);
+  }
+  if (overlays_.help) v.help = key_list();
+  return v;
+}
+
+}  // namespace physics

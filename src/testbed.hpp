@@ -1,0 +1,119 @@
+// The testbed: what the keys and the mouse do to the world in window mode,
+// as pure logic (events in, world changes out). The window (window.cpp)
+// only turns SDL events into InputEvents and draws what view() returns, so
+// everything here is tested without a window (tests/test_testbed.cpp).
+//
+//   Space        pause / resume            N or →   one step (and pause)
+//   R            reset the scene           1-9      scene 1-9; Tab: next scene
+//   left click   spawn a block             left drag  fling it (slingshot)
+//   A  AABBs     V  velocity vectors       C  contact normals and penetrations
+//   I  HUD on/off    S  slow motion (x1/4)   H  this key list     Esc/Q  quit
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "scene.hpp"
+#include "world.hpp"
+
+namespace physics {
+
+// Key codes: SDL's keycodes (printable keys are their ASCII code); window.cpp
+// checks that they match SDL's at compile time.
+namespace key {
+inline constexpr int escape = 27, tab = '\t', space = ' ';
+inline constexpr int right = (1 << 30) | 79;  // SDLK_RIGHT
+}  // namespace key
+
+// What the window reports each frame, without SDL types.
+struct InputEvent {
+  enum class Kind { quit, key, mouse_down, mouse_up, mouse_move } kind;
+  int key = 0;  // Kind::key
+  int x = 0, y = 0;
+  int button = 0;  // 1 left, 2 middle, 3 right (SDL's numbering)
+};
+
+struct Overlays {
+  bool aabb = false, velocity = false, contacts = false, hud = true, help = false;
+};
+
+// One frame's picture beyond the blocks themselves.
+struct View {
+  Overlays overlays;
+  std::span<const Contact> contacts;  // the last collisions, if shown
+  std::optional<std::pair<Vector, Vector>> sling;  // drag: from the press point to the mouse
+  std::vector<std::string> hud;   // lines, top left
+  std::vector<std::string> help;  // the key list, when H is on
+};
+
+class Testbed {
+ public:
+  static constexpr double slow_motion = 0.25;   // time scale of S
+  static constexpr int max_steps_per_frame = 5; // a slow machine slows down instead of freezing
+  static constexpr int spawn_size = 30;         // px, square
+  static constexpr double spawn_mass = 5.0;
+  static constexpr double fling_scale = 0.005;  // px/ms of velocity per px of drag
+  static constexpr double max_fling = 2.0;      // px/ms: below a wall's 40 px per frame
+  static constexpr int click_radius = 4;        // px: a shorter drag is a click
+
+  // `scenes` is the list keys 1-9 and Tab walk through; `overrides` (the
+  // command line's values) apply to each of them. Throws SceneError if the
+  // first scene is invalid.
+  Testbed(std::vector<SceneSpec> scenes, std::size_t current, Overrides overrides = {}, Overlays overlays = {});
+
+  enum class Action { none, quit };
+  Action handle(const InputEvent& e);
+
+  // Real time passed since the last call, in ms: runs the fixed steps it
+  // covers (none while paused; a quarter in slow motion), never past frame
+  // `last_frame`. Returns the steps.
+  int advance(double elapsed_ms, std::int64_t last_frame = std::numeric_limits<std::int64_t>::max());
+  void step();
+  void reset();
+  // Switches to scene i (ignored if out of range); rebuilds it.
+  void select(std::size_t i);
+
+  World& world() { return world_; }
+  const World& world() const { return world_; }
+  const SceneSpec& scene() const { return scenes_[current_]; }
+  std::size_t current() const { return current_; }
+  std::size_t scene_count() const { return scenes_.size(); }
+  bool paused() const { return paused_; }
+  bool slow() const { return slow_; }
+  const Overlays& overlays() const { return overlays_; }
+  const std::string& message() const { return message_; }
+
+  // Spawns a block centred on (x, y) with velocity v, unless it would
+  // overlap a wall or leave the world. Returns whether it did.
+  bool spawn(Vector centre, Vector v);
+
+  View view(double fps, double draw_ms) const;
+  static std::vector<std::string> key_list();
+
+  // Called after every physics step, and after a reset or a scene switch
+  // with the new world (frame 0): the trace.
+  std::function<void(const World&)> on_step, on_reset;
+
+ private:
+  void rebuild();
+  void after_step();
+
+  std::vector<SceneSpec> scenes_;
+  std::size_t current_;
+  Overrides overrides_;
+  Overlays overlays_;
+  World world_;
+  bool paused_ = false, slow_ = false;
+  double acc_ms_ = 0.0;
+  std::optional<Vector> press_;
+  Vector mouse_{};
+  std::vector<Contact> last_contacts_;
+  std::string message_;
+};
+
+}  // namespace physics

@@ -1,0 +1,393 @@
+// The command line: flags, dumps and traces, and bad input (exit code 2 with
+// one line naming the flag, file, key or line). Most cases run Cli::run
+// in-process, without any window front end and without SDL linked; a few run
+// the real program (build/game) to check what a user sees, including the
+// window path under SDL's dummy video driver.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <charconv>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "builtin_scenes.hpp"
+#include "cli.hpp"
+#include "dump.hpp"
+#include "helpers.hpp"
+#include "scene_json.hpp"
+
+using namespace physics;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Ran {
+  int code;
+  std::string out, err;
+};
+
+Ran cli(std::vector<std::string> args) {
+  std::ostringstream out, err;
+  const int code = Cli::run(args, out, err, nullptr);
+  return {code, out.str(), err.str()};
+}
+
+bool has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+// Bad input: exit code 2 and exactly one line on stderr containing `part`.
+void expect_bad(std::vector<std::string> args, const std::string& part) {
+  const Ran r = cli(args);
+  BOOST_TEST(r.code == 2);
+  BOOST_TEST(has(r.err, part), "'" << part << "' in: " << r.err);
+  BOOST_TEST(r.err.rfind("game: ", 0) == 0u);
+  BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  BOOST_TEST(r.out.empty());
+}
+
+// A scratch directory, removed at the end of the test.
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    path = fs::temp_directory_path() / ("physics-cli-" + std::to_string(::getpid()) + "-" + std::to_string(counter()++));
+    fs::create_directories(path);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+  std::string file(const std::string& name, const std::string& text = "") const {
+    const auto p = path / name;
+    if (!text.empty()) std::ofstream(p) << text;
+    return p.string();
+  }
+  static int& counter() {
+    static int n = 0;
+    return n;
+  }
+};
+
+std::string read(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::vector<std::vector<std::string>> csv(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    rows.emplace_back();
+    std::istringstream cells(line);
+    for (std::string c; std::getline(cells, c, ',');) rows.back().push_back(c);
+  }
+  return rows;
+}
+
+double number(const std::string& s) {
+  double v = 0;
+  std::from_chars(s.data(), s.data() + s.size(), v);
+  return v;
+}
+
+std::string scene_file(const std::string& name) {
+  return (fs::path(__FILE__).parent_path().parent_path() / "scenes" / (name + ".json")).string();
+}
+
+// The real program, next to this test binary.
+std::string game_binary() { return (fs::read_symlink("/proc/self/exe").parent_path() / "game").string(); }
+
+std::string quote(const std::string& s) {
+  std::string q = "'";
+  for (const char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+// Runs build/game with `env` (e.g. "-u DISPLAY SDL_VIDEODRIVER=dummy") in dir.
+Ran program(const TempDir& dir, const std::string& env, const std::vector<std::string>& args) {
+  std::string cmd = "cd " + quote(dir.path.string()) + " && env " + env + " " + quote(game_binary());
+  for (const std::string& a : args) cmd += " " + quote(a);
+  cmd += " >" + quote(dir.file("stdout")) + " 2>" + quote(dir.file("stderr")) + " </dev/null";
+  const int status = std::system(cmd.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read(dir.file("stdout")), read(dir.file("stderr"))};
+}
+
+const std::string no_display = "-u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER";
+
+bool is_png(const std::string& path) {
+  const std::string head = read(path).substr(0, 8);
+  return head == "\x89PNG\r\n\x1a\n";
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(cli_flags)
+
+BOOST_AUTO_TEST_CASE(help_documents_every_flag) {
+  const Ran r = cli({"--help"});
+  BOOST_TEST(r.code == 0);
+  for (const char* flag : {"--scene", "--headless", "--frames", "--dt", "--substeps", "--gravity", "--restitution",
+                           "--seed", "--dump", "--trace", "--screenshot", "--ccd", "--solver", "--iterations",
+                           "--list-scenes", "--print-scene", "--overlays"})
+    BOOST_TEST(has(r.out, flag), flag);
+}
+
+BOOST_AUTO_TEST_CASE(list_scenes_names_every_builtin) {
+  const Ran r = cli({"--list-scenes"});
+  BOOST_TEST(r.code == 0);
+  for (const SceneSpec& s : builtin_scenes()) BOOST_TEST(has(r.out, s.name + " "), s.name);
+}
+
+BOOST_AUTO_TEST_CASE(the_default_is_the_many_scene_headless_without_a_front_end) {
+  const Ran r = cli({"--frames", "10"});
+  BOOST_TEST(r.code == 0);
+  BOOST_TEST(has(r.out, "ran headless: no window front end"));
+  BOOST_TEST(has(r.out, "scene:           many"));
+  BOOST_TEST(has(r.out, "frames:          10"));
+  BOOST_TEST(has(r.out, "bodies:          15 (11 mobile)"));
+}
+
+BOOST_AUTO_TEST_CASE(command_line_values_override_the_scene) {
+  const Ran r = cli({"--scene", "bounce", "--headless", "--frames", "3", "--dt", "5", "--substeps", "2"});
+  BOOST_TEST(r.code == 0);
+  BOOST_TEST(has(r.out, "dt = 5 ms, 2 substep(s)"), r.out);
+  const Ran p = cli({"--scene", "gas", "--print-scene", "--ccd", "--solver", "stable", "--iterations", "5",
+                     "--gravity=0,-0.001", "--restitution", "0.5", "--seed", "9"});
+  BOOST_TEST_REQUIRE(p.code == 0);
+  const SceneSpec s = parse_scene(p.out, "printed.json");
+  BOOST_TEST(s.params.ccd);
+  BOOST_TEST((s.params.solver == Solver::stable));
+  BOOST_TEST(s.params.iterations == 5);
+  BOOST_TEST(s.params.gravity.y == -0.001);
+  BOOST_TEST(s.restitution == 0.5);
+  BOOST_TEST(std::get<RandomSpec>(s.blocks[0]).seed == 9u);
+  const Ran off = cli({"--scene", "gas", "--print-scene", "--ccd=off"});
+  BOOST_TEST(!parse_scene(off.out, "p.json").params.ccd);
+}
+
+BOOST_AUTO_TEST_CASE(the_seed_changes_the_random_scene) {
+  TempDir dir;
+  const auto a = dir.file("a.csv"), b = dir.file("b.csv"), c = dir.file("c.csv");
+  BOOST_TEST(cli({"--frames", "0", "--dump", a}).code == 0);
+  BOOST_TEST(cli({"--frames", "0", "--dump", b, "--seed", "42"}).code == 0);
+  BOOST_TEST(cli({"--frames", "0", "--dump", c, "--seed", "43"}).code == 0);
+  BOOST_TEST(read(a) == read(b));
+  BOOST_TEST(read(a) != read(c));
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(cli_dump_trace)
+
+BOOST_AUTO_TEST_CASE(dump_is_the_final_state_exactly) {
+  TempDir dir;
+  const auto path = dir.file("final.csv");
+  const Ran r = cli({"--scene", "many", "--frames", "120", "--dump", path});
+  BOOST_TEST_REQUIRE(r.code == 0);
+  World w = make_world(*find_builtin("many"), false);
+  for (int i = 0; i < 120; ++i) w.step();
+  const auto rows = csv(read(path));
+  BOOST_TEST_REQUIRE(rows.size() == 1 + w.components.size());
+  const std::vector<std::string> header{"id", "x", "y", "w", "h", "vx", "vy", "mass"};
+  BOOST_TEST(rows[0] == header, boost::test_tools::per_element());
+  for (std::size_t e = 0; e < w.components.size(); ++e) {
+    const auto& row = rows[e + 1];
+    BOOST_TEST_REQUIRE(row.size() == 8u);
+    BOOST_TEST(row[0] == std::to_string(e));  // creation order, walls first
+    // Full precision: every number reads back as the same double.
+    BOOST_TEST(number(row[1]) == w.components.position[e].x);
+    BOOST_TEST(number(row[2]) == w.components.position[e].y);
+    BOOST_TEST(row[3] == std::to_string(w.components.box[e].width));
+    BOOST_TEST(row[4] == std::to_string(w.components.box[e].height));
+    BOOST_TEST(number(row[5]) == w.components.velocity[e].x);
+    BOOST_TEST(number(row[6]) == w.components.velocity[e].y);
+    if (e < 4) BOOST_TEST(row[7] == "inf");
+    else BOOST_TEST(number(row[7]) == w.components.mass[e]);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(numbers_round_trip) {
+  for (const double v : {0.1, 1.0 / 3.0, 16.666666666666668, -2.5e-300, 123456789.125}) {
+    const std::string s = Dump::number(v);
+    BOOST_TEST(number(s) == v, s);
+  }
+  BOOST_TEST(Dump::number(infinity) == "inf");
+  BOOST_TEST(Dump::number(100.0) == "100");
+}
+
+BOOST_AUTO_TEST_CASE(trace_has_every_frame_and_ends_on_the_dump) {
+  TempDir dir;
+  const auto trace = dir.file("trace.csv"), dump = dir.file("dump.csv");
+  BOOST_TEST_REQUIRE(cli({"--scene", "bounce", "--frames", "30", "--trace", trace, "--dump", dump}).code == 0);
+  const auto rows = csv(read(trace));
+  const std::size_t n = 6;  // 4 walls + the red block + the platform
+  BOOST_TEST_REQUIRE(rows.size() == 1 + 31 * n);
+  const std::vector<std::string> header{"frame", "id", "x", "y", "w", "h", "vx", "vy", "mass"};
+  BOOST_TEST(rows[0] == header, boost::test_tools::per_element());
+  BOOST_TEST(rows[1][0] == "0");  // the initial state
+  BOOST_TEST(rows[1 + 4][2] == "100");
+  BOOST_TEST(rows.back()[0] == "30");
+  // The last frame's rows are the dump's rows with the frame in front.
+  const auto final_rows = csv(read(dump));
+  for (std::size_t e = 0; e < n; ++e) {
+    std::vector<std::string> row(rows[rows.size() - n + e].begin() + 1, rows[rows.size() - n + e].end());
+    BOOST_TEST(row == final_rows[1 + e], boost::test_tools::per_element());
+  }
+}
+
+BOOST_AUTO_TEST_CASE(scene_files_give_the_same_dump_as_the_builtins) {
+  TempDir dir;
+  for (const SceneSpec& s : builtin_scenes()) {
+    const auto a = dir.file(s.name + "-builtin.csv"), b = dir.file(s.name + "-file.csv");
+    BOOST_TEST_REQUIRE(cli({"--scene", s.name, "--frames", "200", "--dump", a}).code == 0);
+    BOOST_TEST_REQUIRE(cli({"--scene", scene_file(s.name), "--frames", "200", "--dump", b}).code == 0);
+    BOOST_TEST(read(a) == read(b), s.name);
+    BOOST_TEST(read(a).size() > 30u);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(headless_screenshot_is_an_offscreen_png) {
+  TempDir dir;
+  const auto png = dir.file("shot.png");
+  const Ran r = cli({"--scene", "bounce", "--headless", "--screenshot", png});
+  BOOST_TEST(r.code == 0);
+  BOOST_TEST(has(r.out, "frames:          60"));  // --screenshot alone runs 60 frames
+  BOOST_TEST(is_png(png));
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+// One case per kind of bad input the issue lists for flags and scenes.
+BOOST_AUTO_TEST_SUITE(cli_bad_input)
+
+BOOST_AUTO_TEST_CASE(unknown_flags_and_missing_values) {
+  expect_bad({"--sceen", "many"}, "unrecognised option '--sceen'");
+  expect_bad({"--frames"}, "--frames");
+  expect_bad({"many"}, "positional");
+  expect_bad({"--dt", "1", "--dt", "2"}, "--dt");
+}
+
+BOOST_AUTO_TEST_CASE(unknown_scene) {
+  expect_bad({"--scene", "nope"}, "unknown scene 'nope' (built-in scenes: walls, drift, impulse, bounce, many,");
+}
+
+BOOST_AUTO_TEST_CASE(unreadable_scene_file) {
+  expect_bad({"--scene", "/nonexistent/x.json"}, "/nonexistent/x.json: cannot read the scene file");
+  TempDir dir;
+  expect_bad({"--scene", dir.path.string() + "/"}, "is a directory");
+}
+
+BOOST_AUTO_TEST_CASE(scene_file_errors_name_the_file_and_the_line_or_key) {
+  TempDir dir;
+  const auto syntax = dir.file("syntax.json", "{\n  \"blocks\": [\n    {\"pos\": [1, 2]\n  ]\n}\n");
+  expect_bad({"--scene", syntax}, syntax + ":4:3: invalid JSON");
+  const auto key = dir.file("key.json", R"({"world": {"dtt": 5}})");
+  expect_bad({"--scene", key}, key + ": world.dtt: unknown key (did you mean \"dt\"?)");
+  const auto type = dir.file("type.json", R"({"world": {"gravity": "down"}})");
+  expect_bad({"--scene", type}, type + ": world.gravity: must be an array of two numbers");
+  const auto mass = dir.file("mass.json", R"({"blocks": [{"pos": [100, 100], "size": [4, 4], "mass": -1}]})");
+  expect_bad({"--scene", mass}, mass + ": blocks[0].mass: must be > 0 or \"inf\" (got -1)");
+  const auto size = dir.file("size.json", R"({"blocks": [{"pos": [100, 100], "size": [0, 4], "mass": 1}]})");
+  expect_bad({"--scene", size}, size + ": blocks[0].size[0]: must be > 0");
+  const auto dt = dir.file("dt.json", R"({"world": {"dt": 0}})");
+  expect_bad({"--scene", dt}, dt + ": world.dt: must be > 0");
+  const auto sub = dir.file("sub.json", R"({"world": {"substeps": 0}})");
+  expect_bad({"--scene", sub}, sub + ": world.substeps");
+  const auto e = dir.file("e.json", R"({"world": {"restitution": 2}})");
+  expect_bad({"--scene", e}, e + ": world.restitution: must be in [0, 1]");
+  const auto wall = dir.file("wall.json", R"({"blocks": [{"pos": [780, 100], "size": [40, 40], "mass": 1}]})");
+  expect_bad({"--scene", wall}, wall + ": blocks[0]: block at (780, 100) of size 40x40");
+  const auto inf = dir.file("inf.json", R"({"blocks": [{"pos": [100, 1e999], "size": [4, 4], "mass": 1}]})");
+  expect_bad({"--scene", inf}, inf + ":1:");
+}
+
+BOOST_AUTO_TEST_CASE(non_finite_values_on_the_command_line) {
+  expect_bad({"--dt", "nan"}, "--dt: must be a finite number (got 'nan')");
+  expect_bad({"--dt", "inf"}, "--dt: must be a finite number");
+  expect_bad({"--gravity", "inf,0"}, "--gravity: must be a finite number");
+  expect_bad({"--restitution", "nan"}, "--restitution");
+}
+
+BOOST_AUTO_TEST_CASE(bad_values_on_the_command_line) {
+  expect_bad({"--dt", "0"}, "--dt: must be > 0 (got '0')");
+  expect_bad({"--dt=-1"}, "--dt: must be > 0");
+  expect_bad({"--dt", "fast"}, "--dt: must be a number (got 'fast')");
+  expect_bad({"--substeps", "0"}, "--substeps: must be an integer in [1, 1000] (got '0')");
+  expect_bad({"--substeps", "2.5"}, "--substeps");
+  expect_bad({"--iterations", "0"}, "--iterations");
+  expect_bad({"--restitution", "1.5"}, "--restitution: must be in [0, 1] (got '1.5')");
+  expect_bad({"--restitution=-0.1"}, "--restitution");
+  expect_bad({"--frames=-1"}, "--frames");
+  expect_bad({"--frames", "ten"}, "--frames");
+  expect_bad({"--gravity", "0"}, "--gravity: must be two numbers X,Y (got '0')");
+  expect_bad({"--gravity", "0,x"}, "--gravity");
+  expect_bad({"--seed=-3"}, "--seed");
+  expect_bad({"--solver", "fast"}, "--solver: must be course or stable (got 'fast')");
+  expect_bad({"--ccd=maybe"}, "--ccd: must be on or off");
+  expect_bad({"--overlays", "aabb,boxes"}, "--overlays");
+}
+
+BOOST_AUTO_TEST_CASE(unwritable_outputs_fail_before_the_run) {
+  expect_bad({"--dump", "/nonexistent/dir/x.csv"}, "--dump: cannot write /nonexistent/dir/x.csv");
+  expect_bad({"--trace", "/nonexistent/dir/x.csv"}, "--trace: cannot write");
+  expect_bad({"--dump", ""}, "must not be empty");
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+// The real program: what a user sees.
+BOOST_AUTO_TEST_SUITE(cli_program)
+
+BOOST_AUTO_TEST_CASE(bad_input_exits_with_code_2_and_one_line) {
+  TempDir dir;
+  const Ran r = program(dir, no_display, {"--scene", "nope"});
+  BOOST_TEST(r.code == 2);
+  BOOST_TEST(has(r.err, "game: unknown scene 'nope'"));
+  BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  const Ran f = program(dir, no_display, {"--dt", "0"});
+  BOOST_TEST(f.code == 2);
+}
+
+BOOST_AUTO_TEST_CASE(without_a_display_it_runs_headless_and_says_so) {
+  // No DISPLAY, WAYLAND_DISPLAY or SDL_VIDEODRIVER: SDL is never initialised.
+  TempDir dir;
+  const Ran r = program(dir, no_display, {"--scene", "gas", "--frames", "20", "--dump", "gas.csv"});
+  BOOST_TEST(r.code == 0);
+  BOOST_TEST(has(r.out, "ran headless: no display"), r.out);
+  BOOST_TEST(r.err.empty(), r.err);
+  BOOST_TEST(csv(read(dir.file("gas.csv"))).size() == 305u);
+}
+
+BOOST_AUTO_TEST_CASE(a_window_run_draws_and_saves_a_screenshot) {
+  // SDL's dummy video driver: a real window path (renderer, font, HUD,
+  // overlays) with no display at all.
+  TempDir dir;
+  const Ran r = program(dir, no_display + " SDL_VIDEODRIVER=dummy",
+                        {"--scene", "bounce", "--frames", "10", "--screenshot", "w.png", "--overlays", "all",
+                         "--dump", "w.csv"});
+  BOOST_TEST(r.code == 0, r.err);
+  BOOST_TEST(!has(r.out, "ran headless"));
+  BOOST_TEST(is_png(dir.file("w.png")));
+  BOOST_TEST(csv(read(dir.file("w.csv"))).size() == 7u);
+}
+
+BOOST_AUTO_TEST_CASE(a_missing_font_turns_the_hud_off_with_a_warning) {
+  TempDir dir;
+  const Ran r = program(dir, no_display + " SDL_VIDEODRIVER=dummy PHYSICS_FONT=/nonexistent/font.ttf",
+                        {"--scene", "walls", "--frames", "3", "--screenshot", "nofont.png"});
+  BOOST_TEST(r.code == 0, r.err);
+  BOOST_TEST(has(r.err, "warning: font /nonexistent/font.ttf not found"), r.err);
+  BOOST_TEST(has(r.err, "HUD off"));
+  BOOST_TEST(is_png(dir.file("nofont.png")));
+}
+
+BOOST_AUTO_TEST_CASE(a_window_that_cannot_open_falls_back_to_headless) {
+  TempDir dir;
+  const Ran r = program(dir, no_display + " SDL_VIDEODRIVER=no-such-driver", {"--frames", "5"});
+  BOOST_TEST(r.code == 0);
+  BOOST_TEST(has(r.err, "running headless"), r.err);
+  BOOST_TEST(has(r.out, "ran headless: window failed"));
+}
+
+BOOST_AUTO_TEST_SUITE_END()

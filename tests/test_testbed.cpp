@@ -1,0 +1,218 @@
+// The testbed's input handling without a window: events in, world changes out.
+#include <algorithm>
+#include <vector>
+
+#include "builtin_scenes.hpp"
+#include "helpers.hpp"
+#include "testbed.hpp"
+
+using namespace physics;
+
+namespace {
+
+std::vector<SceneSpec> all_scenes() { return {builtin_scenes().begin(), builtin_scenes().end()}; }
+
+Testbed on(const char* name, Overlays o = {}) {
+  const auto scenes = all_scenes();
+  std::size_t i = 0;
+  while (scenes[i].name != name) ++i;
+  return Testbed(scenes, i, {}, o);
+}
+
+InputEvent press(int k) { return {InputEvent::Kind::key, k}; }
+InputEvent down(int x, int y) { return {InputEvent::Kind::mouse_down, 0, x, y, 1}; }
+InputEvent move(int x, int y) { return {InputEvent::Kind::mouse_move, 0, x, y, 0}; }
+InputEvent up(int x, int y) { return {InputEvent::Kind::mouse_up, 0, x, y, 1}; }
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(testbed_input)
+
+BOOST_AUTO_TEST_CASE(time_runs_fixed_steps) {
+  Testbed tb = on("many");
+  BOOST_TEST(tb.advance(course_dt * 2.5) == 2);
+  BOOST_TEST(tb.world().frame == 2);
+  BOOST_TEST(tb.advance(course_dt * 0.5) == 1);  // the half step left over completes
+  // A long stall runs at most a few steps: the simulation slows down instead of freezing.
+  BOOST_TEST(tb.advance(10'000.0) == Testbed::max_steps_per_frame);
+  // Never past a frame limit (--frames).
+  Testbed tb2 = on("many");
+  tb2.advance(course_dt * 4, 2);
+  BOOST_TEST(tb2.world().frame == 2);
+}
+
+BOOST_AUTO_TEST_CASE(space_pauses_and_resumes) {
+  Testbed tb = on("many");
+  tb.handle(press(' '));
+  BOOST_TEST(tb.paused());
+  BOOST_TEST(tb.advance(1000.0) == 0);
+  BOOST_TEST(tb.world().frame == 0);
+  tb.handle(press(' '));
+  BOOST_TEST(!tb.paused());
+  BOOST_TEST(tb.advance(course_dt) == 1);
+}
+
+BOOST_AUTO_TEST_CASE(n_or_right_arrow_steps_once_and_pauses) {
+  Testbed tb = on("many");
+  tb.handle(press('n'));
+  BOOST_TEST(tb.world().frame == 1);
+  BOOST_TEST(tb.paused());
+  tb.handle(press(key::right));
+  BOOST_TEST(tb.world().frame == 2);
+  const auto pos = tb.world().components.position;
+  BOOST_TEST(tb.advance(1000.0) == 0);
+  BOOST_TEST((tb.world().components.position == pos));
+}
+
+BOOST_AUTO_TEST_CASE(r_resets_the_scene) {
+  Testbed tb = on("many");
+  const auto start = tb.world().components.position;
+  for (int i = 0; i < 30; ++i) tb.step();
+  tb.spawn({400, 300}, {});
+  BOOST_TEST(tb.world().components.size() == 16u);
+  tb.handle(press('r'));
+  BOOST_TEST(tb.world().frame == 0);
+  BOOST_TEST(tb.world().components.size() == 15u);
+  BOOST_TEST((tb.world().components.position == start));
+}
+
+BOOST_AUTO_TEST_CASE(digits_and_tab_switch_scenes) {
+  Testbed tb = on("many");
+  BOOST_TEST(tb.scene().name == "many");
+  tb.handle(press('1'));
+  BOOST_TEST(tb.scene().name == "walls");
+  BOOST_TEST(tb.world().components.size() == 4u);
+  BOOST_TEST(!tb.world().systems.move.has_value());  // walls declares Draw only
+  tb.handle(press('7'));
+  BOOST_TEST(tb.scene().name == "gas");
+  tb.handle(press('9'));  // there is no 9th scene: nothing changes
+  BOOST_TEST(tb.scene().name == "gas");
+  tb.handle(press(key::tab));
+  BOOST_TEST(tb.scene().name == "stack");
+  tb.handle(press(key::tab));
+  BOOST_TEST(tb.scene().name == "walls");  // wraps
+}
+
+BOOST_AUTO_TEST_CASE(overrides_apply_to_every_scene_switched_to) {
+  Overrides o;
+  o.gravity = Vector{0, 0.002};
+  Testbed tb(all_scenes(), 0, o);
+  tb.handle(press('7'));
+  BOOST_TEST(tb.world().params.gravity.y == 0.002);
+}
+
+BOOST_AUTO_TEST_CASE(a_click_spawns_a_block_at_rest_centred_on_the_pointer) {
+  Testbed tb = on("bounce");
+  const std::size_t n = tb.world().components.size();
+  tb.handle(down(400, 200));
+  tb.handle(up(401, 201));  // moved less than the click radius
+  BOOST_TEST_REQUIRE(tb.world().components.size() == n + 1);
+  const EntityId e = static_cast<EntityId>(n);
+  BOOST_TEST(tb.world().components.position[e].x == 400.0 - Testbed::spawn_size / 2.0);
+  BOOST_TEST(tb.world().components.position[e].y == 200.0 - Testbed::spawn_size / 2.0);
+  BOOST_TEST((tb.world().components.velocity[e] == Vector::zero()));
+  BOOST_TEST(tb.world().components.mass[e] == Testbed::spawn_mass);
+  // It takes part in the physics: registered with every declared system.
+  BOOST_TEST(tb.world().systems.collision->size() == n + 1);
+  BOOST_TEST(tb.world().systems.draw->size() == n + 1);
+}
+
+BOOST_AUTO_TEST_CASE(a_drag_flings_the_block_opposite_to_the_drag) {
+  Testbed tb = on("bounce");
+  const std::size_t n = tb.world().components.size();
+  tb.handle(down(400, 200));
+  tb.handle(move(350, 220));
+  BOOST_TEST(tb.view(60, 0).sling.has_value());  // the slingshot is drawn while dragging
+  tb.handle(up(300, 240));
+  BOOST_TEST(!tb.view(60, 0).sling.has_value());
+  const Vector v = tb.world().components.velocity[n];
+  BOOST_TEST(v.x == 100 * Testbed::fling_scale);
+  BOOST_TEST(v.y == -40 * Testbed::fling_scale);
+  // A huge drag is capped so the block cannot tunnel through a wall.
+  tb.handle(down(400, 300));
+  tb.handle(up(-5000, 300));
+  BOOST_TEST(Vector::norm(tb.world().components.velocity[n + 1]) <= Testbed::max_fling + 1e-12);
+  BOOST_TEST(tb.world().components.velocity[n + 1].x > 0.0);
+}
+
+BOOST_AUTO_TEST_CASE(no_block_is_spawned_in_a_wall) {
+  Testbed tb = on("bounce");
+  const std::size_t n = tb.world().components.size();
+  tb.handle(down(20, 300));
+  tb.handle(up(20, 300));
+  BOOST_TEST(tb.world().components.size() == n);
+  BOOST_TEST(!tb.message().empty());
+  // Other buttons do nothing.
+  tb.handle({InputEvent::Kind::mouse_down, 0, 400, 300, 3});
+  tb.handle({InputEvent::Kind::mouse_up, 0, 400, 300, 3});
+  BOOST_TEST(tb.world().components.size() == n);
+}
+
+BOOST_AUTO_TEST_CASE(overlay_keys_toggle_and_contacts_are_recorded) {
+  Testbed tb = on("cradle");
+  BOOST_TEST(!tb.overlays().aabb);
+  tb.handle(press('a'));
+  tb.handle(press('v'));
+  tb.handle(press('c'));
+  BOOST_TEST(tb.overlays().aabb);
+  BOOST_TEST(tb.overlays().velocity);
+  BOOST_TEST(tb.overlays().contacts);
+  BOOST_TEST(tb.world().systems.collision->record_contacts);
+  // Run until the striker hits the row: the view carries those contacts.
+  for (int i = 0; i < 60 && tb.view(60, 0).contacts.empty(); ++i) tb.step();
+  const View v = tb.view(60, 0);
+  BOOST_TEST_REQUIRE(!v.contacts.empty());
+  BOOST_TEST(std::abs(v.contacts[0].normal.x) == 1.0);
+  BOOST_TEST(v.contacts[0].normal.y == 0.0);
+  tb.handle(press('C'));  // upper case works too
+  BOOST_TEST(!tb.overlays().contacts);
+  BOOST_TEST(tb.view(60, 0).contacts.empty());
+}
+
+BOOST_AUTO_TEST_CASE(hud_help_and_slow_motion) {
+  Testbed tb = on("many");
+  BOOST_TEST(tb.view(60, 0).hud.size() >= 3u);
+  const std::string times = tb.view(60, 0).hud[2];
+  BOOST_TEST(times.find("collision") != std::string::npos);
+  tb.handle(press('i'));
+  BOOST_TEST(tb.view(60, 0).hud.empty());
+  BOOST_TEST(tb.view(60, 0).help.empty());
+  tb.handle(press('h'));
+  const auto help = tb.view(60, 0).help;
+  BOOST_TEST(help.size() == Testbed::key_list().size());
+  tb.handle(press('s'));
+  BOOST_TEST(tb.slow());
+  BOOST_TEST(tb.advance(course_dt * 3) == 0);  // a quarter of the time passes
+  BOOST_TEST(tb.advance(course_dt * 1.1) == 1);
+}
+
+BOOST_AUTO_TEST_CASE(the_hud_shows_no_time_for_a_left_out_system) {
+  Testbed tb = on("drift");
+  tb.step();
+  const std::string times = tb.view(60, 0).hud[2];
+  BOOST_TEST(times.find("forces off") != std::string::npos, times);
+  BOOST_TEST(times.find("collision off") != std::string::npos);
+  BOOST_TEST(times.find("move off") == std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(escape_q_and_closing_quit) {
+  Testbed tb = on("many");
+  BOOST_TEST((tb.handle(press(key::escape)) == Testbed::Action::quit));
+  BOOST_TEST((tb.handle(press('q')) == Testbed::Action::quit));
+  BOOST_TEST((tb.handle({InputEvent::Kind::quit}) == Testbed::Action::quit));
+  BOOST_TEST((tb.handle(press('x')) == Testbed::Action::none));
+}
+
+BOOST_AUTO_TEST_CASE(steps_and_resets_reach_the_trace) {
+  Testbed tb = on("bounce");
+  std::vector<std::int64_t> frames;
+  tb.on_step = [&](const World& w) { frames.push_back(w.frame); };
+  tb.on_reset = [&](const World& w) { frames.push_back(-1 - w.frame); };
+  tb.advance(course_dt * 2);
+  tb.handle(press('r'));
+  tb.handle(press('n'));
+  const std::vector<std::int64_t> expected{1, 2, -1, 1};
+  BOOST_TEST(frames == expected, boost::test_tools::per_element());
+}
+
+BOOST_AUTO_TEST_SUITE_END()
