@@ -30,7 +30,7 @@ CORE_SRC := src/utils/vect.cpp src/utils/rect.cpp src/utils/png.cpp \
             src/component_defs.cpp src/system_defs.cpp src/world.cpp \
             src/systems/move.cpp src/systems/forces.cpp src/systems/collision.cpp \
             src/entities/block.cpp
-CORE_SRC += src/systems/broadphase.cpp
+CORE_SRC += src/systems/broadphase.cpp src/soak.cpp
 # Scenes (description, built-ins, JSON files), dumps and offscreen pictures: SDL-free, in the library.
 CORE_SRC += src/scene.cpp src/scene_json.cpp src/builtin_scenes.cpp src/dump.cpp src/offscreen.cpp
 # The command line and the testbed's input logic: SDL-free, linked into the game and the tests.
@@ -46,7 +46,7 @@ TEST_OBJ := $(TEST_SRC:%.cpp=$(BUILD)/obj/%.o) $(BUILD)/obj/src/game_nomain.o
 SDL_CFLAGS = $(shell pkg-config --cflags sdl2 SDL2_ttf)
 SDL_LIBS   = $(shell pkg-config --libs sdl2 SDL2_ttf)
 
-.PHONY: all run test deps clean check-no-sdl determinism memcheck
+.PHONY: all run test deps clean check-no-sdl determinism memcheck soak
 all: $(BUILD)/game $(BUILD)/tests
 
 deps:
@@ -102,6 +102,15 @@ memcheck: deps
 	@$(MAKE) --no-print-directory $(BUILD)/game
 	valgrind --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite,indirect \
 	  ./$(BUILD)/game --headless --frames 2000
+
+# Long runs of the gas and stack scenes: 10^6 steps each, checked every 10^4.
+SOAK_STEPS ?= 1000000
+soak: deps
+	@$(MAKE) --no-print-directory $(BUILD)/soak
+	./$(BUILD)/soak $(SOAK_STEPS)
+
+$(BUILD)/soak: $(BUILD)/obj/tools/soak.o $(BUILD)/libphysics.a
+	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS)
 
 clean:
 	rm -rf build
