@@ -46,7 +46,7 @@ TEST_OBJ := $(TEST_SRC:%.cpp=$(BUILD)/obj/%.o) $(BUILD)/obj/src/game_nomain.o
 SDL_CFLAGS = $(shell pkg-config --cflags sdl2 SDL2_ttf)
 SDL_LIBS   = $(shell pkg-config --libs sdl2 SDL2_ttf)
 
-.PHONY: all run test deps clean check-no-sdl determinism memcheck soak
+.PHONY: all run test deps clean check-no-sdl determinism memcheck soak fuzz
 all: $(BUILD)/game $(BUILD)/tests
 
 deps:
@@ -111,6 +111,19 @@ soak: deps
 
 $(BUILD)/soak: $(BUILD)/obj/tools/soak.o $(BUILD)/libphysics.a
 	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS)
+
+# Coverage-guided fuzzing of the scene loader (libFuzzer, clang from Debian),
+# seeded with scenes/ and the regression inputs. `make fuzz SECONDS=600`.
+FUZZ_SECONDS := $(if $(filter command line,$(origin SECONDS)),$(SECONDS),60)
+FUZZ_DIR     := build/fuzz
+fuzz: deps
+	@$(MAKE) --no-print-directory PACKAGES="clang libclang-rt-14-dev nlohmann-json3-dev" deps
+	@mkdir -p $(FUZZ_DIR)/corpus
+	cp scenes/*.json tests/fuzz_regressions/* $(FUZZ_DIR)/corpus/ 2>/dev/null || true
+	clang++ -std=c++20 -O1 -g -ffp-contract=off -Isrc -fsanitize=fuzzer,address,undefined \
+	  -fno-sanitize-recover=all $(CORE_SRC) fuzz/scene_fuzzer.cpp -o $(FUZZ_DIR)/scene_fuzzer
+	./$(FUZZ_DIR)/scene_fuzzer -max_total_time=$(FUZZ_SECONDS) -max_len=8192 -timeout=10 -rss_limit_mb=4096 \
+	  -artifact_prefix=$(FUZZ_DIR)/ -print_final_stats=1 $(FUZZ_DIR)/corpus
 
 clean:
 	rm -rf build

@@ -31,6 +31,19 @@ struct Checker {
     if (!std::isfinite(v.x) || !std::isfinite(v.y))
       fail(path, "must be finite (got [" + num(v.x) + ", " + num(v.y) + "])");
   }
+  // Velocities, forces, impulses and gravity: finite is not enough, since a
+  // finite 1e308 px/ms overflows to infinity on the first Move. 1e6 px/ms
+  // (a world crossed in one microsecond) is far beyond any sensible scene.
+  void motion(Vector v, const std::string& path) const {
+    finite(v, path);
+    if (std::abs(v.x) > max_motion || std::abs(v.y) > max_motion)
+      fail(path, "must be within ±" + num(max_motion) + " (got [" + num(v.x) + ", " + num(v.y) + "])");
+  }
+  void motion(const VecSpec& v, const std::string& path) const {
+    range(v, path);
+    motion(Vector{v.x.lo, v.y.lo}, path);
+    motion(Vector{v.x.hi, v.y.hi}, path);
+  }
   void size(int v, const std::string& path) const {
     if (v <= 0) fail(path, "must be > 0 (got " + std::to_string(v) + ")");
     if (v > max_block_size) fail(path, "must be <= " + std::to_string(max_block_size) + " (got " + std::to_string(v) + ")");
@@ -64,9 +77,9 @@ void check_block(const Checker& k, const BlockSpec& b, const std::string& p) {
   k.size(b.width, p + ".size");
   k.size(b.height, p + ".size");
   k.mass(b.mass, p + ".mass");
-  k.finite(b.velocity, p + ".velocity");
-  k.finite(b.force, p + ".force");
-  k.finite(b.impulse, p + ".impulse");
+  k.motion(b.velocity, p + ".velocity");
+  k.motion(b.force, p + ".force");
+  k.motion(b.impulse, p + ".impulse");
   if (b.restitution) k.restitution(*b.restitution, p + ".restitution");
 }
 
@@ -84,9 +97,9 @@ void check_random(const Checker& k, const RandomSpec& r, const std::string& p) {
   } else if (r.mass.lo != infinity) {
     k.mass(r.mass.lo, p + ".mass");
   }
-  k.range(r.velocity, p + ".velocity");
-  k.range(r.force, p + ".force");
-  k.range(r.impulse, p + ".impulse");
+  k.motion(r.velocity, p + ".velocity");
+  k.motion(r.force, p + ".force");
+  k.motion(r.impulse, p + ".impulse");
   if (r.restitution) {
     k.range(*r.restitution, p + ".restitution");
     k.restitution(r.restitution->lo, p + ".restitution");
@@ -236,7 +249,8 @@ void validate(const SceneSpec& s, const std::string& source) {
   if (p.iterations < 1 || p.iterations > max_iterations)
     k.fail("world.iterations",
            "must be in [1, " + std::to_string(max_iterations) + "] (got " + std::to_string(p.iterations) + ")");
-  k.finite(p.gravity, "world.gravity");
+  k.motion(p.gravity, "world.gravity");
+  if (p.dt > max_dt) k.fail("world.dt", "must be <= " + num(max_dt) + " ms (got " + num(p.dt) + ")");
   k.restitution(s.restitution, "world.restitution");
   if (body_count(s) > max_bodies)
     k.fail("blocks", "too many bodies (more than " + std::to_string(max_bodies) + ")");

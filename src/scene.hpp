@@ -32,6 +32,8 @@ inline constexpr int max_block_size = 1 << 20;  // px, per side
 inline constexpr std::int64_t max_bodies = 1'000'000;
 inline constexpr int max_substeps = 1000;
 inline constexpr int max_iterations = 1000;
+inline constexpr double max_motion = 1e6;  // |velocity|, |force|, |impulse|, |gravity| per axis
+inline constexpr double max_dt = 1e6;      // ms
 
 // Every error in a scene (file or built-in): the message names the source,
 // the key path or line, and the problem, e.g.
