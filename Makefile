@@ -25,6 +25,8 @@ CORE_SRC := src/utils/vect.cpp src/utils/rect.cpp src/utils/png.cpp \
             src/component_defs.cpp src/system_defs.cpp src/world.cpp \
             src/systems/move.cpp src/systems/forces.cpp src/systems/collision.cpp \
             src/entities/block.cpp
+# Numerics options (docs/numerics.md): swept collision, stable contact solver.
+CORE_SRC += src/systems/pairs.cpp src/systems/ccd.cpp src/systems/contact_solver.cpp
 GAME_SRC := src/game.cpp src/window.cpp src/systems/draw.cpp
 TEST_SRC := $(wildcard tests/*.cpp)
 

@@ -1,0 +1,223 @@
+#include "systems/contact_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "utils/rect.hpp"
+
+namespace physics {
+
+namespace {
+
+constexpr Vector axis_normal[4] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};
+
+// Signed distance between the boxes of c and b along an axis (negative:
+// overlap), from their Minkowski difference s = b ⊖ c.
+double gap_along(const Components& k, EntityId c, EntityId b, int axis) {
+  const auto [s, size] = Rect::mdiff(k.position[c], k.box[c], k.position[b], k.box[b]);
+  switch (axis) {
+    case 0: return s.x;
+    case 1: return -(s.x + size.width);
+    case 2: return s.y;
+    default: return -(s.y + size.height);
+  }
+}
+
+// The separating axis with the largest gap; for overlapping boxes that is the
+// shortest way out, with Collision::penetration's tie order (-x, +x, -y, +y).
+std::pair<int, double> best_axis(const Components& k, EntityId c, EntityId b) {
+  int best = 0;
+  double g = gap_along(k, c, b, 0);
+  for (int a = 1; a < 4; ++a) {
+    const double ga = gap_along(k, c, b, a);
+    if (ga > g) best = a, g = ga;
+  }
+  return {best, g};
+}
+
+std::uint64_t key(EntityId c, EntityId b, int axis) {
+  return (static_cast<std::uint64_t>(c) << 34) | (static_cast<std::uint64_t>(b) << 2) |
+         static_cast<std::uint64_t>(axis);
+}
+
+double inverse_mass(double m) { return std::isfinite(m) ? 1.0 / m : 0.0; }
+
+// Which body of a contact bears the other's weight: the one lying in the
+// direction of gravity. 0: neither (side contact, or no gravity).
+// +1: b is below c (c rests on b). -1: c is below b.
+int support_sign(int axis, Vector g) {
+  const double ng = Vector::dot(axis_normal[axis], g);
+  if (ng < 0.0) return 1;   // n points up: c is above b
+  if (ng > 0.0) return -1;  // n points down: b is above c
+  return 0;
+}
+
+// Depth in the support graph: fixed bodies are at 0, a body resting on a
+// body of depth d is at d + 1; bodies resting on nothing fixed get `none`.
+constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
+
+template <class Contacts>
+std::vector<std::uint32_t> support_depths(const Components& k, const Contacts& contacts, Vector g) {
+  std::vector<std::uint32_t> depth(k.size(), none);
+  for (const auto& ct : contacts) {
+    if (!std::isfinite(k.mass[ct.c])) depth[ct.c] = 0;
+    if (!std::isfinite(k.mass[ct.b])) depth[ct.b] = 0;
+  }
+  // Bellman-Ford style relaxation; stacks are shallow next to the contact count.
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (const auto& ct : contacts) {
+      const int sign = support_sign(ct.axis, g);
+      if (sign == 0) continue;
+      const EntityId lower = sign > 0 ? ct.b : ct.c, upper = sign > 0 ? ct.c : ct.b;
+      if (depth[lower] == none || !std::isfinite(k.mass[upper])) continue;
+      if (depth[lower] + 1 < depth[upper]) depth[upper] = depth[lower] + 1, changed = true;
+    }
+  }
+  return depth;
+}
+
+// Weight-bearing contacts whose lower body rests on the ground, lowest first.
+template <class Contacts>
+std::vector<std::size_t> bottom_up(const Components& k, const Contacts& contacts, Vector g) {
+  const auto depth = support_depths(k, contacts, g);
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const int sign = support_sign(contacts[i].axis, g);
+    if (sign == 0) continue;
+    const EntityId lower = sign > 0 ? contacts[i].b : contacts[i].c;
+    const EntityId upper = sign > 0 ? contacts[i].c : contacts[i].b;
+    if (depth[lower] != none && depth[lower] < depth[upper]) order.push_back(i);
+  }
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const auto lower = [&](std::size_t i) {
+      return support_sign(contacts[i].axis, g) > 0 ? contacts[i].b : contacts[i].c;
+    };
+    return depth[lower(a)] < depth[lower(b)];
+  });
+  return order;
+}
+
+}  // namespace
+
+void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> entities, double h, Vector g,
+                                     const SolverSettings& s) {
+  candidate_pairs(k, entities, h, s.margin, pairs_);
+  contacts_.clear();
+  // Slower than the speed gravity gives in two substeps: a resting contact,
+  // not an impact, so no bounce (otherwise a block on the floor would hop).
+  const double threshold = 2.0 * Vector::norm(g) * h + 1e-12;
+  std::vector<std::pair<std::uint64_t, double>> next_warm;
+  for (const BodyPair& p : pairs_) {
+    const auto [axis, gap] = best_axis(k, p.c, p.b);
+    const Vector n = axis_normal[axis];
+    const double vn = Vector::dot(k.velocity[p.c] - k.velocity[p.b], n);
+    // Speculative: a pair further apart than the margin is a contact only if
+    // it closes the gap within this substep.
+    if (gap > s.margin && gap + vn * h > 0.0) continue;
+    Contact ct{p.c, p.b, axis, inverse_mass(k.mass[p.c]), inverse_mass(k.mass[p.b]), 0.0, 0.0, true};
+    if (vn < -threshold && gap + vn * h <= 0.0) {
+      // A real impact this substep: the course's restitution law as the target.
+      ct.target = -std::min(k.restitution[p.c], k.restitution[p.b]) * vn;
+      ct.resting = false;
+    } else {
+      // Close at most the gap (a speculative contact), never approach once touching.
+      ct.target = gap > 0.0 ? -gap / h : 0.0;
+    }
+    contacts_.push_back(ct);
+  }
+  stats.contacts += static_cast<std::int64_t>(contacts_.size());
+
+  const auto apply = [&](Contact& ct, double impulse) {
+    const Vector n = axis_normal[ct.axis];
+    k.velocity[ct.c] = k.velocity[ct.c] + (ct.wc * impulse) * n;
+    k.velocity[ct.b] = k.velocity[ct.b] - (ct.wb * impulse) * n;
+  };
+
+  // Warm start: a resting contact that was there last substep starts with the
+  // impulse it ended with (a stack's weight is then carried from the start).
+  for (Contact& ct : contacts_) {
+    if (!ct.resting) continue;
+    const auto kk = key(ct.c, ct.b, ct.axis);
+    const auto it = std::lower_bound(warm_.begin(), warm_.end(), std::make_pair(kk, -infinity));
+    if (it != warm_.end() && it->first == kk) {
+      ct.lambda = it->second;
+      apply(ct, ct.lambda);
+    }
+  }
+
+  for (int it = 0; it < s.iterations; ++it) {
+    for (Contact& ct : contacts_) {
+      const double vn = Vector::dot(k.velocity[ct.c] - k.velocity[ct.b], axis_normal[ct.axis]);
+      const double w = ct.wc + ct.wb;
+      const double lambda = std::max(ct.lambda - (vn - ct.target) / w, 0.0);
+      apply(ct, lambda - ct.lambda);
+      ct.lambda = lambda;
+    }
+  }
+
+  if (s.shock_propagation && !Vector::is_zero(g)) {
+    for (const std::size_t i : bottom_up(k, contacts_, g)) {
+      Contact& ct = contacts_[i];
+      const Vector n = axis_normal[ct.axis];
+      const double vn = Vector::dot(k.velocity[ct.c] - k.velocity[ct.b], n);
+      if (vn >= ct.target) continue;
+      // The lower body is immovable for this pass: the upper takes it all.
+      if (support_sign(ct.axis, g) > 0) {
+        if (ct.wc > 0.0) k.velocity[ct.c] = k.velocity[ct.c] + (ct.target - vn) * n;
+      } else {
+        if (ct.wb > 0.0) k.velocity[ct.b] = k.velocity[ct.b] - (ct.target - vn) * n;
+      }
+    }
+  }
+
+  for (const Contact& ct : contacts_)
+    if (ct.resting && ct.lambda > 0.0) next_warm.emplace_back(key(ct.c, ct.b, ct.axis), ct.lambda);
+  std::sort(next_warm.begin(), next_warm.end());
+  warm_ = std::move(next_warm);
+}
+
+void ContactSolver::solve_positions(Components& k, std::span<const EntityId> entities, Vector g,
+                                    const SolverSettings& s) {
+  // Touching pairs too (within the margin): they take no correction but link
+  // the support graph of the bottom-up pass down to the ground.
+  candidate_pairs(k, entities, 0.0, s.margin, pairs_);
+  contacts_.clear();
+  bool any_overlap = false;
+  for (const BodyPair& p : pairs_) {
+    const auto [axis, gap] = best_axis(k, p.c, p.b);
+    if (gap > s.margin) continue;
+    any_overlap = any_overlap || gap < -s.slop;
+    contacts_.push_back(Contact{p.c, p.b, axis, inverse_mass(k.mass[p.c]), inverse_mass(k.mass[p.b]), 0, 0, true});
+  }
+  if (!any_overlap) return;
+
+  for (int it = 0; it < s.iterations; ++it) {
+    for (const Contact& ct : contacts_) {
+      const double depth = -gap_along(k, ct.c, ct.b, ct.axis) - s.slop;
+      if (!(depth > 0.0)) continue;
+      const Vector n = axis_normal[ct.axis];
+      const double w = ct.wc + ct.wb;
+      const double push = s.projection * depth;
+      k.position[ct.c] = k.position[ct.c] + (push * (ct.wc / w)) * n;
+      k.position[ct.b] = k.position[ct.b] - (push * (ct.wb / w)) * n;
+    }
+  }
+
+  if (s.shock_propagation && !Vector::is_zero(g)) {
+    for (const std::size_t i : bottom_up(k, contacts_, g)) {
+      const Contact& ct = contacts_[i];
+      const double depth = -gap_along(k, ct.c, ct.b, ct.axis) - s.slop;
+      if (!(depth > 0.0)) continue;
+      const Vector n = axis_normal[ct.axis];
+      if (support_sign(ct.axis, g) > 0) {
+        if (ct.wc > 0.0) k.position[ct.c] = k.position[ct.c] + depth * n;
+      } else {
+        if (ct.wb > 0.0) k.position[ct.b] = k.position[ct.b] - depth * n;
+      }
+    }
+  }
+}
+
+}  // namespace physics
