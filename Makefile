@@ -27,12 +27,16 @@ CORE_SRC := src/utils/vect.cpp src/utils/rect.cpp src/utils/png.cpp \
             src/entities/block.cpp
 # Numerics options (docs/numerics.md): swept collision, stable contact solver.
 CORE_SRC += src/systems/pairs.cpp src/systems/ccd.cpp src/systems/contact_solver.cpp
+# The exact event-driven reference (not part of the engine): tests and report tools.
+REF_SRC  := src/reference/event_sim.cpp src/reference/closed_forms.cpp
 GAME_SRC := src/game.cpp src/window.cpp src/systems/draw.cpp
 TEST_SRC := $(wildcard tests/*.cpp)
 
 CORE_OBJ := $(CORE_SRC:%.cpp=$(BUILD)/obj/%.o)
 GAME_OBJ := $(GAME_SRC:%.cpp=$(BUILD)/obj/%.o)
 TEST_OBJ := $(TEST_SRC:%.cpp=$(BUILD)/obj/%.o) $(BUILD)/obj/src/game_nomain.o
+REF_OBJ  := $(REF_SRC:%.cpp=$(BUILD)/obj/%.o)
+TEST_OBJ += $(REF_OBJ)
 
 SDL_CFLAGS = $(shell pkg-config --cflags sdl2 SDL2_ttf)
 SDL_LIBS   = $(shell pkg-config --libs sdl2 SDL2_ttf)
