@@ -36,12 +36,15 @@ CORE_OBJ := $(CORE_SRC:%.cpp=$(BUILD)/obj/%.o)
 GAME_OBJ := $(GAME_SRC:%.cpp=$(BUILD)/obj/%.o)
 TEST_OBJ := $(TEST_SRC:%.cpp=$(BUILD)/obj/%.o) $(BUILD)/obj/src/game_nomain.o
 REF_OBJ  := $(REF_SRC:%.cpp=$(BUILD)/obj/%.o)
-TEST_OBJ += $(REF_OBJ)
+# Scenes, modes and measures of `make report` / `make stability`, shared with their tests.
+NUM_SRC  := tools/numerics/scenes.cpp tools/numerics/stability.cpp
+NUM_OBJ  := $(NUM_SRC:%.cpp=$(BUILD)/obj/%.o)
+TEST_OBJ += $(REF_OBJ) $(NUM_OBJ)
 
 SDL_CFLAGS = $(shell pkg-config --cflags sdl2 SDL2_ttf)
 SDL_LIBS   = $(shell pkg-config --libs sdl2 SDL2_ttf)
 
-.PHONY: all run test deps clean check-no-sdl
+.PHONY: all run test deps clean check-no-sdl report stability
 all: $(BUILD)/game $(BUILD)/tests
 
 deps:
@@ -76,6 +79,17 @@ $(BUILD)/tests: $(TEST_OBJ) $(BUILD)/libphysics.a
 	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS) -lboost_unit_test_framework
 
 $(BUILD)/obj/src/window.o $(BUILD)/obj/src/systems/draw.o: CXXFLAGS += $(SDL_CFLAGS)
+$(BUILD)/obj/tools/%.o $(BUILD)/obj/tests/%.o: CXXFLAGS += -Itools
+
+# ---- numerics (docs/numerics.md) ----
+$(BUILD)/stability: $(BUILD)/obj/tools/stability_main.o $(NUM_OBJ) $(BUILD)/obj/src/game_nomain.o $(BUILD)/libphysics.a
+	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS)
+
+# The stability matrix: report/STABILITY.md (a few minutes: it runs the long cases).
+stability: deps
+	@$(MAKE) --no-print-directory $(BUILD)/stability
+	@mkdir -p report
+	./$(BUILD)/stability report/STABILITY.md
 
 $(BUILD)/obj/%.o: %.cpp
 	@mkdir -p $(@D)

@@ -100,7 +100,12 @@ void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h) {
     queue.pop();
     if (ev.vc != version[ev.ic] || ev.vb != version[ev.ib]) continue;
     if (resolved == budget) {
+      // Out of budget: stop every body where it is at this event's time for
+      // the rest of the substep (Move will bring it exactly there). Nothing
+      // passes through anything and no impulse is invented; the price is
+      // that the scene loses h - t of motion in this substep.
       ++stats.capped_substeps;
+      for (const EntityId e : entities) k.position[e] = k.position[e] + (ev.t - h) * k.velocity[e];
       break;
     }
     const EntityId c = entities[ev.ic], b = entities[ev.ib];

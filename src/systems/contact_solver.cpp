@@ -116,10 +116,11 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
     // Speculative: a pair further apart than the margin is a contact only if
     // it closes the gap within this substep.
     if (gap > s.margin && gap + vn * h > 0.0) continue;
-    Contact ct{p.c, p.b, axis, inverse_mass(k.mass[p.c]), inverse_mass(k.mass[p.b]), 0.0, 0.0, true};
+    Contact ct{p.c, p.b, axis, inverse_mass(k.mass[p.c]), inverse_mass(k.mass[p.b]), 0.0, 0.0, 0.0, true};
     if (vn < -threshold && gap + vn * h <= 0.0) {
-      // A real impact this substep: the course's restitution law as the target.
-      ct.target = -std::min(k.restitution[p.c], k.restitution[p.b]) * vn;
+      // A real impact this substep: stopped here (target 0), then bounced by
+      // e times the stopping impulse once the iterations are done.
+      ct.restitution = std::min(k.restitution[p.c], k.restitution[p.b]);
       ct.resting = false;
     } else {
       // Close at most the gap (a speculative contact), never approach once touching.
@@ -128,6 +129,11 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
     contacts_.push_back(ct);
   }
   stats.contacts += static_cast<std::int64_t>(contacts_.size());
+
+  // Velocities before any impulse, for the energy guard at the end.
+  v_start_.resize(k.size());
+  v_inelastic_.resize(k.size());
+  for (const Contact& ct : contacts_) v_start_[ct.c] = k.velocity[ct.c], v_start_[ct.b] = k.velocity[ct.b];
 
   const auto apply = [&](Contact& ct, double impulse) {
     const Vector n = axis_normal[ct.axis];
@@ -172,10 +178,106 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
     }
   }
 
+  // Restitution, Poisson's way: each impact gets e times the impulse that
+  // stopped it. With one e for all contacts this is v+ = v_c + e (v_c - v-),
+  // v_c the inelastic (projected) velocity, so |v+| <= |v-| in the mass
+  // norm: the energy never grows, even for simultaneous contacts (a target
+  // velocity -e·v_n per contact, Newton's way, can gain energy there).
+  for (const Contact& ct : contacts_) v_inelastic_[ct.c] = k.velocity[ct.c], v_inelastic_[ct.b] = k.velocity[ct.b];
+  for (Contact& ct : contacts_)
+    if (!ct.resting && ct.restitution > 0.0) apply(ct, ct.restitution * ct.lambda);
+  guard_energy(k);
+
   for (const Contact& ct : contacts_)
     if (ct.resting && ct.lambda > 0.0) next_warm.emplace_back(key(ct.c, ct.b, ct.axis), ct.lambda);
   std::sort(next_warm.begin(), next_warm.end());
   warm_ = std::move(next_warm);
+}
+
+// Poisson's restitution keeps the energy from growing only when the
+// iterations have converged; a light body squeezed between two heavy ones
+// (mass ratio 1e3 and more) does not converge in a few iterations, and
+// warm starting or shock propagation can add a little too. So per island of
+// touching finite bodies: if the kinetic energy ended above where it started,
+// scale the restitution impulses down until it does not (and, if the
+// inelastic velocities alone are above, move back towards the starting ones).
+// Both are blends of impulse sets, so momentum is kept.
+void ContactSolver::guard_energy(Components& k) {
+  const auto n = k.size();
+  parent_.resize(n);
+  for (const Contact& ct : contacts_) parent_[ct.c] = ct.c, parent_[ct.b] = ct.b;
+  const auto find = [&](EntityId x) {
+    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
+    return x;
+  };
+  for (const Contact& ct : contacts_)
+    if (ct.wc > 0.0 && ct.wb > 0.0) parent_[find(ct.c)] = find(ct.b);
+
+  struct Sums {
+    double start = 0, inel = 0, end = 0, b_rest = 0, a_rest = 0, b_back = 0, a_back = 0;
+  };
+  std::vector<std::pair<EntityId, Sums>> islands;  // few per substep: linear search is fine for small, map otherwise
+  std::vector<EntityId> bodies;
+  for (const Contact& ct : contacts_) {
+    if (ct.wc > 0.0) bodies.push_back(ct.c);
+    if (ct.wb > 0.0) bodies.push_back(ct.b);
+  }
+  std::sort(bodies.begin(), bodies.end());
+  bodies.erase(std::unique(bodies.begin(), bodies.end()), bodies.end());
+  island_.resize(n);
+  std::vector<Sums> sums;
+  std::vector<EntityId> roots;
+  for (const EntityId e : bodies) {
+    const EntityId r = find(e);
+    const auto it = std::lower_bound(roots.begin(), roots.end(), r);
+    if (it == roots.end() || *it != r) {
+      sums.insert(sums.begin() + (it - roots.begin()), Sums{});
+      roots.insert(it, r);
+    }
+  }
+  for (const EntityId e : bodies) {
+    const std::size_t i = static_cast<std::size_t>(std::lower_bound(roots.begin(), roots.end(), find(e)) - roots.begin());
+    island_[e] = static_cast<std::uint32_t>(i);
+    const double m = k.mass[e];
+    const Vector v0 = v_start_[e], vi = v_inelastic_[e], v1 = k.velocity[e];
+    const Vector rest = v1 - vi, back = vi - v0;
+    Sums& su = sums[i];
+    su.start += 0.5 * m * Vector::dot(v0, v0);
+    su.inel += 0.5 * m * Vector::dot(vi, vi);
+    su.end += 0.5 * m * Vector::dot(v1, v1);
+    su.b_rest += m * Vector::dot(vi, rest);
+    su.a_rest += 0.5 * m * Vector::dot(rest, rest);
+    su.b_back += m * Vector::dot(v0, back);
+    su.a_back += 0.5 * m * Vector::dot(back, back);
+  }
+  // Largest s in [0, 1] with a s² + b s + c <= 0, given c <= 0.
+  const auto largest = [](double a, double b, double c) {
+    if (a + b + c <= 0.0) return 1.0;
+    if (a <= 0.0) return b > 0.0 ? std::clamp(-c / b, 0.0, 1.0) : 1.0;
+    const double s = (-b + std::sqrt(std::max(b * b - 4.0 * a * c, 0.0))) / (2.0 * a);
+    return std::clamp(s, 0.0, 1.0);
+  };
+  std::vector<double> s_rest(sums.size(), 1.0), s_back(sums.size(), 1.0);
+  bool any = false;
+  for (std::size_t i = 0; i < sums.size(); ++i) {
+    const Sums& su = sums[i];
+    if (su.end <= su.start * (1.0 + 1e-14)) continue;
+    any = true;
+    if (su.inel <= su.start) {
+      s_rest[i] = largest(su.a_rest, su.b_rest, su.inel - su.start);
+    } else {
+      s_rest[i] = 0.0;
+      s_back[i] = largest(su.a_back, su.b_back, 0.0);
+    }
+  }
+  if (!any) return;
+  for (const EntityId e : bodies) {
+    const std::uint32_t i = island_[e];
+    if (s_rest[i] == 1.0 && s_back[i] == 1.0) continue;
+    const Vector vi = v_start_[e] + s_back[i] * (v_inelastic_[e] - v_start_[e]);
+    k.velocity[e] = vi + s_rest[i] * (k.velocity[e] - v_inelastic_[e]);
+    ++stats.energy_clamps;
+  }
 }
 
 void ContactSolver::solve_positions(Components& k, std::span<const EntityId> entities, Vector g,
@@ -189,7 +291,7 @@ void ContactSolver::solve_positions(Components& k, std::span<const EntityId> ent
     const auto [axis, gap] = best_axis(k, p.c, p.b);
     if (gap > s.margin) continue;
     any_overlap = any_overlap || gap < -s.slop;
-    contacts_.push_back(Contact{p.c, p.b, axis, inverse_mass(k.mass[p.c]), inverse_mass(k.mass[p.b]), 0, 0, true});
+    contacts_.push_back(Contact{p.c, p.b, axis, inverse_mass(k.mass[p.c]), inverse_mass(k.mass[p.b]), 0, 0, 0, true});
   }
   if (!any_overlap) return;
 

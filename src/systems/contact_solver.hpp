@@ -12,8 +12,10 @@
 //     resting body is caught before it sinks). Sequential impulses, each
 //     clamped so that the impulse accumulated on a contact never pulls
 //     (Catto's accumulated clamping), warm started from the previous
-//     substep's impulses of resting contacts, with the course's restitution as
-//     the target normal velocity of a real impact. Gauss-Seidel converges
+//     substep's impulses of resting contacts. A real impact is first stopped
+//     (target normal velocity 0), then given e times the impulse that
+//     stopped it (Poisson's restitution, e = min of the pair as in the
+//     course): that never adds energy, even with simultaneous contacts. Gauss-Seidel converges
 //     slowly across mass ratios (a light block under a heavy one carries only
 //     its own mass's worth of impulse per iteration), so the iterations end
 //     with one pass of shock propagation (Guendelman, Bridson, Fedkiw 2003):
@@ -45,7 +47,8 @@ struct SolverSettings {
 };
 
 struct SolverStats {
-  std::int64_t contacts = 0;  // contacts solved, summed over substeps
+  std::int64_t contacts = 0;       // contacts solved, summed over substeps
+  std::int64_t energy_clamps = 0;  // body velocities the energy guard scaled back
 };
 
 class ContactSolver {
@@ -63,11 +66,17 @@ class ContactSolver {
     double wc, wb;     // inverse masses
     double target;     // lowest allowed (v_c - v_b)·n
     double lambda;     // accumulated impulse
+    double restitution;  // of an impact: bounce impulse = restitution × lambda
     bool resting;      // no restitution target: its impulse may warm start the next substep
   };
 
  private:
+  void guard_energy(Components& k);
+
   std::vector<BodyPair> pairs_;
+  std::vector<Vector> v_start_, v_inelastic_;  // indexed by entity id
+  std::vector<EntityId> parent_;               // union-find of islands
+  std::vector<std::uint32_t> island_;
   std::vector<Contact> contacts_;
   // Impulses of the previous substep's resting contacts, sorted by key.
   std::vector<std::pair<std::uint64_t, double>> warm_;
