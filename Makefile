@@ -37,7 +37,7 @@ GAME_OBJ := $(GAME_SRC:%.cpp=$(BUILD)/obj/%.o)
 TEST_OBJ := $(TEST_SRC:%.cpp=$(BUILD)/obj/%.o) $(BUILD)/obj/src/game_nomain.o
 REF_OBJ  := $(REF_SRC:%.cpp=$(BUILD)/obj/%.o)
 # Scenes, modes and measures of `make report` / `make stability`, shared with their tests.
-NUM_SRC  := tools/numerics/scenes.cpp tools/numerics/stability.cpp
+NUM_SRC  := tools/numerics/scenes.cpp tools/numerics/stability.cpp tools/numerics/report.cpp
 NUM_OBJ  := $(NUM_SRC:%.cpp=$(BUILD)/obj/%.o)
 TEST_OBJ += $(REF_OBJ) $(NUM_OBJ)
 
@@ -82,8 +82,19 @@ $(BUILD)/obj/src/window.o $(BUILD)/obj/src/systems/draw.o: CXXFLAGS += $(SDL_CFL
 $(BUILD)/obj/tools/%.o $(BUILD)/obj/tests/%.o: CXXFLAGS += -Itools
 
 # ---- numerics (docs/numerics.md) ----
-$(BUILD)/stability: $(BUILD)/obj/tools/stability_main.o $(NUM_OBJ) $(BUILD)/obj/src/game_nomain.o $(BUILD)/libphysics.a
+$(BUILD)/stability: $(BUILD)/obj/tools/stability_main.o $(NUM_OBJ) $(REF_OBJ) $(BUILD)/obj/src/game_nomain.o $(BUILD)/libphysics.a
 	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS)
+
+$(BUILD)/report: $(BUILD)/obj/tools/report_main.o $(NUM_OBJ) $(REF_OBJ) $(BUILD)/obj/src/game_nomain.o $(BUILD)/libphysics.a
+	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS)
+
+# Error against run time: report/accuracy.csv, REPORT.md, work_precision.png (needs gnuplot).
+report: deps
+	@dpkg-query -W -f='$${Status}' gnuplot-nox 2>/dev/null | grep -q "ok installed" || { \
+	  echo "installing Debian packages: gnuplot-nox"; \
+	  $(SUDO) apt-get update -q && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -q gnuplot-nox; }
+	@$(MAKE) --no-print-directory $(BUILD)/report
+	./$(BUILD)/report report $(BUILD)/report
 
 # The stability matrix: report/STABILITY.md (a few minutes: it runs the long cases).
 stability: deps

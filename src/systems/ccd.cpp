@@ -93,7 +93,7 @@ void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h) {
   };
   for (const BodyPair& p : pairs_) predict(index[p.c], index[p.b], 0.0);
 
-  const std::int64_t budget = 64 * static_cast<std::int64_t>(count) + 256;
+  const std::int64_t budget = 16 * static_cast<std::int64_t>(count) + 128;
   std::int64_t resolved = 0;
   while (!queue.empty()) {
     const Event ev = queue.top();

@@ -40,7 +40,7 @@ class Ccd {
  public:
   // Resolves the impacts of the next h ms between the given bodies (the
   // Collision system's, in registration order), as described above. A
-  // substep resolves at most 64·n + 256 impacts; past that (an inelastic
+  // substep resolves at most 16·n + 128 impacts; past that (an inelastic
   // collapse in a resting stack, a light body squeezed between two heavy
   // ones, which takes ~π·sqrt(M/m) impacts) every body stops where it is at
   // that moment for the rest of the substep: no tunnelling, no energy or

@@ -37,6 +37,12 @@ double momentum_scale(const World& w) {
 }
 double drift(Vector a, Vector b, double scale) { return (std::abs(a.x - b.x) + std::abs(a.y - b.y)) / scale; }
 std::string out_text(int n) { return n ? fmt(", %.0f out", n) : std::string(); }
+// CCD that ran out of its impact budget stopped the scene for the rest of a
+// substep: a pass earned that way is worth knowing.
+std::string capped_text(const World& w) {
+  const auto c = w.ccd.stats.capped_substeps;
+  return c ? fmt(", %.0f capped substeps", static_cast<double>(c)) : std::string();
+}
 
 // Runs `frames` frames and tracks what every criterion needs.
 struct Track {
@@ -81,7 +87,7 @@ Outcome light_under_heavy(const Mode& m, double ratio) {
   block(w, 380, 500, 40, 40, ratio);     // heavy, on the light one
   const Track t = run(w, 600, true);
   if (!t.finite) return nan_outcome();
-  return {t.max_overlap < max_sink && t.outside == 0, fmt("sink %.3g px", t.max_overlap) + out_text(t.outside)};
+  return {t.max_overlap < max_sink && t.outside == 0, fmt("sink %.3g px", t.max_overlap) + out_text(t.outside) + capped_text(w)};
 }
 
 Outcome heavy_hits_light(const Mode& m, double ratio) {
@@ -115,7 +121,7 @@ Outcome light_between_heavy(const Mode& m, double ratio) {
   if (!t.finite) return nan_outcome();
   return {order && t.momentum_drift < momentum_tolerance && t.energy_growth < energy_tolerance,
           std::string(order ? "order kept" : "passed through") + fmt(", dp %.2g, dE %+.2g", t.momentum_drift,
-                                                                      t.energy_growth)};
+                                                                      t.energy_growth) + capped_text(w)};
 }
 
 // ---- stacks ----------------------------------------------------------------
@@ -132,7 +138,8 @@ Outcome stack30(const Mode& m) {
   double moved = 0;
   for (std::size_t i = 0; i < ids.size(); ++i)
     moved = std::max(moved, Vector::norm(w.components.position[ids[i]] - start[i]));
-  return {t.max_overlap < max_sink && moved < max_sink, fmt("sink %.3g px, moved %.3g px", t.max_overlap, moved)};
+  return {t.max_overlap < max_sink && moved < max_sink,
+          fmt("sink %.3g px, moved %.3g px", t.max_overlap, moved) + capped_text(w)};
 }
 
 Outcome high_mass_ratio(const Mode& m) {
@@ -148,7 +155,7 @@ Outcome high_mass_ratio(const Mode& m) {
   const auto& p = w.components.position;
   const bool on_top = p[big].y + 20 <= std::min(p[s1].y, p[s2].y) + max_sink;
   return {t.max_overlap < max_sink && on_top && t.outside == 0,
-          fmt("sink %.3g px", t.max_overlap) + (on_top ? "" : ", fell through") + out_text(t.outside)};
+          fmt("sink %.3g px", t.max_overlap) + (on_top ? "" : ", fell through") + out_text(t.outside) + capped_text(w)};
 }
 
 // ---- overlaps --------------------------------------------------------------
@@ -195,7 +202,7 @@ Outcome spawn_overlapping(const Mode& m) {
   if (!t.finite) return nan_outcome();
   const double after = max_overlap(w);
   return {after < max_sink && t.outside == 0,
-          fmt("overlap %.2g -> %.2g px", before, after) + out_text(t.outside)};
+          fmt("overlap %.2g -> %.2g px", before, after) + out_text(t.outside) + capped_text(w)};
 }
 
 // ---- speed, size, position -------------------------------------------------
@@ -206,7 +213,7 @@ Outcome bullet(const Mode& m, double speed) {
   block(w, 400, 295, 10, 10, 1.0, {speed, 0});
   const Track t = run(w, 120, true);
   if (!t.finite) return nan_outcome();
-  return {t.outside == 0, t.outside ? std::string("tunnelled") : std::string("stayed in")};
+  return {t.outside == 0, (t.outside ? std::string("tunnelled") : std::string("stayed in")) + capped_text(w)};
 }
 
 // The question-9 scene, its blocks' restitution set to e.
@@ -225,7 +232,7 @@ Outcome far_coordinates(const Mode& m) {
   const Track t = run(w, 3000, true, o);
   if (!t.finite) return nan_outcome();
   return {t.outside == 0 && t.energy_growth < energy_tolerance,
-          fmt("dE %+.2g", t.energy_growth) + out_text(t.outside)};
+          fmt("dE %+.2g", t.energy_growth) + out_text(t.outside) + capped_text(w)};
 }
 
 Outcome one_pixel(const Mode& m) {
@@ -238,7 +245,7 @@ Outcome one_pixel(const Mode& m) {
   const Track t = run(w, 1200, true);
   if (!t.finite) return nan_outcome();
   return {t.outside == 0 && t.energy_growth < energy_tolerance,
-          fmt("dE %+.2g", t.energy_growth) + out_text(t.outside)};
+          fmt("dE %+.2g", t.energy_growth) + out_text(t.outside) + capped_text(w)};
 }
 
 Outcome corner_hits(const Mode& m) {
@@ -253,7 +260,7 @@ Outcome corner_hits(const Mode& m) {
   const Track t = run(w, 600, true);
   if (!t.finite) return nan_outcome();
   return {t.outside == 0 && t.energy_growth < energy_tolerance,
-          fmt("dE %+.2g", t.energy_growth) + out_text(t.outside)};
+          fmt("dE %+.2g", t.energy_growth) + out_text(t.outside) + capped_text(w)};
 }
 
 Outcome long_run(const Mode& m, double e) {
@@ -262,7 +269,7 @@ Outcome long_run(const Mode& m, double e) {
   const Track t = run(w, 100000, true, {}, 10);
   if (!t.finite) return nan_outcome();
   return {t.outside == 0 && t.energy_growth < energy_tolerance,
-          fmt("dE %+.2g", t.energy_growth) + out_text(t.outside)};
+          fmt("dE %+.2g", t.energy_growth) + out_text(t.outside) + capped_text(w)};
 }
 
 }  // namespace
