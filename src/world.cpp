@@ -66,6 +66,7 @@ void World::step_numerics(double h) {
   const bool stable = params.solver == Solver::stable;
   SolverSettings settings;
   settings.iterations = params.iterations;
+  settings.impacts = !params.ccd;
   for (int k = 0; k < params.substeps; ++k) {
     if (systems.forces)
       timed(ns[static_cast<int>(SystemId::forces)], [&] { systems.forces->update(components, h, params.gravity); });

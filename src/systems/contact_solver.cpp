@@ -116,8 +116,13 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
     // Speculative: a pair further apart than the margin is a contact only if
     // it closes the gap within this substep.
     if (gap > s.margin && gap + vn * h > 0.0) continue;
+    const bool impact = vn < -threshold && gap + vn * h <= 0.0;
+    // With CCD on, impacts are its business: it finds each one's exact time
+    // and resolves chains of them one after the other (a cradle). The solver
+    // keeps the resting contacts, which CCD alone cannot hold.
+    if (impact && !s.impacts) continue;
     Contact ct{p.c, p.b, axis, inverse_mass(k.mass[p.c]), inverse_mass(k.mass[p.b]), 0.0, 0.0, 0.0, true};
-    if (vn < -threshold && gap + vn * h <= 0.0) {
+    if (impact) {
       // A real impact this substep: stopped here (target 0), then bounced by
       // e times the stopping impulse once the iterations are done.
       ct.restitution = std::min(k.restitution[p.c], k.restitution[p.b]);

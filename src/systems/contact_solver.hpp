@@ -44,6 +44,7 @@ struct SolverSettings {
   double slop = 0.01;         // px: overlap left alone (keeps resting contacts alive)
   double projection = 0.8;    // share of the overlap beyond slop removed per position iteration
   bool shock_propagation = true;
+  bool impacts = true;        // false with CCD on: impacts are left to it
 };
 
 struct SolverStats {
