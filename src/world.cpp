@@ -74,7 +74,7 @@ void World::step_numerics(double h) {
       timed(collision_ns, [&] {
         const auto bodies = systems.collision->entities();
         if (stable) contact_solver.solve_velocities(components, bodies, h, params.gravity, settings);
-        if (params.ccd) ccd.resolve(components, bodies, h);
+        if (params.ccd) ccd.resolve(components, bodies, h, params.gravity);
       });
     }
     if (systems.move)

@@ -73,7 +73,7 @@ std::optional<Impact> Ccd::time_of_impact(const Components& k, EntityId c, Entit
   return Impact{t0, n};
 }
 
-void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h) {
+void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h, Vector gravity) {
   const std::size_t count = entities.size();
   if (count < 2) return;
   candidate_pairs(k, entities, h, 0.0, pairs_);
@@ -120,7 +120,18 @@ void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h) {
     // reverses the normal velocity exactly.
     const double e = std::min(k.restitution[c], k.restitution[b]);
     const double wc = 1.0 / k.mass[c], wb = 1.0 / k.mass[b];
-    const double dv = -(1.0 + e) * vn;
+    // Gravity: Forces gave the whole substep's kick g·h at its start, but the
+    // impact happens at t; the kick after t must not be reflected. The
+    // normal velocity after the substep is -e·v_n + (1+e)(a·n)(h - t), a the
+    // pair's relative acceleration (g against a fixed body, 0 between two
+    // free ones). Without this, a body resting on the floor with e = 1 hops
+    // g·h every substep and each bounce gains or loses m(g·n)(v·n)(h - 2t) of
+    // energy, a random walk that drifts up; with it, it rests. Never enough
+    // to turn the pair back towards each other.
+    const Vector ac = std::isfinite(k.mass[c]) ? gravity : Vector{};
+    const Vector ab = std::isfinite(k.mass[b]) ? gravity : Vector{};
+    const double kick = std::max((1.0 + e) * Vector::dot(ac - ab, n) * (h - ev.t), e * vn);
+    const double dv = -(1.0 + e) * vn + kick;
     const Vector vc2 = vc + (dv * (wc / (wc + wb))) * n;
     const Vector vb2 = vb - (dv * (wb / (wc + wb))) * n;
     // Keep position + t·velocity continuous at t (see the header).

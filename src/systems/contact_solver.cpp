@@ -121,12 +121,13 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
     // and resolves chains of them one after the other (a cradle). The solver
     // keeps the resting contacts, which CCD alone cannot hold.
     if (impact && !s.impacts) continue;
-    Contact ct{p.c, p.b, axis, inverse_mass(k.mass[p.c]), inverse_mass(k.mass[p.b]), 0.0, 0.0, 0.0, true};
+    Contact ct{p.c, p.b, axis, inverse_mass(k.mass[p.c]), inverse_mass(k.mass[p.b]), 0.0, 0.0, 0.0, 0.0, 0.0, true};
     if (impact) {
       // A real impact this substep: stopped here (target 0), then bounced by
       // e times the stopping impulse once the iterations are done.
       ct.restitution = std::min(k.restitution[p.c], k.restitution[p.b]);
       ct.resting = false;
+      ct.toi = gap > 0.0 ? gap / -vn : 0.0;
     } else {
       // Close at most the gap (a speculative contact), never approach once touching.
       ct.target = gap > 0.0 ? -gap / h : 0.0;
@@ -192,6 +193,38 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
   for (Contact& ct : contacts_)
     if (!ct.resting && ct.restitution > 0.0) apply(ct, ct.restitution * ct.lambda);
   guard_energy(k);
+
+  // An impact found before the bodies touch (gap > 0) happens at toi within
+  // the substep, not at its start: shift each body by toi·(v_before - v_after)
+  // of that impulse, so that Move's x += h·v ends it where the motion that
+  // changes velocity at toi does (what Ccd does at each impact). Without it a
+  // bounce happens up to |v|·h early, and under gravity each such bounce
+  // gains energy (g·v·h).
+  //
+  // And, as in Ccd, the part of the substep's gravity kick that comes after
+  // the impact is not reflected: against a fixed body the normal velocity
+  // gets (1+e)(a·n)(h - toi), never enough to turn the pair back. A body
+  // landing on the floor then rests instead of hopping g·h, and bounces do
+  // not drift the energy up.
+  for (Contact& ct : contacts_) {
+    if (ct.resting) continue;
+    const Vector n = axis_normal[ct.axis];
+    const Vector a = (ct.wc > 0.0 ? g : Vector{}) - (ct.wb > 0.0 ? g : Vector{});
+    const double vn = Vector::dot(k.velocity[ct.c] - k.velocity[ct.b], n);
+    const double extra = std::max((1.0 + ct.restitution) * Vector::dot(a, n) * (h - ct.toi), -vn);
+    if (extra >= 0.0) continue;
+    const double w = ct.wc + ct.wb;
+    k.velocity[ct.c] = k.velocity[ct.c] + (extra * (ct.wc / w)) * n;
+    k.velocity[ct.b] = k.velocity[ct.b] - (extra * (ct.wb / w)) * n;
+    ct.kick = extra / w;
+  }
+  for (const Contact& ct : contacts_) {
+    if (ct.resting || ct.toi <= 0.0) continue;
+    const double impulse = (1.0 + ct.restitution) * ct.lambda + ct.kick;
+    const Vector n = axis_normal[ct.axis];
+    k.position[ct.c] = k.position[ct.c] - (ct.toi * ct.wc * impulse) * n;
+    k.position[ct.b] = k.position[ct.b] + (ct.toi * ct.wb * impulse) * n;
+  }
 
   for (const Contact& ct : contacts_)
     if (ct.resting && ct.lambda > 0.0) next_warm.emplace_back(key(ct.c, ct.b, ct.axis), ct.lambda);
@@ -296,7 +329,7 @@ void ContactSolver::solve_positions(Components& k, std::span<const EntityId> ent
     const auto [axis, gap] = best_axis(k, p.c, p.b);
     if (gap > s.margin) continue;
     any_overlap = any_overlap || gap < -s.slop;
-    contacts_.push_back(Contact{p.c, p.b, axis, inverse_mass(k.mass[p.c]), inverse_mass(k.mass[p.b]), 0, 0, 0, true});
+    contacts_.push_back(Contact{p.c, p.b, axis, inverse_mass(k.mass[p.c]), inverse_mass(k.mass[p.b]), 0, 0, 0, 0, 0, true});
   }
   if (!any_overlap) return;
 

