@@ -159,30 +159,37 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
     }
   }
 
-  for (int it = 0; it < s.iterations; ++it) {
-    for (Contact& ct : contacts_) {
-      const double vn = Vector::dot(k.velocity[ct.c] - k.velocity[ct.b], axis_normal[ct.axis]);
-      const double w = ct.wc + ct.wb;
-      const double lambda = std::max(ct.lambda - (vn - ct.target) / w, 0.0);
-      apply(ct, lambda - ct.lambda);
-      ct.lambda = lambda;
-    }
-  }
-
-  if (s.shock_propagation && !Vector::is_zero(g)) {
-    for (const std::size_t i : bottom_up(k, contacts_, g)) {
-      Contact& ct = contacts_[i];
-      const Vector n = axis_normal[ct.axis];
-      const double vn = Vector::dot(k.velocity[ct.c] - k.velocity[ct.b], n);
-      if (vn >= ct.target) continue;
-      // The lower body is immovable for this pass: the upper takes it all.
-      if (support_sign(ct.axis, g) > 0) {
-        if (ct.wc > 0.0) k.velocity[ct.c] = k.velocity[ct.c] + (ct.target - vn) * n;
-      } else {
-        if (ct.wb > 0.0) k.velocity[ct.b] = k.velocity[ct.b] - (ct.target - vn) * n;
+  // Sequential impulses with accumulated clamping, then the bottom-up pass.
+  // `after_bounce`: the same on the velocities the restitution left, with
+  // fresh accumulators and no approach allowed at the impacts (see below).
+  const auto relax = [&](bool after_bounce) {
+    for (Contact& ct : contacts_) ct.lambda2 = 0.0;
+    const auto target = [&](const Contact& ct) { return after_bounce && !ct.resting ? 0.0 : ct.target; };
+    for (int it = 0; it < s.iterations; ++it) {
+      for (Contact& ct : contacts_) {
+        const double vn = Vector::dot(k.velocity[ct.c] - k.velocity[ct.b], axis_normal[ct.axis]);
+        const double w = ct.wc + ct.wb;
+        double& acc = after_bounce ? ct.lambda2 : ct.lambda;
+        const double lambda = std::max(acc - (vn - target(ct)) / w, 0.0);
+        apply(ct, lambda - acc);
+        acc = lambda;
       }
     }
-  }
+    if (!s.shock_propagation || Vector::is_zero(g)) return;
+    for (const std::size_t i : bottom_up(k, contacts_, g)) {
+      const Contact& ct = contacts_[i];
+      const Vector n = axis_normal[ct.axis];
+      const double vn = Vector::dot(k.velocity[ct.c] - k.velocity[ct.b], n);
+      if (vn >= target(ct)) continue;
+      // The lower body is immovable for this pass: the upper takes it all.
+      if (support_sign(ct.axis, g) > 0) {
+        if (ct.wc > 0.0) k.velocity[ct.c] = k.velocity[ct.c] + (target(ct) - vn) * n;
+      } else {
+        if (ct.wb > 0.0) k.velocity[ct.b] = k.velocity[ct.b] - (target(ct) - vn) * n;
+      }
+    }
+  };
+  relax(false);
 
   // Restitution, Poisson's way: each impact gets e times the impulse that
   // stopped it. With one e for all contacts this is v+ = v_c + e (v_c - v-),
@@ -190,8 +197,13 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
   // norm: the energy never grows, even for simultaneous contacts (a target
   // velocity -e·v_n per contact, Newton's way, can gain energy there).
   for (const Contact& ct : contacts_) v_inelastic_[ct.c] = k.velocity[ct.c], v_inelastic_[ct.b] = k.velocity[ct.b];
+  bool bounced = false;
   for (Contact& ct : contacts_)
-    if (!ct.resting && ct.restitution > 0.0) apply(ct, ct.restitution * ct.lambda);
+    if (!ct.resting && ct.restitution > 0.0 && ct.lambda > 0.0) apply(ct, ct.restitution * ct.lambda), bounced = true;
+  // The bounce impulses were computed contact by contact: a light block
+  // lying on the floor when a heavy one lands on it gets e times its share
+  // pushing it into the floor, which nothing would then hold. Relax again.
+  if (bounced) relax(true);
   guard_energy(k);
 
   // An impact found before the bodies touch (gap > 0) happens at toi within
@@ -206,7 +218,7 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
   // gets (1+e)(a·n)(h - toi), never enough to turn the pair back. A body
   // landing on the floor then rests instead of hopping g·h, and bounces do
   // not drift the energy up.
-  for (Contact& ct : contacts_) {
+  for (const Contact& ct : contacts_) {
     if (ct.resting) continue;
     const Vector n = axis_normal[ct.axis];
     const Vector a = (ct.wc > 0.0 ? g : Vector{}) - (ct.wb > 0.0 ? g : Vector{});
@@ -216,18 +228,27 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
     const double w = ct.wc + ct.wb;
     k.velocity[ct.c] = k.velocity[ct.c] + (extra * (ct.wc / w)) * n;
     k.velocity[ct.b] = k.velocity[ct.b] - (extra * (ct.wb / w)) * n;
-    ct.kick = extra / w;
   }
+  // The shift uses each body's net velocity change (a light block lying on
+  // the floor when a heavy one lands on it is held by the floor: it must not
+  // be shifted by what the heavy one's impulse alone would do), and its
+  // earliest such impact.
+  toi_.assign(k.size(), infinity);
   for (const Contact& ct : contacts_) {
     if (ct.resting || ct.toi <= 0.0) continue;
-    const double impulse = (1.0 + ct.restitution) * ct.lambda + ct.kick;
-    const Vector n = axis_normal[ct.axis];
-    k.position[ct.c] = k.position[ct.c] - (ct.toi * ct.wc * impulse) * n;
-    k.position[ct.b] = k.position[ct.b] + (ct.toi * ct.wb * impulse) * n;
+    toi_[ct.c] = std::min(toi_[ct.c], ct.toi);
+    toi_[ct.b] = std::min(toi_[ct.b], ct.toi);
+  }
+  for (const Contact& ct : contacts_) {
+    for (const EntityId e : {ct.c, ct.b}) {
+      if (!(toi_[e] < infinity) || !std::isfinite(k.mass[e])) continue;
+      k.position[e] = k.position[e] + toi_[e] * (v_start_[e] - k.velocity[e]);
+      toi_[e] = infinity;  // once per body
+    }
   }
 
   for (const Contact& ct : contacts_)
-    if (ct.resting && ct.lambda > 0.0) next_warm.emplace_back(key(ct.c, ct.b, ct.axis), ct.lambda);
+    if (ct.resting && ct.lambda + ct.lambda2 > 0.0) next_warm.emplace_back(key(ct.c, ct.b, ct.axis), ct.lambda + ct.lambda2);
   std::sort(next_warm.begin(), next_warm.end());
   warm_ = std::move(next_warm);
 }

@@ -67,9 +67,9 @@ class ContactSolver {
     double wc, wb;     // inverse masses
     double target;     // lowest allowed (v_c - v_b)·n
     double lambda;     // accumulated impulse
+    double lambda2;    // accumulated in the relaxation after the bounces
     double restitution;  // of an impact: bounce impulse = restitution × lambda
     double toi;          // of an impact found before touching: ms into the substep
-    double kick;         // impulse taking back the gravity kick after toi (<= 0)
     bool resting;      // no restitution target: its impulse may warm start the next substep
   };
 
@@ -80,6 +80,7 @@ class ContactSolver {
   std::vector<Vector> v_start_, v_inelastic_;  // indexed by entity id
   std::vector<EntityId> parent_;               // union-find of islands
   std::vector<std::uint32_t> island_;
+  std::vector<double> toi_;                    // earliest impact time per body, indexed by entity id
   std::vector<Contact> contacts_;
   // Impulses of the previous substep's resting contacts, sorted by key.
   std::vector<std::pair<std::uint64_t, double>> warm_;
