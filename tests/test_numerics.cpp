@@ -4,11 +4,37 @@
 #include "helpers.hpp"
 #include "numerics/report.hpp"
 #include "numerics/scenes.hpp"
+#include "utils/random.hpp"
 
 using namespace physics;
 using namespace physics::numerics;
 
 BOOST_AUTO_TEST_SUITE(numerics_ccd)
+
+BOOST_AUTO_TEST_CASE(candidate_pairs_are_the_all_pairs_ones_in_registration_order) {
+  World w = test::physics_world();
+  Game::init_walls(w);
+  Random rng(9);
+  for (int i = 0; i < 400; ++i) {
+    const auto b = Block::make(w, rng.uniform(0, 780), rng.uniform(0, 580), rng.uniform_int(1, 30),
+                               rng.uniform_int(1, 30), test::grey, rng.uniform(1, 5));
+    w.components.velocity[b.id] = {rng.uniform(-2, 2), rng.uniform(-2, 2)};
+  }
+  Block::make(w, 100, 100, 20, 20, test::grey, 1.0);  // two exactly touching boxes
+  Block::make(w, 120, 100, 20, 20, test::grey, 1.0);
+  for (const double h : {0.0, 16.0})
+    for (const double reach : {0.0, 0.5}) {
+      std::vector<BodyPair> fast, slow;
+      candidate_pairs(w.components, w.systems.collision->entities(), h, reach, fast);
+      brute_force_pairs(w.components, w.systems.collision->entities(), h, reach, slow);
+      BOOST_TEST_REQUIRE(fast.size() == slow.size());
+      BOOST_TEST(fast.size() > 100u);
+      for (std::size_t i = 0; i < fast.size(); ++i) {
+        BOOST_TEST(fast[i].c == slow[i].c);
+        BOOST_TEST(fast[i].b == slow[i].b);
+      }
+    }
+}
 
 BOOST_AUTO_TEST_CASE(time_of_impact_is_where_the_relative_motion_enters_the_minkowski_box) {
   World w = test::physics_world();

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <utility>
 
 namespace physics {
 
@@ -26,18 +28,46 @@ void candidate_pairs(const Components& k, std::span<const EntityId> entities, do
   const std::size_t n = entities.size();
   std::vector<Bounds> bounds(n);
   for (std::size_t i = 0; i < n; ++i) bounds[i] = swept(k, entities[i], h, reach);
+  // Sort the boxes by their left edge and only look at the ones that start
+  // before a box ends (sweep and prune on x): the same pairs as the all-pairs
+  // loop (brute_force_pairs), which the 10 000-body cases cannot afford.
+  // A NaN bound sorts nowhere in particular and fails every comparison, so a
+  // lost body simply has no pair.
+  std::vector<std::uint32_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<std::uint32_t>(i);
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    if (bounds[a].x0 != bounds[b].x0) return bounds[a].x0 < bounds[b].x0;
+    return a < b;
+  });
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> found;
+  for (std::size_t oi = 0; oi < n; ++oi) {
+    const std::uint32_t i = order[oi];
+    const Bounds bi = bounds[i];
+    const bool i_fixed = !std::isfinite(k.mass[entities[i]]);
+    for (std::size_t oj = oi + 1; oj < n && bounds[order[oj]].x0 <= bi.x1; ++oj) {
+      const std::uint32_t j = order[oj];
+      const Bounds bj = bounds[j];
+      if (i_fixed && !std::isfinite(k.mass[entities[j]])) continue;  // two walls never collide
+      // Closed test: touching boxes are candidates (resting contact).
+      if (bj.x1 >= bi.x0 && bi.y0 <= bj.y1 && bj.y0 <= bi.y1) found.emplace_back(std::min(i, j), std::max(i, j));
+    }
+  }
+  // Registration order, as the all-pairs loop gives them.
+  std::sort(found.begin(), found.end());
+  out.reserve(found.size());
+  for (const auto& [i, j] : found) out.push_back({entities[i], entities[j]});
+}
+
+void brute_force_pairs(const Components& k, std::span<const EntityId> entities, double h, double reach,
+                       std::vector<BodyPair>& out) {
+  out.clear();
+  const std::size_t n = entities.size();
   for (std::size_t i = 0; i < n; ++i) {
-    const EntityId c = entities[i];
-    const bool c_fixed = !std::isfinite(k.mass[c]);
-    const Bounds bc = bounds[i];
+    const Bounds bi = swept(k, entities[i], h, reach);
     for (std::size_t j = i + 1; j < n; ++j) {
-      const EntityId b = entities[j];
-      if (c_fixed && !std::isfinite(k.mass[b])) continue;  // two walls never collide
-      const Bounds bb = bounds[j];
-      // Closed test: touching boxes are candidates (resting contact). A NaN
-      // bound fails every comparison and drops the pair, which is the safe
-      // side for a body that is already lost.
-      if (bc.x0 <= bb.x1 && bb.x0 <= bc.x1 && bc.y0 <= bb.y1 && bb.y0 <= bc.y1) out.push_back({c, b});
+      if (!std::isfinite(k.mass[entities[i]]) && !std::isfinite(k.mass[entities[j]])) continue;
+      const Bounds bj = swept(k, entities[j], h, reach);
+      if (bi.x0 <= bj.x1 && bj.x0 <= bi.x1 && bi.y0 <= bj.y1 && bj.y0 <= bi.y1) out.push_back({entities[i], entities[j]});
     }
   }
 }
