@@ -54,9 +54,14 @@ double drift(Vector a, Vector b, double scale) { return (std::abs(a.x - b.x) + s
 std::string out_text(int n) { return n ? fmt(", %.0f out", n) : std::string(); }
 // CCD that ran out of its impact budget stopped the scene for the rest of a
 // substep: a pass earned that way is worth knowing.
-std::string capped_text(const World& w) {
-  const auto c = w.ccd.stats.capped_substeps;
-  return c ? fmt(", %.0f capped substeps", static_cast<double>(c)) : std::string();
+// A cell passes only if CCD lost at most 1 % of the substeps that way: a
+// scene that stands still because its time stopped has not been solved.
+Outcome finish(bool pass, std::string figure, const World& w) {
+  const auto capped = static_cast<double>(w.ccd.stats.capped_substeps);
+  if (capped == 0) return {pass, figure};
+  const double substeps = static_cast<double>(w.frame) * w.params.substeps;
+  const bool lost = capped > 0.01 * substeps;
+  return {pass && !lost, figure + fmt(", %.0f capped substeps", capped) + (lost ? " (time lost)" : "")};
 }
 
 // Runs `frames` frames and tracks what every criterion needs.
@@ -103,7 +108,7 @@ Outcome light_under_heavy(const Mode& m, double ratio) {
   block(w, 380, 500, 40, 40, ratio);     // heavy, on the light one
   const Track t = run(w, 600, true);
   if (!t.finite) return nan_outcome();
-  return {t.max_overlap < max_sink && t.outside == 0, fmt("sink %.3g px", t.max_overlap) + out_text(t.outside) + capped_text(w)};
+  return finish(t.max_overlap < max_sink && t.outside == 0, fmt("sink %.3g px", t.max_overlap) + out_text(t.outside), w);
 }
 
 Outcome heavy_hits_light(const Mode& m, double ratio) {
@@ -136,9 +141,9 @@ Outcome light_between_heavy(const Mode& m, double ratio) {
     t.momentum_drift = std::max(t.momentum_drift, drift(momentum(w), P0, scale));
   }
   if (!t.finite) return nan_outcome();
-  return {order && t.momentum_drift < momentum_tolerance && t.energy_growth < energy_tolerance,
+  return finish(order && t.momentum_drift < momentum_tolerance && t.energy_growth < energy_tolerance,
           std::string(order ? "order kept" : "passed through") + fmt(", dp %.2g, dE %+.2g", t.momentum_drift,
-                                                                      t.energy_growth) + capped_text(w)};
+                                                                      t.energy_growth), w);
 }
 
 // ---- stacks ----------------------------------------------------------------
@@ -155,8 +160,8 @@ Outcome stack30(const Mode& m) {
   double moved = 0;
   for (std::size_t i = 0; i < ids.size(); ++i)
     moved = std::max(moved, Vector::norm(w.components.position[ids[i]] - start[i]));
-  return {t.max_overlap < max_sink && moved < max_sink,
-          fmt("sink %.3g px, moved %.3g px", t.max_overlap, moved) + capped_text(w)};
+  return finish(t.max_overlap < max_sink && moved < max_sink,
+          fmt("sink %.3g px, moved %.3g px", t.max_overlap, moved), w);
 }
 
 Outcome high_mass_ratio(const Mode& m) {
@@ -171,8 +176,8 @@ Outcome high_mass_ratio(const Mode& m) {
   if (!t.finite) return nan_outcome();
   const auto& p = w.components.position;
   const bool on_top = p[big].y + 20 <= std::min(p[s1].y, p[s2].y) + max_sink;
-  return {t.max_overlap < max_sink && on_top && t.outside == 0,
-          fmt("sink %.3g px", t.max_overlap) + (on_top ? "" : ", fell through") + out_text(t.outside) + capped_text(w)};
+  return finish(t.max_overlap < max_sink && on_top && t.outside == 0,
+          fmt("sink %.3g px", t.max_overlap) + (on_top ? "" : ", fell through") + out_text(t.outside), w);
 }
 
 // ---- overlaps --------------------------------------------------------------
@@ -240,7 +245,7 @@ Outcome bullet(const Mode& m, double speed) {
   block(w, 400, 295, 10, 10, 1.0, {speed, 0});
   const Track t = run(w, 120, true);
   if (!t.finite) return nan_outcome();
-  return {t.outside == 0, (t.outside ? std::string("tunnelled") : std::string("stayed in")) + capped_text(w)};
+  return finish(t.outside == 0, (t.outside ? std::string("tunnelled") : std::string("stayed in")), w);
 }
 
 // The question-9 scene, its blocks' restitution set to e.
@@ -258,8 +263,8 @@ Outcome far_coordinates(const Mode& m) {
   for (auto& p : w.components.position) p = p + o;
   const Track t = run(w, 3000, true, o);
   if (!t.finite) return nan_outcome();
-  return {t.outside == 0 && t.energy_growth < energy_tolerance,
-          fmt("dE %+.2g", t.energy_growth) + out_text(t.outside) + capped_text(w)};
+  return finish(t.outside == 0 && t.energy_growth < energy_tolerance,
+          fmt("dE %+.2g", t.energy_growth) + out_text(t.outside), w);
 }
 
 Outcome one_pixel(const Mode& m) {
@@ -271,8 +276,8 @@ Outcome one_pixel(const Mode& m) {
           {rng.uniform(-0.5, 0.5), rng.uniform(-0.5, 0.5)});
   const Track t = run(w, 600, true);
   if (!t.finite) return nan_outcome();
-  return {t.outside == 0 && t.energy_growth < energy_tolerance,
-          fmt("dE %+.2g", t.energy_growth) + out_text(t.outside) + capped_text(w)};
+  return finish(t.outside == 0 && t.energy_growth < energy_tolerance,
+          fmt("dE %+.2g", t.energy_growth) + out_text(t.outside), w);
 }
 
 Outcome corner_hits(const Mode& m) {
@@ -286,8 +291,8 @@ Outcome corner_hits(const Mode& m) {
   block(w, 150, 150, 40, 40, 2.0, {-0.3, -0.3});
   const Track t = run(w, 600, true);
   if (!t.finite) return nan_outcome();
-  return {t.outside == 0 && t.energy_growth < energy_tolerance,
-          fmt("dE %+.2g", t.energy_growth) + out_text(t.outside) + capped_text(w)};
+  return finish(t.outside == 0 && t.energy_growth < energy_tolerance,
+          fmt("dE %+.2g", t.energy_growth) + out_text(t.outside), w);
 }
 
 Outcome long_run(const Mode& m, double e) {
@@ -295,8 +300,8 @@ Outcome long_run(const Mode& m, double e) {
   q9(w, e);
   const Track t = run(w, 100000, true, {}, 10);
   if (!t.finite) return nan_outcome();
-  return {t.outside == 0 && t.energy_growth < energy_tolerance,
-          fmt("dE %+.2g", t.energy_growth) + out_text(t.outside) + capped_text(w)};
+  return finish(t.outside == 0 && t.energy_growth < energy_tolerance,
+          fmt("dE %+.2g", t.energy_growth) + out_text(t.outside), w);
 }
 
 }  // namespace
@@ -341,8 +346,16 @@ bool expected_to_fail(const std::string& c, const std::string& m) {
     return (is("light under heavy") && c != "light under heavy 1e+03") ||
            (is("light between heavy") && c != "light between heavy 1e+03") || is("30-block") || is("20x20") ||
            c == "bullet 100 px/ms" || c == "bullet 1000 px/ms" || is("10 000");
-  if (m == "ccd") return is("10 000");  // not run: its discrete pass is the course's all-pairs one
+  // CCD alone has no resting contact: a body pressed on another under
+  // gravity, or squeezed between two heavy ones, needs impacts without end
+  // and CCD stops the scene's time when its budget runs out. (And the 10 000
+  // case is not run: its discrete pass is the course's all-pairs one.)
+  if (m == "ccd")
+    return is("light under heavy") || (is("light between heavy") && c != "light between heavy 1e+03") ||
+           is("30-block") || is("20x20") || is("e = 0") || is("10 000");
   if (m == "stable") return c == "bullet 100 px/ms" || c == "bullet 1000 px/ms";  // no CCD: 1.7 km per frame
+  // With CCD on, impacts are CCD's: the squeeze (~π·sqrt(M/m) impacts) runs out of budget from 1e6.
+  if (m == "stable+ccd") return is("light between heavy") && c != "light between heavy 1e+03";
   return false;
 }
 
