@@ -97,7 +97,7 @@ report: deps
 	  echo "installing Debian packages: gnuplot-nox"; \
 	  $(SUDO) apt-get update -q && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -q gnuplot-nox; }
 	@$(MAKE) --no-print-directory $(BUILD)/report
-	./$(BUILD)/report report $(BUILD)/report
+	./$(BUILD)/report report $(BUILD)/report_work
 
 # The stability matrix: report/STABILITY.md (a few minutes: it runs the long cases).
 stability: deps

@@ -134,7 +134,7 @@ std::string reading(const std::vector<const Row*>& rows) {
 
 int main(int argc, char** argv) {
   const std::string dir = argc > 1 ? argv[1] : "report";
-  const std::string work = argc > 2 ? argv[2] : "build/report";
+  const std::string work = argc > 2 ? argv[2] : "build/report_work";
   std::system(("mkdir -p '" + dir + "' '" + work + "'").c_str());
   const std::string machine = machine_line();
   std::cout << "machine: " << machine << "\n";

@@ -39,7 +39,7 @@ std::vector<Scenario> report_scenarios() {
                  block(w, 100, 100, 20, 20, 1.0, {0.5, 0});
                  for (int k = 0; k < 4; ++k) block(w, 200 + 20 * k, 100, 20, 20, 1.0);
                }});
-  s.push_back({"gas 50, e=1", 2000, {}, true, -1, [](World& w) {
+  s.push_back({"gas 50 (e=1)", 2000, {}, true, -1, [](World& w) {
                  walls(w);
                  Random rng(2024);
                  for (int i = 0; i < 50; ++i)

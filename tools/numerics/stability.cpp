@@ -160,8 +160,8 @@ Outcome stack30(const Mode& m) {
   double moved = 0;
   for (std::size_t i = 0; i < ids.size(); ++i)
     moved = std::max(moved, Vector::norm(w.components.position[ids[i]] - start[i]));
-  return finish(t.max_overlap < max_sink && moved < max_sink,
-          fmt("sink %.3g px, moved %.3g px", t.max_overlap, moved), w);
+  return finish(t.max_overlap < max_sink && moved < max_sink && t.outside == 0,
+          fmt("sink %.3g px, moved %.3g px", t.max_overlap, moved) + out_text(t.outside), w);
 }
 
 Outcome high_mass_ratio(const Mode& m) {
