@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 #include "utils/rect.hpp"
 
@@ -36,10 +37,7 @@ std::pair<int, double> best_axis(const Components& k, EntityId c, EntityId b) {
   return {best, g};
 }
 
-std::uint64_t key(EntityId c, EntityId b, int axis) {
-  return (static_cast<std::uint64_t>(c) << 34) | (static_cast<std::uint64_t>(b) << 2) |
-         static_cast<std::uint64_t>(axis);
-}
+std::uint64_t key(EntityId c, EntityId b) { return (static_cast<std::uint64_t>(c) << 32) | b; }
 
 double inverse_mass(double m) { return std::isfinite(m) ? 1.0 / m : 0.0; }
 
@@ -108,7 +106,7 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
   // Slower than the speed gravity gives in two substeps: a resting contact,
   // not an impact, so no bounce (otherwise a block on the floor would hop).
   const double threshold = 2.0 * Vector::norm(g) * h + 1e-12;
-  std::vector<std::pair<std::uint64_t, double>> next_warm;
+  std::vector<std::tuple<std::uint64_t, int, double>> next_warm;
   for (const BodyPair& p : pairs_) {
     const auto [axis, gap] = best_axis(k, p.c, p.b);
     const Vector n = axis_normal[axis];
@@ -151,10 +149,10 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
   // impulse it ended with (a stack's weight is then carried from the start).
   for (Contact& ct : contacts_) {
     if (!ct.resting) continue;
-    const auto kk = key(ct.c, ct.b, ct.axis);
-    const auto it = std::lower_bound(warm_.begin(), warm_.end(), std::make_pair(kk, -infinity));
-    if (it != warm_.end() && it->first == kk) {
-      ct.lambda = it->second;
+    const auto kk = key(ct.c, ct.b);
+    const auto it = std::lower_bound(warm_.begin(), warm_.end(), std::make_tuple(kk, ct.axis, -infinity));
+    if (it != warm_.end() && std::get<0>(*it) == kk && std::get<1>(*it) == ct.axis) {
+      ct.lambda = std::get<2>(*it);
       apply(ct, ct.lambda);
     }
   }
@@ -248,7 +246,7 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
   }
 
   for (const Contact& ct : contacts_)
-    if (ct.resting && ct.lambda + ct.lambda2 > 0.0) next_warm.emplace_back(key(ct.c, ct.b, ct.axis), ct.lambda + ct.lambda2);
+    if (ct.resting && ct.lambda + ct.lambda2 > 0.0) next_warm.emplace_back(key(ct.c, ct.b), ct.axis, ct.lambda + ct.lambda2);
   std::sort(next_warm.begin(), next_warm.end());
   warm_ = std::move(next_warm);
 }

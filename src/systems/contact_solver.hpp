@@ -31,6 +31,7 @@
 
 #include <cstdint>
 #include <span>
+#include <tuple>
 #include <vector>
 
 #include "component_defs.hpp"
@@ -82,8 +83,9 @@ class ContactSolver {
   std::vector<std::uint32_t> island_;
   std::vector<double> toi_;                    // earliest impact time per body, indexed by entity id
   std::vector<Contact> contacts_;
-  // Impulses of the previous substep's resting contacts, sorted by key.
-  std::vector<std::pair<std::uint64_t, double>> warm_;
+  // Impulses of the previous substep's resting contacts: (c << 32 | b, axis,
+  // impulse), sorted.
+  std::vector<std::tuple<std::uint64_t, int, double>> warm_;
 };
 
 }  // namespace physics
