@@ -17,6 +17,9 @@ endif
 
 ifeq ($(SANITIZE),1)
   BUILD    := $(BUILD)/sanitize
+  # The long stability cases (label "slow") take minutes at -O2; under the
+  # sanitizers, ten times that. Run them with TEST_ARGS= to override.
+  TEST_ARGS ?= --run_test=!@slow
   CXXFLAGS += -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
   LDFLAGS  += -fsanitize=address,undefined
 endif
@@ -38,15 +41,24 @@ APP_SRC  := src/cli.cpp src/testbed.cpp
 GAME_SRC := src/game.cpp src/window.cpp src/systems/draw.cpp $(APP_SRC)
 TEST_SRC := $(wildcard tests/*.cpp) $(APP_SRC)
 APP_LIBS := -lboost_program_options
+# Numerics options (docs/numerics.md): swept collision, stable contact solver.
+CORE_SRC += src/systems/pairs.cpp src/systems/ccd.cpp src/systems/contact_solver.cpp
+# The exact event-driven reference (not part of the engine): tests and report tools.
+REF_SRC  := src/reference/event_sim.cpp src/reference/closed_forms.cpp
 
 CORE_OBJ := $(CORE_SRC:%.cpp=$(BUILD)/obj/%.o)
 GAME_OBJ := $(GAME_SRC:%.cpp=$(BUILD)/obj/%.o)
 TEST_OBJ := $(TEST_SRC:%.cpp=$(BUILD)/obj/%.o) $(BUILD)/obj/src/game_nomain.o
+REF_OBJ  := $(REF_SRC:%.cpp=$(BUILD)/obj/%.o)
+# Scenes, modes and measures of `make report` / `make stability`, shared with their tests.
+NUM_SRC  := tools/numerics/scenes.cpp tools/numerics/stability.cpp tools/numerics/report.cpp
+NUM_OBJ  := $(NUM_SRC:%.cpp=$(BUILD)/obj/%.o)
+TEST_OBJ += $(REF_OBJ) $(NUM_OBJ)
 
 SDL_CFLAGS = $(shell pkg-config --cflags sdl2 SDL2_ttf)
 SDL_LIBS   = $(shell pkg-config --libs sdl2 SDL2_ttf)
 
-.PHONY: all run test deps clean check-no-sdl determinism memcheck soak fuzz
+.PHONY: all run test deps clean check-no-sdl determinism memcheck soak fuzz report stability
 all: $(BUILD)/game $(BUILD)/tests
 
 deps:
@@ -81,6 +93,28 @@ $(BUILD)/tests: $(TEST_OBJ) $(BUILD)/libphysics.a
 	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS) -lboost_unit_test_framework $(APP_LIBS)
 
 $(BUILD)/obj/src/window.o $(BUILD)/obj/src/systems/draw.o: CXXFLAGS += $(SDL_CFLAGS)
+$(BUILD)/obj/tools/%.o $(BUILD)/obj/tests/%.o: CXXFLAGS += -Itools
+
+# ---- numerics (docs/numerics.md) ----
+$(BUILD)/stability: $(BUILD)/obj/tools/stability_main.o $(NUM_OBJ) $(REF_OBJ) $(BUILD)/obj/src/game_nomain.o $(BUILD)/libphysics.a
+	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS)
+
+$(BUILD)/report: $(BUILD)/obj/tools/report_main.o $(NUM_OBJ) $(REF_OBJ) $(BUILD)/obj/src/game_nomain.o $(BUILD)/libphysics.a
+	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS)
+
+# Error against run time: report/accuracy.csv, REPORT.md, work_precision.png (needs gnuplot).
+report: deps
+	@dpkg-query -W -f='$${Status}' gnuplot-nox 2>/dev/null | grep -q "ok installed" || { \
+	  echo "installing Debian packages: gnuplot-nox"; \
+	  $(SUDO) apt-get update -q && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -q gnuplot-nox; }
+	@$(MAKE) --no-print-directory $(BUILD)/report
+	./$(BUILD)/report report $(BUILD)/report_work
+
+# The stability matrix: report/STABILITY.md (a few minutes: it runs the long cases).
+stability: deps
+	@$(MAKE) --no-print-directory $(BUILD)/stability
+	@mkdir -p report
+	./$(BUILD)/stability report/STABILITY.md
 
 $(BUILD)/obj/%.o: %.cpp
 	@mkdir -p $(@D)

@@ -8,6 +8,8 @@
 
 #include "component_defs.hpp"
 #include "system_defs.hpp"
+#include "systems/ccd.hpp"
+#include "systems/contact_solver.hpp"
 
 namespace physics {
 
@@ -44,11 +46,19 @@ struct World {
   Params params;
   SystemTimes times;
   std::int64_t frame = 0;
+  // State of the numerics options (Params::ccd, Params::solver): impact
+  // counters and the stable solver's warm-start impulses. Unused in the
+  // course mode.
+  Ccd ccd;
+  ContactSolver contact_solver;
 
   explicit World(SystemSet set = {}, Params p = {});
 
   // One frame of physics, in the sheet's order: Forces, Move, Collision.
-  // (Draw is the front end's business.)
+  // (Draw is the front end's business.) With ccd or the stable solver, each
+  // substep runs Forces, [stable: solve velocities], [ccd: impacts], Move,
+  // then stable: project positions / course: the sheet's Collision pass; the
+  // time of all but Forces and Move counts as Collision's.
   void step();
 
   // Diagnostics over finite masses (fixed bodies carry no kinetic energy and
@@ -56,6 +66,9 @@ struct World {
   double kinetic_energy() const;
   Vector momentum() const;
   std::size_t finite_bodies() const;
+
+ private:
+  void step_numerics(double h);
 };
 
 }  // namespace physics

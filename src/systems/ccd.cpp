@@ -1,0 +1,157 @@
+#include "systems/ccd.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <queue>
+
+#include "systems/collision.hpp"
+#include "utils/rect.hpp"
+
+namespace physics {
+
+namespace {
+
+constexpr double inf = std::numeric_limits<double>::infinity();
+
+// Open interval of times at which s + d·t < 0 < s + size + d·t: the origin is
+// strictly inside the moving Minkowski box along one axis.
+struct Interval {
+  double lo, hi;
+};
+Interval slab(double s, double size, double d) {
+  if (d == 0.0) return (s < 0.0 && 0.0 < s + size) ? Interval{-inf, inf} : Interval{inf, -inf};
+  const double a = -s / d, b = -(s + size) / d;
+  return d > 0.0 ? Interval{b, a} : Interval{a, b};
+}
+
+// A relative speed this small next to the bodies' own is rounding left over
+// from an impulse that zeroed it (e = 0): it must not count as approaching,
+// or the pair would be "hit" again and again at the same instant.
+double speed_floor(Vector vc, Vector vb) {
+  return 1e-12 * (std::abs(vc.x) + std::abs(vc.y) + std::abs(vb.x) + std::abs(vb.y));
+}
+
+struct Event {
+  double t;
+  std::uint32_t ic, ib;  // registration indices, ic < ib
+  std::uint32_t vc, vb;  // versions of the bodies when it was predicted
+};
+struct Later {
+  bool operator()(const Event& a, const Event& b) const {
+    if (a.t != b.t) return a.t > b.t;
+    if (a.ic != b.ic) return a.ic > b.ic;
+    return a.ib > b.ib;
+  }
+};
+
+}  // namespace
+
+std::optional<Impact> Ccd::time_of_impact(const Components& k, EntityId c, EntityId b, double t0, double t1) {
+  const Vector vc = k.velocity[c], vb = k.velocity[b];
+  const auto [s, size] = Rect::mdiff(k.position[c], k.box[c], k.position[b], k.box[b]);
+  const Vector d = vb - vc;  // the Minkowski box moves at v_b - v_c
+  const Interval ix = slab(s.x, size.width, d.x);
+  const Interval iy = slab(s.y, size.height, d.y);
+  const double enter = std::max(ix.lo, iy.lo);
+  const double exit = std::min(ix.hi, iy.hi);
+  if (!(enter < exit) || exit <= t0 || enter > t1) return std::nullopt;
+  const double floor = speed_floor(vc, vb);
+  if (enter >= t0) {
+    // x wins a tie, as the course's penetration vector does.
+    const bool along_x = ix.lo >= iy.lo;
+    const double dn = along_x ? d.x : d.y;
+    if (std::abs(dn) <= floor) return std::nullopt;
+    const Vector n = along_x ? Vector{dn > 0.0 ? 1.0 : -1.0, 0.0} : Vector{0.0, dn > 0.0 ? 1.0 : -1.0};
+    return Impact{enter, n};
+  }
+  // Already overlapping at t0 (spawned so, or left so by a capped substep):
+  // an impact now if the pair approaches along its shortest way out.
+  const Vector s0{s.x + t0 * d.x, s.y + t0 * d.y};
+  const Vector n = Vector::normalize(Collision::penetration(s0, size));
+  if (Vector::dot(vc - vb, n) >= -floor) return std::nullopt;
+  return Impact{t0, n};
+}
+
+void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h, Vector gravity) {
+  const std::size_t count = entities.size();
+  if (count < 2) return;
+  candidate_pairs(k, entities, h, 0.0, pairs_);
+  if (pairs_.empty()) return;
+
+  // Registration index of each entity, and a version per body: an event
+  // predicted before one of its bodies changed velocity is stale.
+  std::vector<std::uint32_t> index(k.size(), 0);
+  for (std::size_t i = 0; i < count; ++i) index[entities[i]] = static_cast<std::uint32_t>(i);
+  std::vector<std::uint32_t> version(count, 0);
+  std::priority_queue<Event, std::vector<Event>, Later> queue;
+
+  const auto predict = [&](std::uint32_t ic, std::uint32_t ib, double t0) {
+    if (ic > ib) std::swap(ic, ib);
+    if (const auto hit = time_of_impact(k, entities[ic], entities[ib], t0, h))
+      queue.push(Event{hit->t, ic, ib, version[ic], version[ib]});
+  };
+  for (const BodyPair& p : pairs_) predict(index[p.c], index[p.b], 0.0);
+
+  const std::int64_t budget = 16 * static_cast<std::int64_t>(count) + 128;
+  std::int64_t resolved = 0;
+  while (!queue.empty()) {
+    const Event ev = queue.top();
+    queue.pop();
+    if (ev.vc != version[ev.ic] || ev.vb != version[ev.ib]) continue;
+    if (resolved == budget) {
+      // Out of budget: stop every body where it is at this event's time for
+      // the rest of the substep (Move will bring it exactly there). Nothing
+      // passes through anything and no impulse is invented; the price is
+      // that the scene loses h - t of motion in this substep.
+      ++stats.capped_substeps;
+      for (const EntityId e : entities) k.position[e] = k.position[e] + (ev.t - h) * k.velocity[e];
+      break;
+    }
+    const EntityId c = entities[ev.ic], b = entities[ev.ib];
+    // Predicted with these very velocities, so it still holds; recompute the
+    // normal at the event's time (the function is deterministic).
+    const auto hit = time_of_impact(k, c, b, ev.t, h);
+    if (!hit || hit->t != ev.t) continue;
+    const Vector n = hit->n;
+    const Vector vc = k.velocity[c], vb = k.velocity[b];
+    const double vn = Vector::dot(vc - vb, n);
+    // The course's impulse, written as in Collision::resolve so that a wall
+    // reverses the normal velocity exactly.
+    const double e = std::min(k.restitution[c], k.restitution[b]);
+    const double wc = 1.0 / k.mass[c], wb = 1.0 / k.mass[b];
+    // Gravity: Forces gave the whole substep's kick g·h at its start, but the
+    // impact happens at t; the kick after t must not be reflected. The
+    // normal velocity after the substep is -e·v_n + (1+e)(a·n)(h - t), a the
+    // pair's relative acceleration (g against a fixed body, 0 between two
+    // free ones). Without this, a body resting on the floor with e = 1 hops
+    // g·h every substep and each bounce gains or loses m(g·n)(v·n)(h - 2t) of
+    // energy, a random walk that drifts up; with it, it rests. Never enough
+    // to turn the pair back towards each other.
+    const Vector ac = std::isfinite(k.mass[c]) ? gravity : Vector{};
+    const Vector ab = std::isfinite(k.mass[b]) ? gravity : Vector{};
+    const double kick = std::max((1.0 + e) * Vector::dot(ac - ab, n) * (h - ev.t), e * vn);
+    const double dv = -(1.0 + e) * vn + kick;
+    const Vector vc2 = vc + (dv * (wc / (wc + wb))) * n;
+    const Vector vb2 = vb - (dv * (wb / (wc + wb))) * n;
+    // Keep position + t·velocity continuous at t (see the header).
+    k.position[c] = k.position[c] + ev.t * (vc - vc2);
+    k.position[b] = k.position[b] + ev.t * (vb - vb2);
+    k.velocity[c] = vc2;
+    k.velocity[b] = vb2;
+    ++resolved;
+    ++stats.impacts;
+    // Both bodies changed course: predict their impacts with everything again
+    // (not only the candidates, whose sweeps assumed the old velocities).
+    ++version[ev.ic];
+    ++version[ev.ib];
+    const bool c_fixed = !std::isfinite(k.mass[c]), b_fixed = !std::isfinite(k.mass[b]);
+    for (std::uint32_t j = 0; j < count; ++j) {
+      const bool j_fixed = !std::isfinite(k.mass[entities[j]]);
+      if (j != ev.ic && !(c_fixed && j_fixed)) predict(ev.ic, j, ev.t);
+      if (j != ev.ib && j != ev.ic && !(b_fixed && j_fixed)) predict(ev.ib, j, ev.t);
+    }
+  }
+}
+
+}  // namespace physics

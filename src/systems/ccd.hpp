@@ -1,0 +1,63 @@
+// Continuous collision detection (the sheet's closing remark: "si les objets
+// vont trop vite, ils passent à travers les murs ... swept collision").
+//
+// Within one (sub)step every body moves on a straight line at the velocity it
+// has after Forces. Ccd::resolve finds, in time order, every moment in
+// [0, h] at which two boxes start to touch: the relative motion of the pair is
+// cast against their Minkowski difference (the sheet's `mdiff`), and the time
+// the origin enters that box is the time of impact (TOI). At each impact the
+// pair gets the course's impulse (restitution = min of the pair, fixed bodies
+// untouched), and the other impacts of the two bodies are predicted again.
+// Nothing ever passes through anything, at any speed.
+//
+// It does not move the bodies itself: a body whose velocity changes from v to
+// v' at time t has its position shifted by t·(v - v'), so that Move's usual
+// x += h·v' lands it where the piecewise-linear motion ends. Move and its
+// timing stay as they are.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "component_defs.hpp"
+#include "systems/pairs.hpp"
+
+namespace physics {
+
+struct Impact {
+  double t;  // ms from the start of the step
+  Vector n;  // unit axis that moves c away from b at the impact
+};
+
+struct CcdStats {
+  std::int64_t impacts = 0;          // impulses applied at a time of impact
+  std::int64_t capped_substeps = 0;  // substeps that hit the impact budget (see Ccd::resolve)
+};
+
+class Ccd {
+ public:
+  // Resolves the impacts of the next h ms between the given bodies (the
+  // Collision system's, in registration order), as described above. A
+  // substep resolves at most 16·n + 128 impacts; past that (an inelastic
+  // collapse in a resting stack, a light body squeezed between two heavy
+  // ones, which takes ~π·sqrt(M/m) impacts) every body stops where it is at
+  // that moment for the rest of the substep: no tunnelling, no energy or
+  // momentum error, but lost time, counted in stats.capped_substeps.
+  void resolve(Components& k, std::span<const EntityId> entities, double h, Vector gravity = {});
+
+  // First time in [t0, t1] at which the boxes of c and b, moving at their
+  // current velocities from their positions extrapolated to time 0
+  // (`position + t·velocity`), start to touch while approaching; or, if they
+  // already overlap at t0, t0 itself when they approach along the shortest
+  // way out. Ties between the axes go to x, as in Collision::penetration.
+  static std::optional<Impact> time_of_impact(const Components& k, EntityId c, EntityId b, double t0, double t1);
+
+  CcdStats stats;
+
+ private:
+  std::vector<BodyPair> pairs_;
+};
+
+}  // namespace physics

@@ -1,0 +1,382 @@
+#include "systems/contact_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <tuple>
+
+#include "utils/rect.hpp"
+
+namespace physics {
+
+namespace {
+
+constexpr Vector axis_normal[4] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};
+
+// Signed distance between the boxes of c and b along an axis (negative:
+// overlap), from their Minkowski difference s = b ⊖ c.
+double gap_along(const Components& k, EntityId c, EntityId b, int axis) {
+  const auto [s, size] = Rect::mdiff(k.position[c], k.box[c], k.position[b], k.box[b]);
+  switch (axis) {
+    case 0: return s.x;
+    case 1: return -(s.x + size.width);
+    case 2: return s.y;
+    default: return -(s.y + size.height);
+  }
+}
+
+// The separating axis with the largest gap; for overlapping boxes that is the
+// shortest way out, with Collision::penetration's tie order (-x, +x, -y, +y).
+std::pair<int, double> best_axis(const Components& k, EntityId c, EntityId b) {
+  int best = 0;
+  double g = gap_along(k, c, b, 0);
+  for (int a = 1; a < 4; ++a) {
+    const double ga = gap_along(k, c, b, a);
+    if (ga > g) best = a, g = ga;
+  }
+  return {best, g};
+}
+
+std::uint64_t key(EntityId c, EntityId b) { return (static_cast<std::uint64_t>(c) << 32) | b; }
+
+double inverse_mass(double m) { return std::isfinite(m) ? 1.0 / m : 0.0; }
+
+// Which body of a contact bears the other's weight: the one lying in the
+// direction of gravity. 0: neither (side contact, or no gravity).
+// +1: b is below c (c rests on b). -1: c is below b.
+int support_sign(int axis, Vector g) {
+  const double ng = Vector::dot(axis_normal[axis], g);
+  if (ng < 0.0) return 1;   // n points up: c is above b
+  if (ng > 0.0) return -1;  // n points down: b is above c
+  return 0;
+}
+
+// Depth in the support graph: fixed bodies are at 0, a body resting on a
+// body of depth d is at d + 1; bodies resting on nothing fixed get `none`.
+constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
+
+template <class Contacts>
+std::vector<std::uint32_t> support_depths(const Components& k, const Contacts& contacts, Vector g) {
+  std::vector<std::uint32_t> depth(k.size(), none);
+  for (const auto& ct : contacts) {
+    if (!std::isfinite(k.mass[ct.c])) depth[ct.c] = 0;
+    if (!std::isfinite(k.mass[ct.b])) depth[ct.b] = 0;
+  }
+  // Bellman-Ford style relaxation; stacks are shallow next to the contact count.
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (const auto& ct : contacts) {
+      const int sign = support_sign(ct.axis, g);
+      if (sign == 0) continue;
+      const EntityId lower = sign > 0 ? ct.b : ct.c, upper = sign > 0 ? ct.c : ct.b;
+      if (depth[lower] == none || !std::isfinite(k.mass[upper])) continue;
+      if (depth[lower] + 1 < depth[upper]) depth[upper] = depth[lower] + 1, changed = true;
+    }
+  }
+  return depth;
+}
+
+// Weight-bearing contacts whose lower body rests on the ground, lowest first.
+template <class Contacts>
+std::vector<std::size_t> bottom_up(const Components& k, const Contacts& contacts, Vector g) {
+  const auto depth = support_depths(k, contacts, g);
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const int sign = support_sign(contacts[i].axis, g);
+    if (sign == 0) continue;
+    const EntityId lower = sign > 0 ? contacts[i].b : contacts[i].c;
+    const EntityId upper = sign > 0 ? contacts[i].c : contacts[i].b;
+    if (depth[lower] != none && depth[lower] < depth[upper]) order.push_back(i);
+  }
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const auto lower = [&](std::size_t i) {
+      return support_sign(contacts[i].axis, g) > 0 ? contacts[i].b : contacts[i].c;
+    };
+    return depth[lower(a)] < depth[lower(b)];
+  });
+  return order;
+}
+
+}  // namespace
+
+void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> entities, double h, Vector g,
+                                     const SolverSettings& s) {
+  candidate_pairs(k, entities, h, s.margin, pairs_);
+  contacts_.clear();
+  // Slower than the speed gravity gives in two substeps: a resting contact,
+  // not an impact, so no bounce (otherwise a block on the floor would hop).
+  const double threshold = 2.0 * Vector::norm(g) * h + 1e-12;
+  std::vector<std::tuple<std::uint64_t, int, double>> next_warm;
+  for (const BodyPair& p : pairs_) {
+    const auto [axis, gap] = best_axis(k, p.c, p.b);
+    const Vector n = axis_normal[axis];
+    const double vn = Vector::dot(k.velocity[p.c] - k.velocity[p.b], n);
+    // Speculative: a pair further apart than the margin is a contact only if
+    // it closes the gap within this substep.
+    if (gap > s.margin && gap + vn * h > 0.0) continue;
+    const bool impact = vn < -threshold && gap + vn * h <= 0.0;
+    // With CCD on, impacts are its business: it finds each one's exact time
+    // and resolves chains of them one after the other (a cradle). The solver
+    // keeps the resting contacts, which CCD alone cannot hold.
+    if (impact && !s.impacts) continue;
+    Contact ct{p.c, p.b, axis, inverse_mass(k.mass[p.c]), inverse_mass(k.mass[p.b]), 0.0, 0.0, 0.0, 0.0, 0.0, true};
+    if (impact) {
+      // A real impact this substep: stopped here (target 0), then bounced by
+      // e times the stopping impulse once the iterations are done.
+      ct.restitution = std::min(k.restitution[p.c], k.restitution[p.b]);
+      ct.resting = false;
+      ct.toi = gap > 0.0 ? gap / -vn : 0.0;
+    } else {
+      // Close at most the gap (a speculative contact), never approach once touching.
+      ct.target = gap > 0.0 ? -gap / h : 0.0;
+    }
+    contacts_.push_back(ct);
+  }
+  stats.contacts += static_cast<std::int64_t>(contacts_.size());
+
+  // Velocities before any impulse, for the energy guard at the end.
+  v_start_.resize(k.size());
+  v_inelastic_.resize(k.size());
+  for (const Contact& ct : contacts_) v_start_[ct.c] = k.velocity[ct.c], v_start_[ct.b] = k.velocity[ct.b];
+
+  const auto apply = [&](Contact& ct, double impulse) {
+    const Vector n = axis_normal[ct.axis];
+    k.velocity[ct.c] = k.velocity[ct.c] + (ct.wc * impulse) * n;
+    k.velocity[ct.b] = k.velocity[ct.b] - (ct.wb * impulse) * n;
+  };
+
+  // Warm start: a resting contact that was there last substep starts with the
+  // impulse it ended with (a stack's weight is then carried from the start).
+  for (Contact& ct : contacts_) {
+    if (!ct.resting) continue;
+    const auto kk = key(ct.c, ct.b);
+    const auto it = std::lower_bound(warm_.begin(), warm_.end(), std::make_tuple(kk, ct.axis, -infinity));
+    if (it != warm_.end() && std::get<0>(*it) == kk && std::get<1>(*it) == ct.axis) {
+      ct.lambda = std::get<2>(*it);
+      apply(ct, ct.lambda);
+    }
+  }
+
+  // Sequential impulses with accumulated clamping, then the bottom-up pass.
+  // `after_bounce`: the same on the velocities the restitution left, with
+  // fresh accumulators and no approach allowed at the impacts (see below).
+  const auto relax = [&](bool after_bounce) {
+    for (Contact& ct : contacts_) ct.lambda2 = 0.0;
+    const auto target = [&](const Contact& ct) { return after_bounce && !ct.resting ? 0.0 : ct.target; };
+    for (int it = 0; it < s.iterations; ++it) {
+      for (Contact& ct : contacts_) {
+        const double vn = Vector::dot(k.velocity[ct.c] - k.velocity[ct.b], axis_normal[ct.axis]);
+        const double w = ct.wc + ct.wb;
+        double& acc = after_bounce ? ct.lambda2 : ct.lambda;
+        const double lambda = std::max(acc - (vn - target(ct)) / w, 0.0);
+        apply(ct, lambda - acc);
+        acc = lambda;
+      }
+    }
+    if (!s.shock_propagation || Vector::is_zero(g)) return;
+    for (const std::size_t i : bottom_up(k, contacts_, g)) {
+      const Contact& ct = contacts_[i];
+      const Vector n = axis_normal[ct.axis];
+      const double vn = Vector::dot(k.velocity[ct.c] - k.velocity[ct.b], n);
+      if (vn >= target(ct)) continue;
+      // The lower body is immovable for this pass: the upper takes it all.
+      if (support_sign(ct.axis, g) > 0) {
+        if (ct.wc > 0.0) k.velocity[ct.c] = k.velocity[ct.c] + (target(ct) - vn) * n;
+      } else {
+        if (ct.wb > 0.0) k.velocity[ct.b] = k.velocity[ct.b] - (target(ct) - vn) * n;
+      }
+    }
+  };
+  relax(false);
+
+  // Restitution, Poisson's way: each impact gets e times the impulse that
+  // stopped it. With one e for all contacts this is v+ = v_c + e (v_c - v-),
+  // v_c the inelastic (projected) velocity, so |v+| <= |v-| in the mass
+  // norm: the energy never grows, even for simultaneous contacts (a target
+  // velocity -e·v_n per contact, Newton's way, can gain energy there).
+  for (const Contact& ct : contacts_) v_inelastic_[ct.c] = k.velocity[ct.c], v_inelastic_[ct.b] = k.velocity[ct.b];
+  bool bounced = false;
+  for (Contact& ct : contacts_)
+    if (!ct.resting && ct.restitution > 0.0 && ct.lambda > 0.0) apply(ct, ct.restitution * ct.lambda), bounced = true;
+  // The bounce impulses were computed contact by contact: a light block
+  // lying on the floor when a heavy one lands on it gets e times its share
+  // pushing it into the floor, which nothing would then hold. Relax again.
+  if (bounced) relax(true);
+  guard_energy(k);
+
+  // An impact found before the bodies touch (gap > 0) happens at toi within
+  // the substep, not at its start: shift each body by toi·(v_before - v_after)
+  // of that impulse, so that Move's x += h·v ends it where the motion that
+  // changes velocity at toi does (what Ccd does at each impact). Without it a
+  // bounce happens up to |v|·h early, and under gravity each such bounce
+  // gains energy (g·v·h).
+  //
+  // And, as in Ccd, the part of the substep's gravity kick that comes after
+  // the impact is not reflected: against a fixed body the normal velocity
+  // gets (1+e)(a·n)(h - toi), never enough to turn the pair back. A body
+  // landing on the floor then rests instead of hopping g·h, and bounces do
+  // not drift the energy up.
+  for (const Contact& ct : contacts_) {
+    if (ct.resting) continue;
+    const Vector n = axis_normal[ct.axis];
+    const Vector a = (ct.wc > 0.0 ? g : Vector{}) - (ct.wb > 0.0 ? g : Vector{});
+    const double vn = Vector::dot(k.velocity[ct.c] - k.velocity[ct.b], n);
+    const double extra = std::max((1.0 + ct.restitution) * Vector::dot(a, n) * (h - ct.toi), -vn);
+    if (extra >= 0.0) continue;
+    const double w = ct.wc + ct.wb;
+    k.velocity[ct.c] = k.velocity[ct.c] + (extra * (ct.wc / w)) * n;
+    k.velocity[ct.b] = k.velocity[ct.b] - (extra * (ct.wb / w)) * n;
+  }
+  // The shift uses each body's net velocity change (a light block lying on
+  // the floor when a heavy one lands on it is held by the floor: it must not
+  // be shifted by what the heavy one's impulse alone would do), and its
+  // earliest such impact.
+  toi_.assign(k.size(), infinity);
+  for (const Contact& ct : contacts_) {
+    if (ct.resting || ct.toi <= 0.0) continue;
+    toi_[ct.c] = std::min(toi_[ct.c], ct.toi);
+    toi_[ct.b] = std::min(toi_[ct.b], ct.toi);
+  }
+  for (const Contact& ct : contacts_) {
+    for (const EntityId e : {ct.c, ct.b}) {
+      if (!(toi_[e] < infinity) || !std::isfinite(k.mass[e])) continue;
+      k.position[e] = k.position[e] + toi_[e] * (v_start_[e] - k.velocity[e]);
+      toi_[e] = infinity;  // once per body
+    }
+  }
+
+  for (const Contact& ct : contacts_)
+    if (ct.resting && ct.lambda + ct.lambda2 > 0.0) next_warm.emplace_back(key(ct.c, ct.b), ct.axis, ct.lambda + ct.lambda2);
+  std::sort(next_warm.begin(), next_warm.end());
+  warm_ = std::move(next_warm);
+}
+
+// Poisson's restitution keeps the energy from growing only when the
+// iterations have converged; a light body squeezed between two heavy ones
+// (mass ratio 1e3 and more) does not converge in a few iterations, and
+// warm starting or shock propagation can add a little too. So per island of
+// touching finite bodies: if the kinetic energy ended above where it started,
+// scale the restitution impulses down until it does not (and, if the
+// inelastic velocities alone are above, move back towards the starting ones).
+// Both are blends of impulse sets, so momentum is kept.
+void ContactSolver::guard_energy(Components& k) {
+  const auto n = k.size();
+  parent_.resize(n);
+  for (const Contact& ct : contacts_) parent_[ct.c] = ct.c, parent_[ct.b] = ct.b;
+  const auto find = [&](EntityId x) {
+    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
+    return x;
+  };
+  for (const Contact& ct : contacts_)
+    if (ct.wc > 0.0 && ct.wb > 0.0) parent_[find(ct.c)] = find(ct.b);
+
+  struct Sums {
+    double start = 0, inel = 0, end = 0, b_rest = 0, a_rest = 0, b_back = 0, a_back = 0;
+  };
+  std::vector<std::pair<EntityId, Sums>> islands;  // few per substep: linear search is fine for small, map otherwise
+  std::vector<EntityId> bodies;
+  for (const Contact& ct : contacts_) {
+    if (ct.wc > 0.0) bodies.push_back(ct.c);
+    if (ct.wb > 0.0) bodies.push_back(ct.b);
+  }
+  std::sort(bodies.begin(), bodies.end());
+  bodies.erase(std::unique(bodies.begin(), bodies.end()), bodies.end());
+  island_.resize(n);
+  std::vector<Sums> sums;
+  std::vector<EntityId> roots;
+  for (const EntityId e : bodies) {
+    const EntityId r = find(e);
+    const auto it = std::lower_bound(roots.begin(), roots.end(), r);
+    if (it == roots.end() || *it != r) {
+      sums.insert(sums.begin() + (it - roots.begin()), Sums{});
+      roots.insert(it, r);
+    }
+  }
+  for (const EntityId e : bodies) {
+    const std::size_t i = static_cast<std::size_t>(std::lower_bound(roots.begin(), roots.end(), find(e)) - roots.begin());
+    island_[e] = static_cast<std::uint32_t>(i);
+    const double m = k.mass[e];
+    const Vector v0 = v_start_[e], vi = v_inelastic_[e], v1 = k.velocity[e];
+    const Vector rest = v1 - vi, back = vi - v0;
+    Sums& su = sums[i];
+    su.start += 0.5 * m * Vector::dot(v0, v0);
+    su.inel += 0.5 * m * Vector::dot(vi, vi);
+    su.end += 0.5 * m * Vector::dot(v1, v1);
+    su.b_rest += m * Vector::dot(vi, rest);
+    su.a_rest += 0.5 * m * Vector::dot(rest, rest);
+    su.b_back += m * Vector::dot(v0, back);
+    su.a_back += 0.5 * m * Vector::dot(back, back);
+  }
+  // Largest s in [0, 1] with a s² + b s + c <= 0, given c <= 0.
+  const auto largest = [](double a, double b, double c) {
+    if (a + b + c <= 0.0) return 1.0;
+    if (a <= 0.0) return b > 0.0 ? std::clamp(-c / b, 0.0, 1.0) : 1.0;
+    const double s = (-b + std::sqrt(std::max(b * b - 4.0 * a * c, 0.0))) / (2.0 * a);
+    return std::clamp(s, 0.0, 1.0);
+  };
+  std::vector<double> s_rest(sums.size(), 1.0), s_back(sums.size(), 1.0);
+  bool any = false;
+  for (std::size_t i = 0; i < sums.size(); ++i) {
+    const Sums& su = sums[i];
+    if (su.end <= su.start * (1.0 + 1e-14)) continue;
+    any = true;
+    if (su.inel <= su.start) {
+      s_rest[i] = largest(su.a_rest, su.b_rest, su.inel - su.start);
+    } else {
+      s_rest[i] = 0.0;
+      s_back[i] = largest(su.a_back, su.b_back, 0.0);
+    }
+  }
+  if (!any) return;
+  for (const EntityId e : bodies) {
+    const std::uint32_t i = island_[e];
+    if (s_rest[i] == 1.0 && s_back[i] == 1.0) continue;
+    const Vector vi = v_start_[e] + s_back[i] * (v_inelastic_[e] - v_start_[e]);
+    k.velocity[e] = vi + s_rest[i] * (k.velocity[e] - v_inelastic_[e]);
+    ++stats.energy_clamps;
+  }
+}
+
+void ContactSolver::solve_positions(Components& k, std::span<const EntityId> entities, Vector g,
+                                    const SolverSettings& s) {
+  // Touching pairs too (within the margin): they take no correction but link
+  // the support graph of the bottom-up pass down to the ground.
+  candidate_pairs(k, entities, 0.0, s.margin, pairs_);
+  contacts_.clear();
+  bool any_overlap = false;
+  for (const BodyPair& p : pairs_) {
+    const auto [axis, gap] = best_axis(k, p.c, p.b);
+    if (gap > s.margin) continue;
+    any_overlap = any_overlap || gap < -s.slop;
+    contacts_.push_back(Contact{p.c, p.b, axis, inverse_mass(k.mass[p.c]), inverse_mass(k.mass[p.b]), 0, 0, 0, 0, 0, true});
+  }
+  if (!any_overlap) return;
+
+  for (int it = 0; it < s.iterations; ++it) {
+    for (const Contact& ct : contacts_) {
+      const double depth = -gap_along(k, ct.c, ct.b, ct.axis) - s.slop;
+      if (!(depth > 0.0)) continue;
+      const Vector n = axis_normal[ct.axis];
+      const double w = ct.wc + ct.wb;
+      const double push = s.projection * depth;
+      k.position[ct.c] = k.position[ct.c] + (push * (ct.wc / w)) * n;
+      k.position[ct.b] = k.position[ct.b] - (push * (ct.wb / w)) * n;
+    }
+  }
+
+  if (s.shock_propagation && !Vector::is_zero(g)) {
+    for (const std::size_t i : bottom_up(k, contacts_, g)) {
+      const Contact& ct = contacts_[i];
+      const double depth = -gap_along(k, ct.c, ct.b, ct.axis) - s.slop;
+      if (!(depth > 0.0)) continue;
+      const Vector n = axis_normal[ct.axis];
+      if (support_sign(ct.axis, g) > 0) {
+        if (ct.wc > 0.0) k.position[ct.c] = k.position[ct.c] + depth * n;
+      } else {
+        if (ct.wb > 0.0) k.position[ct.b] = k.position[ct.b] - depth * n;
+      }
+    }
+  }
+}
+
+}  // namespace physics

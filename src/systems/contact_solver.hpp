@@ -1,0 +1,91 @@
+// The stable contact solver (Params::solver = Solver::stable).
+//
+// The course resolves each overlapping pair once per step, one after the
+// other. A body resting on the floor under gravity therefore sinks by g·dt²
+// every step and is pushed out again, a stack's lower blocks are pushed into
+// the floor by the ones above, and a heavy block on a light one drives it
+// through the floor: the one pass cannot carry a weight down to the ground.
+//
+// This solver, per substep of h ms:
+//  1. solve_velocities, before Move: contacts are the pairs whose boxes are
+//     closer than `margin` along their separating axis (speculative, so a
+//     resting body is caught before it sinks). Sequential impulses, each
+//     clamped so that the impulse accumulated on a contact never pulls
+//     (Catto's accumulated clamping), warm started from the previous
+//     substep's impulses of resting contacts. A real impact is first stopped
+//     (target normal velocity 0), then given e times the impulse that
+//     stopped it (Poisson's restitution, e = min of the pair as in the
+//     course): that never adds energy, even with simultaneous contacts. Gauss-Seidel converges
+//     slowly across mass ratios (a light block under a heavy one carries only
+//     its own mass's worth of impulse per iteration), so the iterations end
+//     with one pass of shock propagation (Guendelman, Bridson, Fedkiw 2003):
+//     contacts that carry weight (normal along gravity) are taken from the
+//     ground up, the lower body treated as immovable. It runs only on bodies
+//     that rest on a fixed one through such contacts; free bodies keep the
+//     plain, momentum-conserving impulses.
+//  2. solve_positions, after Move: what still overlaps by more than `slop` is
+//     projected apart (non-linear Gauss-Seidel on positions, shared in
+//     proportion to inverse masses, then the same bottom-up pass). Positions
+//     only: no velocity is added, so no energy is (unlike a Baumgarte bias).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <tuple>
+#include <vector>
+
+#include "component_defs.hpp"
+#include "systems/pairs.hpp"
+
+namespace physics {
+
+struct SolverSettings {
+  int iterations = 8;         // velocity and position iterations
+  double margin = 0.5;        // px: speculative contact distance
+  double slop = 0.01;         // px: overlap left alone (keeps resting contacts alive)
+  double projection = 0.8;    // share of the overlap beyond slop removed per position iteration
+  bool shock_propagation = true;
+  bool impacts = true;        // false with CCD on: impacts are left to it
+};
+
+struct SolverStats {
+  std::int64_t contacts = 0;       // contacts solved, summed over substeps
+  std::int64_t energy_clamps = 0;  // body velocities the energy guard scaled back
+};
+
+class ContactSolver {
+ public:
+  void solve_velocities(Components& k, std::span<const EntityId> entities, double h, Vector gravity,
+                        const SolverSettings& s);
+  void solve_positions(Components& k, std::span<const EntityId> entities, Vector gravity,
+                       const SolverSettings& s);
+
+  SolverStats stats;
+
+  struct Contact {
+    EntityId c, b;
+    int axis;          // 0: -x, 1: +x, 2: -y, 3: +y (the normal that moves c away from b)
+    double wc, wb;     // inverse masses
+    double target;     // lowest allowed (v_c - v_b)·n
+    double lambda;     // accumulated impulse
+    double lambda2;    // accumulated in the relaxation after the bounces
+    double restitution;  // of an impact: bounce impulse = restitution × lambda
+    double toi;          // of an impact found before touching: ms into the substep
+    bool resting;      // no restitution target: its impulse may warm start the next substep
+  };
+
+ private:
+  void guard_energy(Components& k);
+
+  std::vector<BodyPair> pairs_;
+  std::vector<Vector> v_start_, v_inelastic_;  // indexed by entity id
+  std::vector<EntityId> parent_;               // union-find of islands
+  std::vector<std::uint32_t> island_;
+  std::vector<double> toi_;                    // earliest impact time per body, indexed by entity id
+  std::vector<Contact> contacts_;
+  // Impulses of the previous substep's resting contacts: (c << 32 | b, axis,
+  // impulse), sorted.
+  std::vector<std::tuple<std::uint64_t, int, double>> warm_;
+};
+
+}  // namespace physics

@@ -1,0 +1,201 @@
+// The numerics options: swept collision (CCD), the stable contact solver, and
+// the course mode left as it was. The stiff/extreme matrix is test_stability.cpp.
+#include "game.hpp"
+#include "helpers.hpp"
+#include "numerics/report.hpp"
+#include "numerics/scenes.hpp"
+#include "utils/random.hpp"
+
+using namespace physics;
+using namespace physics::numerics;
+
+BOOST_AUTO_TEST_SUITE(numerics_ccd)
+
+BOOST_AUTO_TEST_CASE(candidate_pairs_are_the_all_pairs_ones_in_registration_order) {
+  World w = test::physics_world();
+  Game::init_walls(w);
+  Random rng(9);
+  for (int i = 0; i < 400; ++i) {
+    const auto b = Block::make(w, rng.uniform(0, 780), rng.uniform(0, 580), rng.uniform_int(1, 30),
+                               rng.uniform_int(1, 30), test::grey, rng.uniform(1, 5));
+    w.components.velocity[b.id] = {rng.uniform(-2, 2), rng.uniform(-2, 2)};
+  }
+  Block::make(w, 100, 100, 20, 20, test::grey, 1.0);  // two exactly touching boxes
+  Block::make(w, 120, 100, 20, 20, test::grey, 1.0);
+  for (const double h : {0.0, 16.0})
+    for (const double reach : {0.0, 0.5}) {
+      std::vector<BodyPair> fast, slow;
+      candidate_pairs(w.components, w.systems.collision->entities(), h, reach, fast);
+      brute_force_pairs(w.components, w.systems.collision->entities(), h, reach, slow);
+      BOOST_TEST_REQUIRE(fast.size() == slow.size());
+      BOOST_TEST(fast.size() > 100u);
+      for (std::size_t i = 0; i < fast.size(); ++i) {
+        BOOST_TEST(fast[i].c == slow[i].c);
+        BOOST_TEST(fast[i].b == slow[i].b);
+      }
+    }
+}
+
+BOOST_AUTO_TEST_CASE(time_of_impact_is_where_the_relative_motion_enters_the_minkowski_box) {
+  World w = test::physics_world();
+  const auto a = Block::make(w, 100, 100, 20, 20, test::grey, 1.0).id;
+  const auto wall = Block::make(w, 220, 50, 40, 200, test::grey, infinity).id;
+  w.components.velocity[a] = {2.0, 0.0};
+  const auto hit = Ccd::time_of_impact(w.components, a, wall, 0.0, 100.0);
+  BOOST_TEST_REQUIRE(hit.has_value());
+  BOOST_TEST(hit->t == 50.0);  // 100 px of gap at 2 px/ms
+  BOOST_TEST((hit->n == Vector{-1, 0}));
+  BOOST_TEST(!Ccd::time_of_impact(w.components, a, wall, 0.0, 49.0).has_value());
+  // Moving away, or sliding past above it: no impact.
+  w.components.velocity[a] = {-2.0, 0.0};
+  BOOST_TEST(!Ccd::time_of_impact(w.components, a, wall, 0.0, 1e9).has_value());
+  w.components.position[a] = {100, 0};
+  w.components.velocity[a] = {2.0, 0.0};
+  BOOST_TEST(!Ccd::time_of_impact(w.components, a, wall, 0.0, 1e9).has_value());
+}
+
+BOOST_AUTO_TEST_CASE(a_bullet_at_1000_px_per_ms_never_leaves_the_walls) {
+  for (const Solver solver : {Solver::course, Solver::stable}) {
+    Params p;
+    p.ccd = true;
+    p.solver = solver;
+    World w = test::physics_world(p);
+    Game::init_walls(w);
+    const auto b = Block::make(w, 400, 295, 10, 10, test::grey, 1.0).id;
+    w.components.velocity[b] = {1000.0, 3.0};
+    for (int f = 0; f < 120; ++f) {
+      w.step();
+      const Vector q = w.components.position[b];
+      BOOST_TEST_REQUIRE(q.x >= 40.0);
+      BOOST_TEST_REQUIRE(q.x + 10 <= 760.0);
+      BOOST_TEST_REQUIRE(q.y >= 40.0);
+      BOOST_TEST_REQUIRE(q.y + 10 <= 560.0);
+    }
+    BOOST_TEST(w.ccd.stats.impacts > 1000);  // ~ 16 wall hits per frame
+    BOOST_TEST(w.kinetic_energy() == 0.5 * (1000.0 * 1000.0 + 9.0));  // wall reversals are exact
+  }
+}
+
+BOOST_AUTO_TEST_CASE(without_gravity_ccd_matches_the_exact_reference) {
+  // Straight lines between impacts: CCD is event-driven simulation itself.
+  for (const Scenario& s : report_scenarios()) {
+    if (s.gravity.y != 0.0) continue;
+    for (const Mode& m : {Mode{"ccd", 1, true}, Mode{"stable+ccd", 1, true, Solver::stable}}) {
+      const Errors e = measure(s, m);
+      BOOST_TEST_INFO(s.name << " / " << m.name);
+      BOOST_TEST(e.pos_rms < 1e-9);
+      BOOST_TEST(e.tunnelled == 0);
+      BOOST_TEST(e.max_penetration < 1e-9);
+    }
+  }
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(numerics_stable_solver)
+
+BOOST_AUTO_TEST_CASE(a_block_on_the_floor_rests_exactly_still) {
+  Params p;
+  p.solver = Solver::stable;
+  p.gravity = {0, 0.001};
+  World w = test::physics_world(p);
+  Game::init_walls(w);
+  const auto b = Block::make(w, 300, 520, 40, 40, test::grey, 5.0, 0.5).id;
+  for (int f = 0; f < 600; ++f) w.step();
+  BOOST_TEST(w.components.position[b].y == 520.0);
+  BOOST_TEST(w.components.velocity[b].y == 0.0);
+  // The course mode sinks it by g·dt² every frame and pushes it back out.
+  World c = test::physics_world(Params{.gravity = {0, 0.001}});
+  Game::init_walls(c);
+  const auto cb = Block::make(c, 300, 520, 40, 40, test::grey, 5.0, 0.5).id;
+  c.step();
+  BOOST_TEST(c.components.velocity[cb].y != 0.0);
+}
+
+BOOST_AUTO_TEST_CASE(a_heavy_block_on_a_light_one_rests_at_ratio_1e12) {
+  Params p;
+  p.solver = Solver::stable;
+  p.gravity = {0, 0.001};
+  World w = test::physics_world(p);
+  Game::init_walls(w);
+  const auto light = Block::make(w, 390, 540, 20, 20, test::grey, 1.0).id;
+  const auto heavy = Block::make(w, 380, 500, 40, 40, test::grey, 1e12).id;
+  for (int f = 0; f < 600; ++f) {
+    w.step();
+    BOOST_TEST_REQUIRE(max_overlap(w) < 0.05);
+  }
+  BOOST_TEST(w.components.position[light].y == 540.0);
+  BOOST_TEST(std::abs(w.components.position[heavy].y - 500.0) < 0.05);
+}
+
+BOOST_AUTO_TEST_CASE(poisson_restitution_never_adds_energy_in_a_squeeze) {
+  // A light block between two heavy ones closing in: simultaneous contacts,
+  // unconverged iterations; the energy guard must hold.
+  Params p;
+  p.solver = Solver::stable;
+  p.iterations = 2;
+  World w = test::physics_world(p);
+  const auto a = Block::make(w, 100, 100, 40, 40, test::grey, 1e3).id;
+  Block::make(w, 141, 110, 20, 20, test::grey, 1.0);
+  const auto b = Block::make(w, 162, 100, 40, 40, test::grey, 1e3).id;
+  w.components.velocity[a] = {0.1, 0};
+  w.components.velocity[b] = {-0.1, 0};
+  const double E0 = w.kinetic_energy();
+  const Vector P0 = w.momentum();
+  for (int f = 0; f < 100; ++f) {
+    w.step();
+    BOOST_TEST_REQUIRE(w.kinetic_energy() <= E0 * (1 + 1e-12));
+  }
+  BOOST_TEST(std::abs(w.momentum().x - P0.x) < 1e-12 * 200);
+}
+
+BOOST_AUTO_TEST_CASE(a_bounce_keeps_e_squared_of_the_height) {
+  Params p;
+  p.solver = Solver::stable;
+  p.gravity = {0, 0.001};
+  p.substeps = 8;
+  World w = test::physics_world(p);
+  Game::init_walls(w);
+  const auto b = Block::make(w, 390, 140, 20, 20, test::grey, 1.0, 0.5).id;  // 400 px above the floor
+  double apex = 1e9;
+  bool bounced = false;
+  for (int f = 0; f < 120; ++f) {
+    w.step();
+    if (w.components.velocity[b].y < 0) bounced = true;
+    if (bounced) apex = std::min(apex, w.components.position[b].y);
+  }
+  BOOST_TEST_REQUIRE(bounced);
+  const double height = 540.0 - apex;
+  BOOST_TEST(std::abs(height - 0.25 * 400.0) < 5.0);  // h·e², to within the time step
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(numerics_course_mode)
+
+BOOST_AUTO_TEST_CASE(the_course_mode_never_runs_the_numerics_code) {
+  World w = test::physics_world();
+  Game::init_scene(w);
+  for (int f = 0; f < 600; ++f) w.step();
+  BOOST_TEST(w.ccd.stats.impacts == 0);
+  BOOST_TEST(w.contact_solver.stats.contacts == 0);
+  BOOST_TEST(w.systems.collision->contact_count() + 1 > 0u);
+}
+
+BOOST_AUTO_TEST_CASE(the_course_error_shrinks_with_dt_as_first_order) {
+  const Scenario projectile = report_scenarios().front();
+  BOOST_TEST_REQUIRE(projectile.name == "projectile");
+  double last = 1e300;
+  std::vector<double> err;
+  for (const double hz : {60.0, 120.0, 240.0, 480.0}) {
+    const double e = measure(projectile, Mode{"course", 1, false, Solver::course, 8, 1000.0 / hz}).pos_rms;
+    BOOST_TEST(e < last);
+    last = e;
+    err.push_back(e);
+  }
+  // Eight times smaller dt: between 5x and 16x smaller error (order ~1).
+  BOOST_TEST(err.front() / err.back() > 5.0);
+  BOOST_TEST(err.front() / err.back() < 16.0);
+}
+
+BOOST_AUTO_TEST_SUITE_END()

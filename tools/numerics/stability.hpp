@@ -1,0 +1,32 @@
+// The stiff and extreme cases of `make stability`, each with its pass
+// criterion. The same functions back tests/test_stability.cpp.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "numerics/scenes.hpp"
+
+namespace physics::numerics {
+
+struct Outcome {
+  bool pass = false;
+  std::string figure;  // the measured number(s) the criterion is judged on
+};
+
+struct StabilityCase {
+  std::string name;
+  std::string criterion;
+  bool slow = false;  // long: under the Boost label "slow"
+  std::function<Outcome(const Mode&)> run;
+};
+
+std::vector<StabilityCase> stability_cases();
+
+// The matrix cells expected to fail (case name, mode name): the modes not
+// meant to handle the case. Everything else is expected to pass; the tests
+// check both ways, so a change that fixes or breaks a cell shows.
+bool expected_to_fail(const std::string& case_name, const std::string& mode_name);
+
+}  // namespace physics::numerics
