@@ -8,8 +8,9 @@ using namespace physics;
 
 namespace {
 
-SoakResult soak_scene(const char* name, std::int64_t steps) {
-  const SceneSpec& spec = *find_builtin(name);
+SoakResult soak_scene(const char* name, std::int64_t steps, Solver solver = Solver::course) {
+  SceneSpec spec = *find_builtin(name);
+  spec.params.solver = solver;
   World w = make_world(spec, false, name);
   return soak(w, steps, 10'000, soak_limits(spec, w));
 }
@@ -29,6 +30,12 @@ BOOST_AUTO_TEST_CASE(stack_stays_finite_inside_and_bounded_for_1e5_steps) {
   const SoakResult r = soak_scene("stack", 100'000);
   BOOST_TEST(r.ok, r.failure);
   BOOST_TEST(r.steps == 100'000);
+}
+
+BOOST_AUTO_TEST_CASE(stack_with_the_stable_solver_never_gains_energy_for_1e5_steps) {
+  const SoakResult r = soak_scene("stack", 100'000, Solver::stable);
+  BOOST_TEST(r.ok, r.failure);
+  BOOST_TEST(r.energy_max <= r.energy_start + 1e-9 * std::abs(r.energy_start) + 15 * 0.001);
 }
 
 BOOST_AUTO_TEST_CASE(the_checks_catch_a_broken_state) {
