@@ -9,10 +9,17 @@
 #include <string>
 
 #include "builtin_scenes.hpp"
+#include "entities/block.hpp"
 
 namespace physics::Game {
 
-void init_walls(World& w, int width, int height) { add_walls(w, width, height); }
+void init_walls(World& w, int width, int height, double e) {
+  const int t = wall_thickness;
+  Block::make(w, 0, 0, width, t, wall_blue, infinity, e);                    // top
+  Block::make(w, 0, height - t, width, t, wall_blue, infinity, e);           // bottom
+  Block::make(w, 0, t, t, height - 2 * t, wall_black, infinity, e);          // left
+  Block::make(w, width - t, t, t, height - 2 * t, wall_black, infinity, e);  // right
+}
 
 void init_scene(World& w, std::uint64_t seed) {
   SceneSpec s = *find_builtin("many");

@@ -21,8 +21,8 @@ inline constexpr Color wall_black = physics::wall_black;  // vertical walls
 
 // Q1. Four walls of infinite mass on the edges of a width × height screen:
 // top and bottom blue and full width, left and right black and between them,
-// 40 px thick, not overlapping.
-void init_walls(World& w, int width = Game::width, int height = Game::height);
+// 40 px thick, not overlapping. Scenes with `walls: true` are built with it.
+void init_walls(World& w, int width = Game::width, int height = Game::height, double restitution = 1.0);
 
 // Q9, the built-in scene `many` (the default): the walls, the red block of
 // questions 3-4 (40×40, mass 10, initial force (0.25, 0.25)) and ten squares

@@ -1,5 +1,7 @@
 #include "scene.hpp"
 
+#include "game.hpp"
+
 #include <cmath>
 #include <sstream>
 
@@ -293,18 +295,10 @@ std::vector<Body> expand(const SceneSpec& s, const std::string& source) {
   return out;
 }
 
-void add_walls(World& w, int width, int height, double e) {
-  const int t = wall_thickness;
-  Block::make(w, 0, 0, width, t, wall_blue, infinity, e);                   // top
-  Block::make(w, 0, height - t, width, t, wall_blue, infinity, e);          // bottom
-  Block::make(w, 0, t, t, height - 2 * t, wall_black, infinity, e);         // left
-  Block::make(w, width - t, t, t, height - 2 * t, wall_black, infinity, e); // right
-}
-
 void populate(World& w, const SceneSpec& s, const std::string& source) {
   const std::vector<Body> bodies = expand(s, source);
   w.components.reserve(w.components.size() + bodies.size() + (s.walls ? 4 : 0));
-  if (s.walls) add_walls(w, s.width, s.height, s.restitution);
+  if (s.walls) Game::init_walls(w, s.width, s.height, s.restitution);
   for (const Body& b : bodies) {
     const auto e = Block::make(w, b.pos.x, b.pos.y, b.width, b.height, b.color, b.mass, b.restitution);
     w.components.velocity[e.id] = b.velocity;

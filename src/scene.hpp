@@ -170,10 +170,6 @@ std::vector<Body> expand(const SceneSpec& s, const std::string& source);
 // path (blocks[3], blocks[2] body 17, world.dt, ...).
 void validate(const SceneSpec& s, const std::string& source);
 
-// Q1: the four walls of infinite mass on the edges of width × height, 40 px
-// thick, top and bottom blue and full width, left and right black between them.
-void add_walls(World& w, int width, int height, double restitution = 1.0);
-
 // Adds the walls (if any) and the blocks to `w`, using w.params.dt to turn
 // impulses into initial forces. Throws SceneError if the scene is invalid.
 void populate(World& w, const SceneSpec& s, const std::string& source = "scene");

@@ -44,7 +44,7 @@ void expect_error(F&& f, std::initializer_list<std::string> parts) {
 // The question-9 scene as the foundation wrote it by hand (before scenes were
 // data): the reference the `many` scene must reproduce bit for bit.
 void reference_q9(World& w, std::uint64_t seed) {
-  add_walls(w, 800, 600);
+  Game::init_walls(w, 800, 600);
   const auto red = Block::make(w, 100, 100, 40, 40, Color{255, 0, 0, 255}, 10.0);
   w.components.sum_forces[red.id] = {0.25, 0.25};
   Random rng(seed);
