@@ -48,6 +48,11 @@ int main(int argc, char** argv) {
     }
     md << "\n";
   }
+  md << "\n## Why shock propagation\n\nDeepest sink (px) of a 40x40 block of mass `ratio` resting on a 20x20 block of "
+        "mass 1 on the floor, over 600 frames, stable solver with and without its bottom-up pass. Gauss-Seidel alone "
+        "carries the weight through the light block only at the light block's rate, so more iterations help little "
+        "beyond ratio 1e2.\n\n"
+     << shock_ablation();
   std::cout << fails << " failing cells, " << unexpected << " not as expected; wrote " << out_path << "\n";
   return 0;
 }

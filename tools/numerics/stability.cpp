@@ -337,6 +337,40 @@ std::vector<StabilityCase> stability_cases() {
   return cases;
 }
 
+std::string shock_ablation() {
+  std::string md =
+      "| iterations | shock propagation | ratio 1e1 | ratio 1e2 | ratio 1e3 | ratio 1e6 | ratio 1e12 |\n"
+      "|---|---|---|---|---|---|---|\n";
+  for (const int it : {8, 32, 128})
+    for (const bool shock : {false, true}) {
+      md += "| " + std::to_string(it) + " | " + (shock ? "on" : "off") + " |";
+      for (const double r : {1e1, 1e2, 1e3, 1e6, 1e12}) {
+        // One substep per frame of what World::step_numerics does, with the
+        // solver's settings at hand.
+        World w = make_world(Mode{"stable", 1, false, Solver::stable, it}, down);
+        walls(w);
+        block(w, 390, 540, 20, 20, 1.0);
+        block(w, 380, 500, 40, 40, r);
+        SolverSettings settings;
+        settings.iterations = it;
+        settings.shock_propagation = shock;
+        ContactSolver solver;
+        const double h = w.params.dt;
+        double sink = 0;
+        for (int f = 0; f < 600; ++f) {
+          w.systems.forces->update(w.components, h, w.params.gravity);
+          solver.solve_velocities(w.components, w.systems.collision->entities(), h, w.params.gravity, settings);
+          w.systems.move->update(w.components, h);
+          solver.solve_positions(w.components, w.systems.collision->entities(), w.params.gravity, settings);
+          sink = std::max(sink, max_overlap(w));
+        }
+        md += fmt(" %.3g px |", sink);
+      }
+      md += "\n";
+    }
+  return md;
+}
+
 bool expected_to_fail(const std::string& c, const std::string& m) {
   const auto is = [&](const char* prefix) { return c.rfind(prefix, 0) == 0; };
   if (m == "course")  // the sheet's one pass: what these options are for
