@@ -58,7 +58,7 @@ TEST_OBJ += $(REF_OBJ) $(NUM_OBJ)
 SDL_CFLAGS = $(shell pkg-config --cflags sdl2 SDL2_ttf)
 SDL_LIBS   = $(shell pkg-config --libs sdl2 SDL2_ttf)
 
-.PHONY: all run test deps clean check-no-sdl determinism memcheck soak fuzz report stability
+.PHONY: all run test deps clean check-no-sdl determinism memcheck soak fuzz report stability bench
 all: $(BUILD)/game $(BUILD)/tests
 
 deps:
@@ -160,6 +160,19 @@ fuzz: deps
 	  -fno-sanitize-recover=all $(CORE_SRC) fuzz/scene_fuzzer.cpp -o $(FUZZ_DIR)/scene_fuzzer
 	./$(FUZZ_DIR)/scene_fuzzer -max_total_time=$(FUZZ_SECONDS) -max_len=8192 -timeout=10 -rss_limit_mb=4096 \
 	  -artifact_prefix=$(FUZZ_DIR)/ -print_final_stats=1 $(FUZZ_DIR)/corpus
+
+# ---- performance (bench/RESULTS.md) ----
+# Our engine, Box2D 2.4.1 and Chipmunk 7.0.3 on the same scenes, in one run,
+# always an -O2 build without sanitizers. BENCH_ARGS="--sizes 1000,10000" etc.
+BENCH_SRC := $(wildcard bench/*.cpp)
+BENCH_OBJ := $(BENCH_SRC:%.cpp=$(BUILD)/obj/%.o)
+bench: deps
+	@$(MAKE) --no-print-directory PACKAGES="libbox2d-dev libchipmunk-dev" deps
+	@$(MAKE) --no-print-directory build/bench OPT=-O2 SANITIZE=
+	./build/bench $(BENCH_ARGS)
+
+$(BUILD)/bench: $(BENCH_OBJ) $(BUILD)/libphysics.a
+	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS) -lbox2d -lchipmunk -lpthread -lm
 
 clean:
 	rm -rf build

@@ -44,6 +44,10 @@ Aabb Aabb::around(Vector p, Rect r, double margin) {
           float_up((p.y + r.height) + margin)};
 }
 
+Aabb Aabb::outward(double x0, double y0, double x1, double y1) {
+  return {float_down(x0), float_down(y0), float_up(x1), float_up(y1)};
+}
+
 double Aabb::extent() const {
   return std::max(static_cast<double>(max_x) - min_x, static_cast<double>(max_y) - min_y);
 }

@@ -34,6 +34,8 @@ struct Aabb {
 
   // The box of a body at p of size r, grown by `margin` px on every side.
   static Aabb around(Vector p, Rect r, double margin);
+  // The smallest float box containing [x0, x1] x [y0, y1].
+  static Aabb outward(double x0, double y0, double x1, double y1);
   // Whether the body at p of size r is still inside this box, computed as
   // the body's own corners p and p + r are in double: exactly the values that
   // Collision::resolve compares.

@@ -76,7 +76,7 @@ std::optional<Impact> Ccd::time_of_impact(const Components& k, EntityId c, Entit
 void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h, Vector gravity) {
   const std::size_t count = entities.size();
   if (count < 2) return;
-  candidate_pairs(k, entities, h, 0.0, pairs_);
+  pair_finder_.find(k, entities, h, 0.0, pairs_);
   if (pairs_.empty()) return;
 
   // Registration index of each entity, and a version per body: an event

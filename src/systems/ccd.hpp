@@ -58,6 +58,7 @@ class Ccd {
 
  private:
   std::vector<BodyPair> pairs_;
+  PairFinder pair_finder_;
 };
 
 }  // namespace physics

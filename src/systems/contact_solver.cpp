@@ -101,7 +101,7 @@ std::vector<std::size_t> bottom_up(const Components& k, const Contacts& contacts
 
 void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> entities, double h, Vector g,
                                      const SolverSettings& s) {
-  candidate_pairs(k, entities, h, s.margin, pairs_);
+  pair_finder_.find(k, entities, h, s.margin, pairs_);
   contacts_.clear();
   // Slower than the speed gravity gives in two substeps: a resting contact,
   // not an impact, so no bounce (otherwise a block on the floor would hop).
@@ -341,7 +341,7 @@ void ContactSolver::solve_positions(Components& k, std::span<const EntityId> ent
                                     const SolverSettings& s) {
   // Touching pairs too (within the margin): they take no correction but link
   // the support graph of the bottom-up pass down to the ground.
-  candidate_pairs(k, entities, 0.0, s.margin, pairs_);
+  pair_finder_.find(k, entities, 0.0, s.margin, pairs_);
   contacts_.clear();
   bool any_overlap = false;
   for (const BodyPair& p : pairs_) {

@@ -78,6 +78,7 @@ class ContactSolver {
   void guard_energy(Components& k);
 
   std::vector<BodyPair> pairs_;
+  PairFinder pair_finder_;
   std::vector<Vector> v_start_, v_inelastic_;  // indexed by entity id
   std::vector<EntityId> parent_;               // union-find of islands
   std::vector<std::uint32_t> island_;

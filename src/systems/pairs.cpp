@@ -2,18 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <utility>
 
 namespace physics {
 
 namespace {
-struct Bounds {
+struct Swept {
   double x0, y0, x1, y1;
 };
 
 // The box swept over [0, h] at constant velocity, grown by `reach`.
-Bounds swept(const Components& k, EntityId e, double h, double reach) {
+Swept swept(const Components& k, EntityId e, double h, double reach) {
   const Vector p = k.position[e];
   const Vector q = p + h * k.velocity[e];
   const double w = k.box[e].width, hh = k.box[e].height;
@@ -22,40 +20,36 @@ Bounds swept(const Components& k, EntityId e, double h, double reach) {
 }
 }  // namespace
 
-void candidate_pairs(const Components& k, std::span<const EntityId> entities, double h, double reach,
-                     std::vector<BodyPair>& out) {
+void PairFinder::find(const Components& k, std::span<const EntityId> entities, double h, double reach,
+                      std::vector<BodyPair>& out) {
   out.clear();
   const std::size_t n = entities.size();
-  std::vector<Bounds> bounds(n);
-  for (std::size_t i = 0; i < n; ++i) bounds[i] = swept(k, entities[i], h, reach);
-  // Sort the boxes by their left edge and only look at the ones that start
-  // before a box ends (sweep and prune on x): the same pairs as the all-pairs
-  // loop (brute_force_pairs), which the 10 000-body cases cannot afford.
-  // A NaN bound sorts nowhere in particular and fails every comparison, so a
-  // lost body simply has no pair.
-  std::vector<std::uint32_t> order(n);
-  for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<std::uint32_t>(i);
-  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-    if (bounds[a].x0 != bounds[b].x0) return bounds[a].x0 < bounds[b].x0;
-    return a < b;
-  });
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> found;
-  for (std::size_t oi = 0; oi < n; ++oi) {
-    const std::uint32_t i = order[oi];
-    const Bounds bi = bounds[i];
-    const bool i_fixed = !std::isfinite(k.mass[entities[i]]);
-    for (std::size_t oj = oi + 1; oj < n && bounds[order[oj]].x0 <= bi.x1; ++oj) {
-      const std::uint32_t j = order[oj];
-      const Bounds bj = bounds[j];
-      if (i_fixed && !std::isfinite(k.mass[entities[j]])) continue;  // two walls never collide
-      // Closed test: touching boxes are candidates (resting contact).
-      if (bj.x1 >= bi.x0 && bi.y0 <= bj.y1 && bj.y0 <= bi.y1) found.emplace_back(std::min(i, j), std::max(i, j));
-    }
+  bounds_.resize(n);
+  boxes_.resize(n);
+  fixed_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Swept s = swept(k, entities[i], h, reach);
+    bounds_[i] = {s.x0, s.y0, s.x1, s.y1};
+    // Rounded outwards to float: the grid's boxes contain the exact ones, so
+    // it finds a superset of the pairs, which the exact test below trims.
+    boxes_[i] = Aabb::outward(s.x0, s.y0, s.x1, s.y1);
+    fixed_[i] = !std::isfinite(k.mass[entities[i]]);
   }
-  // Registration order, as the all-pairs loop gives them.
-  std::sort(found.begin(), found.end());
-  out.reserve(found.size());
-  for (const auto& [i, j] : found) out.push_back({entities[i], entities[j]});
+  grid_.build(boxes_, fixed_);
+  out.reserve(grid_.pairs().size());
+  for (const PairKey key : grid_.pairs()) {
+    const std::uint32_t i = pair_first(key), j = pair_second(key);
+    const Bounds& a = bounds_[i];
+    const Bounds& b = bounds_[j];
+    // Closed test: touching boxes are candidates (resting contact). A NaN
+    // bound fails it, so a lost body has no pair.
+    if (a.x0 <= b.x1 && b.x0 <= a.x1 && a.y0 <= b.y1 && b.y0 <= a.y1) out.push_back({entities[i], entities[j]});
+  }
+}
+
+void candidate_pairs(const Components& k, std::span<const EntityId> entities, double h, double reach,
+                     std::vector<BodyPair>& out) {
+  PairFinder().find(k, entities, h, reach, out);
 }
 
 void brute_force_pairs(const Components& k, std::span<const EntityId> entities, double h, double reach,
@@ -63,10 +57,10 @@ void brute_force_pairs(const Components& k, std::span<const EntityId> entities, 
   out.clear();
   const std::size_t n = entities.size();
   for (std::size_t i = 0; i < n; ++i) {
-    const Bounds bi = swept(k, entities[i], h, reach);
+    const Swept bi = swept(k, entities[i], h, reach);
     for (std::size_t j = i + 1; j < n; ++j) {
       if (!std::isfinite(k.mass[entities[i]]) && !std::isfinite(k.mass[entities[j]])) continue;
-      const Bounds bj = swept(k, entities[j], h, reach);
+      const Swept bj = swept(k, entities[j], h, reach);
       if (bi.x0 <= bj.x1 && bj.x0 <= bi.x1 && bi.y0 <= bj.y1 && bj.y0 <= bi.y1) out.push_back({entities[i], entities[j]});
     }
   }

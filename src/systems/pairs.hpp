@@ -1,20 +1,20 @@
 // Candidate pairs for the numerics options (CCD, stable solver).
 //
-// This is the one place where the numerics code finds the pairs it looks at:
-// every pair (i < j, in the Collision system's registration order) except two
+// Every pair (i < j, in the Collision system's registration order) except two
 // infinite masses, whose boxes, each grown by `reach` (px) on every side plus
 // the distance it travels in `h` ms at its current velocity, overlap (touching
-// counts). It is a sort-and-sweep on x, kept here so that the project's
-// broadphase can replace the body of candidate_pairs() without touching its
-// callers (Ccd, ContactSolver), as long as it returns a superset of these pairs
-// in registration order. brute_force_pairs() is the all-pairs definition,
-// for the tests.
+// counts). They come from the same uniform grid as Collision's own pairs
+// (systems/broadphase.hpp), then each is checked again on the exact double
+// boxes, so the list is exactly brute_force_pairs()'s, the all-pairs
+// definition kept for the tests.
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
 #include "component_defs.hpp"
+#include "systems/broadphase.hpp"
 
 namespace physics {
 
@@ -22,6 +22,24 @@ struct BodyPair {
   EntityId c, b;  // c registered before b
 };
 
+// Holds the grid and its scratch arrays between calls, so that a solver
+// calling it every substep allocates nothing once warmed up.
+class PairFinder {
+ public:
+  void find(const Components& k, std::span<const EntityId> entities, double h, double reach,
+            std::vector<BodyPair>& out);
+
+ private:
+  struct Bounds {
+    double x0, y0, x1, y1;
+  };
+  std::vector<Bounds> bounds_;
+  std::vector<Aabb> boxes_;
+  std::vector<std::uint8_t> fixed_;
+  UniformGrid grid_;
+};
+
+// One-off versions (a fresh PairFinder each call).
 void candidate_pairs(const Components& k, std::span<const EntityId> entities, double h, double reach,
                      std::vector<BodyPair>& out);
 void brute_force_pairs(const Components& k, std::span<const EntityId> entities, double h, double reach,

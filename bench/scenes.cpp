@@ -1,0 +1,105 @@
+#include <algorithm>
+#include <cmath>
+
+#include "bench.hpp"
+
+namespace bench {
+
+namespace {
+
+// splitmix64: a fixed generator, so every engine and every run sees the same
+// scene whatever the standard library.
+struct Random {
+  std::uint64_t state;
+  std::uint64_t next() {
+    std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+  }
+  double uniform(double lo, double hi) { return lo + (hi - lo) * static_cast<double>(next() >> 11) * 0x1p-53; }
+};
+
+// Four walls 1 m thick around [0, w] x [0, h], overlapping at the corners.
+void add_walls(Scene& s) {
+  const double w = s.width, h = s.height;
+  s.bodies.push_back({w / 2, -0.5, w / 2 + 1, 0.5, 0, 0, true});     // floor
+  s.bodies.push_back({w / 2, h + 0.5, w / 2 + 1, 0.5, 0, 0, true});  // ceiling
+  s.bodies.push_back({-0.5, h / 2, 0.5, h / 2 + 1, 0, 0, true});     // left
+  s.bodies.push_back({w + 0.5, h / 2, 0.5, h / 2 + 1, 0, 0, true});  // right
+}
+
+}  // namespace
+
+std::size_t Scene::dynamic_count() const {
+  return static_cast<std::size_t>(std::count_if(bodies.begin(), bodies.end(), [](const Body& b) { return !b.fixed; }));
+}
+
+Scene make_gas(std::size_t n, std::uint64_t seed) {
+  Scene s;
+  s.name = "gas";
+  // Area fraction 0.10: n m² of blocks in 10 n m² of box (rounded up to whole
+  // metres, so that our engine's integer pixel sizes are exact).
+  const double side = std::ceil(std::sqrt(10.0 * static_cast<double>(n)));
+  s.width = s.height = side;
+  s.gravity = 0;
+  s.restitution = 1.0;
+  add_walls(s);
+  // One body per cell of a k x k grid, jittered inside its cell: cells are
+  // >= sqrt(10) m wide, so jittered neighbours never overlap.
+  const auto k = static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(n))));
+  const double cell = side / static_cast<double>(k);
+  const double jitter = (cell - 1.0) / 2.0 - 0.05;
+  Random rng{seed};
+  for (std::size_t i = 0; i < n; ++i) {
+    const double cx = (static_cast<double>(i % k) + 0.5) * cell + rng.uniform(-jitter, jitter);
+    const double cy = (static_cast<double>(i / k) + 0.5) * cell + rng.uniform(-jitter, jitter);
+    const double vx = rng.uniform(-5.0, 5.0), vy = rng.uniform(-5.0, 5.0);
+    s.bodies.push_back({cx, cy, 0.5, 0.5, vx, vy, false});
+  }
+  return s;
+}
+
+Scene make_rain(std::size_t n) {
+  Scene s;
+  s.name = "rain";
+  // k columns 2 m apart fill a 2k x 2k container from the top: n / (2k)² = 0.25.
+  const auto k = static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(n))));
+  s.width = s.height = 2.0 * static_cast<double>(k);
+  s.gravity = 10.0;
+  s.restitution = 0.5;
+  s.resting = true;
+  add_walls(s);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t row = i / k, col = i % k;
+    // Odd rows shifted by half a block: the pile is a brick wall, not columns.
+    const double shift = row % 2 ? 0.25 : -0.25;
+    const double cx = 1.0 + 2.0 * static_cast<double>(col) + shift;
+    const double cy = s.height - 1.0 - 2.0 * static_cast<double>(row);
+    s.bodies.push_back({cx, cy, 0.5, 0.5, 0, 0, false});
+  }
+  return s;
+}
+
+Scene make_pyramid(std::size_t base) {
+  Scene s;
+  s.name = "pyramid";
+  s.width = static_cast<double>(base) + 20.0;
+  s.height = static_cast<double>(base) + 10.0;
+  s.gravity = 10.0;
+  s.restitution = 0.0;
+  s.resting = true;
+  add_walls(s);
+  // Box2D's large_pyramid: row i holds base - i squares, each resting on two
+  // of the row below, starting exactly in contact.
+  const double x0 = s.width / 2 - 0.5 * static_cast<double>(base);
+  for (std::size_t i = 0; i < base; ++i)
+    for (std::size_t j = i; j < base; ++j) {
+      const double cx = x0 + 0.5 * static_cast<double>(i + 1) + static_cast<double>(j - i);
+      const double cy = 0.5 + static_cast<double>(i);
+      s.bodies.push_back({cx, cy, 0.5, 0.5, 0, 0, false});
+    }
+  return s;
+}
+
+}  // namespace bench
