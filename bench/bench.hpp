@@ -55,7 +55,9 @@ class Engine {
 
 // Each adapter sets every body's mass to 1 (fixed: static), friction 0,
 // fixed rotation, sleeping off, and keeps the engine's default iterations.
-std::unique_ptr<Engine> make_ours(const Scene& s);
+// Ours runs the course's solver on scenes without resting contact and the
+// stable solver on the others, unless `course` forces the course's solver.
+std::unique_ptr<Engine> make_ours(const Scene& s, bool course = false);
 std::unique_ptr<Engine> make_box2d(const Scene& s);
 std::unique_ptr<Engine> make_chipmunk(const Scene& s);
 

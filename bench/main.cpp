@@ -34,6 +34,7 @@ struct Options {
   std::vector<std::string> engines{"ours", "box2d", "chipmunk"};
   int steps = 600, warmup = 60;
   std::string out = "bench/RESULTS.md";
+  bool compare = true;  // the broadphase comparison
 };
 
 struct Quality {
@@ -96,9 +97,10 @@ Quality measure(const Scene& s, const std::vector<Body>& end) {
 
 std::unique_ptr<bench::Engine> make_engine(const std::string& engine, const Scene& s) {
   if (engine == "ours") return bench::make_ours(s);
+  if (engine == "ours-course") return bench::make_ours(s, true);
   if (engine == "box2d") return bench::make_box2d(s);
   if (engine == "chipmunk") return bench::make_chipmunk(s);
-  throw std::invalid_argument("unknown engine '" + engine + "' (ours, box2d, chipmunk)");
+  throw std::invalid_argument("unknown engine '" + engine + "' (ours, ours-course, box2d, chipmunk)");
 }
 
 Scene make_scene(const std::string& name, std::size_t n) {
@@ -166,7 +168,8 @@ std::vector<std::string> split(const std::string& s) {
 
 const char* usage =
     "usage: bench [--scenes gas,rain,pyramid] [--sizes 1000,10000,100000] [--engines ours,box2d,chipmunk]\n"
-    "             [--steps 600] [--warmup 60] [--out bench/RESULTS.md]\n";
+    "             [--steps 600] [--warmup 60] [--out bench/RESULTS.md]\n"
+    "             [--compare 0|1]   (engines also: ours-course, our course solver on every scene)\n";
 
 Options parse(int argc, char** argv) {
   Options o;
@@ -186,6 +189,7 @@ Options parse(int argc, char** argv) {
     } else if (a == "--steps") o.steps = std::stoi(v);
     else if (a == "--warmup") o.warmup = std::stoi(v);
     else if (a == "--out") o.out = v;
+    else if (a == "--compare") o.compare = v != "0";
     else throw std::invalid_argument("unknown option " + a);
   }
   if (o.steps <= o.warmup || o.warmup < 0) throw std::invalid_argument("--steps must exceed --warmup >= 0");
@@ -254,7 +258,7 @@ int main(int argc, char** argv) try {
   }
 
   // Grid against sort-and-sweep, fed the same boxes.
-  const std::string broadphase = bench::compare_broadphases(o.sizes);
+  const std::string broadphase = o.compare ? bench::compare_broadphases(o.sizes) : "";
   std::cout << broadphase;
 
   std::ofstream md(o.out);

@@ -15,8 +15,7 @@ constexpr Vector axis_normal[4] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};
 
 // Signed distance between the boxes of c and b along an axis (negative:
 // overlap), from their Minkowski difference s = b ⊖ c.
-double gap_along(const Components& k, EntityId c, EntityId b, int axis) {
-  const auto [s, size] = Rect::mdiff(k.position[c], k.box[c], k.position[b], k.box[b]);
+double gap_of(Vector s, Rect size, int axis) {
   switch (axis) {
     case 0: return s.x;
     case 1: return -(s.x + size.width);
@@ -25,13 +24,19 @@ double gap_along(const Components& k, EntityId c, EntityId b, int axis) {
   }
 }
 
+double gap_along(const Components& k, EntityId c, EntityId b, int axis) {
+  const auto [s, size] = Rect::mdiff(k.position[c], k.box[c], k.position[b], k.box[b]);
+  return gap_of(s, size, axis);
+}
+
 // The separating axis with the largest gap; for overlapping boxes that is the
 // shortest way out, with Collision::penetration's tie order (-x, +x, -y, +y).
 std::pair<int, double> best_axis(const Components& k, EntityId c, EntityId b) {
+  const auto [s, size] = Rect::mdiff(k.position[c], k.box[c], k.position[b], k.box[b]);
   int best = 0;
-  double g = gap_along(k, c, b, 0);
+  double g = gap_of(s, size, 0);
   for (int a = 1; a < 4; ++a) {
-    const double ga = gap_along(k, c, b, a);
+    const double ga = gap_of(s, size, a);
     if (ga > g) best = a, g = ga;
   }
   return {best, g};
@@ -55,46 +60,67 @@ int support_sign(int axis, Vector g) {
 // body of depth d is at d + 1; bodies resting on nothing fixed get `none`.
 constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
 
+// Breadth-first from the fixed bodies along the weight-bearing contacts
+// (lower -> upper): each body gets the length of its shortest support chain.
+// O(bodies + contacts), where relaxing every contact until nothing changes
+// costs contacts × stack height.
 template <class Contacts>
 std::vector<std::uint32_t> support_depths(const Components& k, const Contacts& contacts, Vector g) {
   std::vector<std::uint32_t> depth(k.size(), none);
+  // The upper bodies of each lower one, as a compressed adjacency list.
+  std::vector<std::uint32_t> start(k.size() + 1, 0), upper_of;
+  std::vector<EntityId> queue;
+  const auto ends = [&](const auto& ct, EntityId& lower, EntityId& upper) {
+    const int sign = support_sign(ct.axis, g);
+    if (sign == 0) return false;
+    lower = sign > 0 ? ct.b : ct.c, upper = sign > 0 ? ct.c : ct.b;
+    return std::isfinite(k.mass[upper]);  // a fixed body's depth stays 0
+  };
   for (const auto& ct : contacts) {
-    if (!std::isfinite(k.mass[ct.c])) depth[ct.c] = 0;
-    if (!std::isfinite(k.mass[ct.b])) depth[ct.b] = 0;
+    EntityId lower, upper;
+    if (ends(ct, lower, upper)) ++start[lower + 1];
   }
-  // Bellman-Ford style relaxation; stacks are shallow next to the contact count.
-  for (bool changed = true; changed;) {
-    changed = false;
-    for (const auto& ct : contacts) {
-      const int sign = support_sign(ct.axis, g);
-      if (sign == 0) continue;
-      const EntityId lower = sign > 0 ? ct.b : ct.c, upper = sign > 0 ? ct.c : ct.b;
-      if (depth[lower] == none || !std::isfinite(k.mass[upper])) continue;
-      if (depth[lower] + 1 < depth[upper]) depth[upper] = depth[lower] + 1, changed = true;
+  for (std::size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
+  upper_of.resize(start.back());
+  std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+  for (const auto& ct : contacts) {
+    EntityId lower, upper;
+    if (ends(ct, lower, upper)) upper_of[fill[lower]++] = upper;
+  }
+  for (const auto& ct : contacts)
+    for (const EntityId e : {ct.c, ct.b})
+      if (!std::isfinite(k.mass[e]) && depth[e] == none) depth[e] = 0, queue.push_back(e);
+  for (std::size_t q = 0; q < queue.size(); ++q) {
+    const EntityId lower = queue[q];
+    for (std::uint32_t a = start[lower]; a < start[lower + 1]; ++a) {
+      const EntityId upper = upper_of[a];
+      if (depth[upper] == none) depth[upper] = depth[lower] + 1, queue.push_back(upper);
     }
   }
   return depth;
 }
 
-// Weight-bearing contacts whose lower body rests on the ground, lowest first.
+// Weight-bearing contacts whose lower body rests on the ground, lowest first
+// (contacts of equal depth in their given order: a stable counting sort).
 template <class Contacts>
 std::vector<std::size_t> bottom_up(const Components& k, const Contacts& contacts, Vector g) {
   const auto depth = support_depths(k, contacts, g);
   std::vector<std::size_t> order;
+  std::vector<std::uint32_t> level;  // depth of each listed contact's lower body
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const int sign = support_sign(contacts[i].axis, g);
     if (sign == 0) continue;
     const EntityId lower = sign > 0 ? contacts[i].b : contacts[i].c;
     const EntityId upper = sign > 0 ? contacts[i].c : contacts[i].b;
-    if (depth[lower] != none && depth[lower] < depth[upper]) order.push_back(i);
+    if (depth[lower] != none && depth[lower] < depth[upper]) order.push_back(i), level.push_back(depth[lower]);
   }
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    const auto lower = [&](std::size_t i) {
-      return support_sign(contacts[i].axis, g) > 0 ? contacts[i].b : contacts[i].c;
-    };
-    return depth[lower(a)] < depth[lower(b)];
-  });
-  return order;
+  std::uint32_t levels = 0;
+  for (const std::uint32_t l : level) levels = std::max(levels, l + 1);
+  std::vector<std::size_t> first(levels + 1, 0), sorted(order.size());
+  for (const std::uint32_t l : level) ++first[l + 1];
+  for (std::size_t l = 1; l <= levels; ++l) first[l] += first[l - 1];
+  for (std::size_t i = 0; i < order.size(); ++i) sorted[first[level[i]]++] = order[i];
+  return sorted;
 }
 
 }  // namespace
@@ -273,28 +299,27 @@ void ContactSolver::guard_energy(Components& k) {
   struct Sums {
     double start = 0, inel = 0, end = 0, b_rest = 0, a_rest = 0, b_back = 0, a_back = 0;
   };
-  std::vector<std::pair<EntityId, Sums>> islands;  // few per substep: linear search is fine for small, map otherwise
+  // The finite bodies of the contacts, in increasing id order (the order
+  // the sums below are taken in), found by marking: no sort.
   std::vector<EntityId> bodies;
+  seen_.assign(n, 0);
   for (const Contact& ct : contacts_) {
-    if (ct.wc > 0.0) bodies.push_back(ct.c);
-    if (ct.wb > 0.0) bodies.push_back(ct.b);
+    if (ct.wc > 0.0) seen_[ct.c] = 1;
+    if (ct.wb > 0.0) seen_[ct.b] = 1;
   }
-  std::sort(bodies.begin(), bodies.end());
-  bodies.erase(std::unique(bodies.begin(), bodies.end()), bodies.end());
+  for (EntityId e = 0; e < n; ++e)
+    if (seen_[e]) bodies.push_back(e);
+  // One Sums per island, numbered as their roots are first met.
   island_.resize(n);
+  root_index_.assign(n, none);
   std::vector<Sums> sums;
-  std::vector<EntityId> roots;
   for (const EntityId e : bodies) {
     const EntityId r = find(e);
-    const auto it = std::lower_bound(roots.begin(), roots.end(), r);
-    if (it == roots.end() || *it != r) {
-      sums.insert(sums.begin() + (it - roots.begin()), Sums{});
-      roots.insert(it, r);
-    }
+    if (root_index_[r] == none) root_index_[r] = static_cast<std::uint32_t>(sums.size()), sums.emplace_back();
   }
   for (const EntityId e : bodies) {
-    const std::size_t i = static_cast<std::size_t>(std::lower_bound(roots.begin(), roots.end(), find(e)) - roots.begin());
-    island_[e] = static_cast<std::uint32_t>(i);
+    const std::uint32_t i = root_index_[find(e)];
+    island_[e] = i;
     const double m = k.mass[e];
     const Vector v0 = v_start_[e], vi = v_inelastic_[e], v1 = k.velocity[e];
     const Vector rest = v1 - vi, back = vi - v0;

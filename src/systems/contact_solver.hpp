@@ -82,6 +82,8 @@ class ContactSolver {
   std::vector<Vector> v_start_, v_inelastic_;  // indexed by entity id
   std::vector<EntityId> parent_;               // union-find of islands
   std::vector<std::uint32_t> island_;
+  std::vector<std::uint8_t> seen_;             // guard_energy: bodies of the contacts
+  std::vector<std::uint32_t> root_index_;      // guard_energy: island of each root
   std::vector<double> toi_;                    // earliest impact time per body, indexed by entity id
   std::vector<Contact> contacts_;
   // Impulses of the previous substep's resting contacts: (c << 32 | b, axis,
