@@ -1,6 +1,8 @@
 #include "systems/broadphase.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -18,9 +20,13 @@ float float_down(double x) {
   if (x != x) return std::numeric_limits<float>::quiet_NaN();
   if (x < -static_cast<double>(float_max)) return -float_inf;
   if (x > static_cast<double>(float_max)) return float_max;
-  float f = static_cast<float>(x);
-  if (static_cast<double>(f) > x) f = std::nextafter(f, -float_inf);
-  return f;
+  const float f = static_cast<float>(x);
+  if (!(static_cast<double>(f) > x)) return f;
+  // The next float down, by its bits (what std::nextafter(f, -inf) gives,
+  // without the library call: this runs for every box every pass).
+  if (f == 0.0f) return -std::numeric_limits<float>::denorm_min();
+  const auto bits = std::bit_cast<std::uint32_t>(f);
+  return std::bit_cast<float>(f > 0.0f ? bits - 1 : bits + 1);
 }
 
 // The smallest float >= x.
