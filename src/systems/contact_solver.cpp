@@ -182,10 +182,24 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
 
   // Warm start: a resting contact that was there last substep starts with the
   // impulse it ended with (a stack's weight is then carried from the start).
+  // Contacts mostly come in the order of warm_ (pairs in registration
+  // order, ids mostly registered in increasing order), so each search starts
+  // where the last one ended when it can: a merge, not a binary search from
+  // scratch per contact.
+  auto from = warm_.begin();
   for (Contact& ct : contacts_) {
     if (!ct.resting) continue;
     const auto kk = key(ct.c, ct.b);
-    const auto it = std::lower_bound(warm_.begin(), warm_.end(), std::make_tuple(kk, ct.axis, -infinity));
+    const auto probe = std::make_tuple(kk, ct.axis, -infinity);
+    if (from != warm_.begin() && !(*std::prev(from) < probe)) from = warm_.begin();
+    // Galloping: the answer is usually a step or two ahead.
+    auto hi = from;
+    for (std::ptrdiff_t step = 1; hi != warm_.end() && *hi < probe; step *= 2) {
+      from = std::next(hi);
+      hi = step < warm_.end() - hi ? hi + step : warm_.end();
+    }
+    const auto it = std::lower_bound(from, hi, probe);
+    from = it;
     if (it != warm_.end() && std::get<0>(*it) == kk && std::get<1>(*it) == ct.axis) {
       ct.lambda = std::get<2>(*it);
       apply(ct, ct.lambda);
@@ -282,7 +296,7 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
 
   for (const Contact& ct : contacts_)
     if (ct.resting && ct.lambda + ct.lambda2 > 0.0) next_warm.emplace_back(key(ct.c, ct.b), ct.axis, ct.lambda + ct.lambda2);
-  std::sort(next_warm.begin(), next_warm.end());
+  if (!std::is_sorted(next_warm.begin(), next_warm.end())) std::sort(next_warm.begin(), next_warm.end());
   warm_ = std::move(next_warm);
 }
 
@@ -375,7 +389,7 @@ void ContactSolver::solve_positions(Components& k, std::span<const EntityId> ent
                                     const SolverSettings& s) {
   // Touching pairs too (within the margin): they take no correction but link
   // the support graph of the bottom-up pass down to the ground.
-  pair_finder_.find(k, entities, 0.0, s.margin, pairs_);
+  pair_finder_.find_again(k, entities, s.margin, pairs_);
   contacts_.clear();
   bool any_overlap = false;
   for (const BodyPair& p : pairs_) {

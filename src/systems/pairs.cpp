@@ -36,6 +36,7 @@ void PairFinder::find(const Components& k, std::span<const EntityId> entities, d
     fixed_[i] = !std::isfinite(k.mass[entities[i]]);
   }
   grid_.build(boxes_, fixed_);
+  entities_.assign(entities.begin(), entities.end());
   out.reserve(grid_.pairs().size());
   for (const PairKey key : grid_.pairs()) {
     const std::uint32_t i = pair_first(key), j = pair_second(key);
@@ -43,6 +44,29 @@ void PairFinder::find(const Components& k, std::span<const EntityId> entities, d
     const Bounds& b = bounds_[j];
     // Closed test: touching boxes are candidates (resting contact). A NaN
     // bound fails it, so a lost body has no pair.
+    if (a.x0 <= b.x1 && b.x0 <= a.x1 && a.y0 <= b.y1 && b.y0 <= a.y1) out.push_back({entities[i], entities[j]});
+  }
+}
+
+void PairFinder::find_again(const Components& k, std::span<const EntityId> entities, double reach,
+                            std::vector<BodyPair>& out) {
+  const std::size_t n = entities.size();
+  bool inside = n == entities_.size() && std::equal(entities.begin(), entities.end(), entities_.begin());
+  current_.resize(n);
+  for (std::size_t i = 0; inside && i < n; ++i) {
+    const Swept s = swept(k, entities[i], 0.0, reach);
+    const Bounds& old = bounds_[i];
+    current_[i] = {s.x0, s.y0, s.x1, s.y1};
+    // (A NaN fails the test: a fresh find, which handles it.)
+    inside = old.x0 <= s.x0 && old.y0 <= s.y0 && s.x1 <= old.x1 && s.y1 <= old.y1 &&
+             fixed_[i] == !std::isfinite(k.mass[entities[i]]);
+  }
+  if (!inside) return find(k, entities, 0.0, reach, out);
+  out.clear();
+  for (const PairKey key : grid_.pairs()) {
+    const std::uint32_t i = pair_first(key), j = pair_second(key);
+    const Bounds& a = current_[i];
+    const Bounds& b = current_[j];
     if (a.x0 <= b.x1 && b.x0 <= a.x1 && a.y0 <= b.y1 && b.y0 <= a.y1) out.push_back({entities[i], entities[j]});
   }
 }

@@ -29,11 +29,22 @@ class PairFinder {
   void find(const Components& k, std::span<const EntityId> entities, double h, double reach,
             std::vector<BodyPair>& out);
 
+  // find(k, entities, 0, reach, out), the same pairs, but when every body's
+  // box grown by `reach` still lies inside the box it had at the last find(),
+  // the last grid's pairs are filtered instead of building a new grid: any
+  // pair overlapping now overlapped then. (The stable solver finds pairs
+  // before Move with boxes swept over the substep, then again after it: the
+  // second search is mostly a filter.)
+  void find_again(const Components& k, std::span<const EntityId> entities, double reach,
+                  std::vector<BodyPair>& out);
+
  private:
   struct Bounds {
     double x0, y0, x1, y1;
   };
-  std::vector<Bounds> bounds_;
+  std::vector<Bounds> bounds_;   // at the last find(): each body's exact box
+  std::vector<Bounds> current_;  // find_again's boxes
+  std::vector<EntityId> entities_;
   std::vector<Aabb> boxes_;
   std::vector<std::uint8_t> fixed_;
   UniformGrid grid_;
