@@ -14,19 +14,11 @@ namespace {
 constexpr Vector axis_normal[4] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};
 
 // Signed distance between the boxes of c and b along an axis (negative:
-// overlap), from their Minkowski difference s = b ⊖ c.
-double gap_of(Vector s, Rect size, int axis) {
-  switch (axis) {
-    case 0: return s.x;
-    case 1: return -(s.x + size.width);
-    case 2: return s.y;
-    default: return -(s.y + size.height);
-  }
-}
-
-// The same, with Rect::mdiff's arithmetic written out (same operations in
-// the same order, so the same bits): it runs per contact per position
-// iteration, where the call cost more than the sums.
+// overlap), from their Minkowski difference s = b ⊖ c (the sheet's mdiff):
+// -x: s.x, +x: -(s.x + s.w), -y: s.y, +y: -(s.y + s.h). Rect::mdiff's
+// arithmetic is written out (same operations in the same order, so the same
+// bits): this runs per contact per iteration, where the call cost more than
+// the sums.
 double gap_along(const Components& k, EntityId c, EntityId b, int axis) {
   const Vector pc = k.position[c], pb = k.position[b];
   const Rect rc = k.box[c], rb = k.box[b];
@@ -41,14 +33,14 @@ double gap_along(const Components& k, EntityId c, EntityId b, int axis) {
 // The separating axis with the largest gap; for overlapping boxes that is the
 // shortest way out, with Collision::penetration's tie order (-x, +x, -y, +y).
 std::pair<int, double> best_axis(const Components& k, EntityId c, EntityId b) {
-  const auto [s, size] = Rect::mdiff(k.position[c], k.box[c], k.position[b], k.box[b]);
+  const Vector pc = k.position[c], pb = k.position[b];
+  const Rect rc = k.box[c], rb = k.box[b];
+  const double sx = pb.x - pc.x - rc.width, sy = pb.y - pc.y - rc.height;  // gap_along's sums
+  const double gaps[4] = {sx, -(sx + (rb.width + rc.width)), sy, -(sy + (rb.height + rc.height))};
   int best = 0;
-  double g = gap_of(s, size, 0);
-  for (int a = 1; a < 4; ++a) {
-    const double ga = gap_of(s, size, a);
-    if (ga > g) best = a, g = ga;
-  }
-  return {best, g};
+  for (int a = 1; a < 4; ++a)
+    if (gaps[a] > gaps[best]) best = a;
+  return {best, gaps[best]};
 }
 
 std::uint64_t key(EntityId c, EntityId b) { return (static_cast<std::uint64_t>(c) << 32) | b; }
