@@ -33,6 +33,7 @@ struct Options {
   std::vector<std::size_t> sizes{1000, 10000, 100000};
   std::vector<std::string> engines{"ours", "box2d", "chipmunk"};
   int steps = 600, warmup = 60;
+  double budget = 40.0;  // s per run: a run past it stops early (and says so)
   std::string out = "bench/RESULTS.md";
   bool compare = true;  // the broadphase comparison
 };
@@ -48,6 +49,7 @@ struct Result {
   std::string engine, scene;
   std::size_t n = 0;
   double median_ms = 0, p95_ms = 0, build_ms = 0;
+  int steps_run = 0;  // fewer than asked when the run hit the time budget
   Quality q;
 };
 
@@ -123,14 +125,20 @@ Result run(const std::string& engine, const Scene& s, const Options& o) {
   const auto t0 = clock::now();
   auto e = make_engine(engine, s);
   r.build_ms = std::chrono::duration<double, std::milli>(clock::now() - t0).count();
+  // Every step's time; the first `warmup` are left out of the statistics
+  // unless the budget stopped the run before it got past them.
   std::vector<double> times;
   times.reserve(static_cast<std::size_t>(o.steps));
+  const auto start = clock::now();
   for (int i = 0; i < o.steps; ++i) {
     const auto a = clock::now();
     e->step();
     const auto b = clock::now();
-    if (i >= o.warmup) times.push_back(std::chrono::duration<double, std::milli>(b - a).count());
+    times.push_back(std::chrono::duration<double, std::milli>(b - a).count());
+    r.steps_run = i + 1;
+    if (std::chrono::duration<double>(b - start).count() > o.budget) break;
   }
+  if (static_cast<int>(times.size()) > o.warmup) times.erase(times.begin(), times.begin() + o.warmup);
   r.median_ms = percentile(times, 0.5);
   r.p95_ms = percentile(times, 0.95);
   std::vector<Body> end;
@@ -169,7 +177,7 @@ std::vector<std::string> split(const std::string& s) {
 const char* usage =
     "usage: bench [--scenes gas,rain,pyramid] [--sizes 1000,10000,100000] [--engines ours,box2d,chipmunk]\n"
     "             [--steps 600] [--warmup 60] [--out bench/RESULTS.md]\n"
-    "             [--compare 0|1]   (engines also: ours-course, our course solver on every scene)\n";
+    "             [--compare 0|1] [--budget 40 (s per run)]   (engines also: ours-course, our course solver on every scene)\n";
 
 Options parse(int argc, char** argv) {
   Options o;
@@ -190,6 +198,7 @@ Options parse(int argc, char** argv) {
     else if (a == "--warmup") o.warmup = std::stoi(v);
     else if (a == "--out") o.out = v;
     else if (a == "--compare") o.compare = v != "0";
+    else if (a == "--budget") o.budget = std::stod(v);
     else throw std::invalid_argument("unknown option " + a);
   }
   if (o.steps <= o.warmup || o.warmup < 0) throw std::invalid_argument("--steps must exceed --warmup >= 0");
@@ -206,6 +215,8 @@ std::string fmt(const char* f, double x) {
 
 int main(int argc, char** argv) try {
   const Options o = parse(argc, argv);
+  std::string command = "build/bench";
+  for (int i = 1; i < argc; ++i) command += std::string(" ") + argv[i];
   const std::string machine = machine_line();
   std::cout << "machine: " << machine << "\n";
   std::vector<Result> results;
@@ -213,7 +224,7 @@ int main(int argc, char** argv) try {
   table << "| engine | scene | N | median ms/step | p95 ms/step | ns/body/step | time ÷ ours | escaped | max overlap "
            "(block) | KE drift (gas) | top block moved (pyramid, m) |\n"
            "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-  std::printf("%-9s %-8s %7s %9s %9s %9s %7s %7s %9s %10s %9s\n", "engine", "scene", "N", "median", "p95", "ns/body",
+  std::printf("%-18s %-8s %7s %9s %9s %9s %7s %7s %9s %10s %9s\n", "engine", "scene", "N", "median", "p95", "ns/body",
               "÷ours", "escaped", "overlap", "KE drift", "top moved");
   for (const std::string& name : o.scenes) {
     std::vector<std::size_t> sizes = o.sizes;
@@ -228,11 +239,14 @@ int main(int argc, char** argv) try {
         const std::string ratio = ours_ms > 0 ? fmt("%.2f", r.median_ms / ours_ms) : "-";
         const std::string drift = name == "gas" ? fmt("%+.2e", r.q.energy_drift) : "-";
         const std::string top = name == "pyramid" ? fmt("%.4f", r.q.top_moved) : "-";
-        std::printf("%-9s %-8s %7zu %9.3f %9.3f %9.1f %7s %7zu %9.4f %10s %9s\n", engine.c_str(), name.c_str(), r.n,
+        // A run cut short by the budget says how far it got.
+        const std::string label =
+            r.steps_run < o.steps ? engine + " (" + std::to_string(r.steps_run) + " steps)" : engine;
+        std::printf("%-18s %-8s %7zu %9.3f %9.3f %9.1f %7s %7zu %9.4f %10s %9s\n", label.c_str(), name.c_str(), r.n,
                     r.median_ms, r.p95_ms, ns_body, ratio.c_str(), r.q.escaped, r.q.max_overlap, drift.c_str(),
                     top.c_str());
         std::fflush(stdout);
-        table << "| " << engine << " | " << name << " | " << r.n << " | " << fmt("%.3f", r.median_ms) << " | "
+        table << "| " << label << " | " << name << " | " << r.n << " | " << fmt("%.3f", r.median_ms) << " | "
               << fmt("%.3f", r.p95_ms) << " | " << fmt("%.1f", ns_body) << " | " << ratio << " | " << r.q.escaped
               << " | " << fmt("%.4f", r.q.max_overlap) << " | " << drift << " | " << top << " |\n";
         results.push_back(r);
@@ -264,9 +278,11 @@ int main(int argc, char** argv) try {
   std::ofstream md(o.out);
   if (!md) throw std::runtime_error("cannot write " + o.out);
   md << "# Benchmark: our engine, Box2D 2.4.1, Chipmunk 7.0.3\n\n"
-     << "Written by `make bench` (`build/bench " << (argc > 1 ? "..." : "") << "`); do not edit by hand.\n\n"
+     << "Written by `make bench` (`" << command << "`); do not edit by hand.\n\n"
      << "Machine: " << machine << ". Steps: " << o.steps << ", the first " << o.warmup
-     << " discarded; times are per step, single thread.\n\n"
+     << " discarded; times are per step, single thread. A run that passes " << o.budget
+     << " s stops early: its row says after how many steps (its statistics then cover the steps past the warm-up, "
+        "or all of them if it did not get that far; its quality is the state where it stopped).\n\n"
      << "Scenes (bench/scenes.cpp): unit squares of mass 1, fixed rotation, friction 0, sleeping off, each "
         "engine's default iterations; 1 m = 10 px in our engine. `gas`: area fraction 0.10, random velocities up "
         "to 5 m/s per axis (seed 42), no gravity, e = 1, our course solver. `rain`: a grid at area fraction 0.25 "

@@ -41,7 +41,7 @@ std::vector<SceneSpec> make_all() {
     all.push_back(s);
   }
   {
-    SceneSpec s = base("impulse", "Q5: the same motion from an initial force (0.25, 0.25) (Draw+Move+Forces)",
+    SceneSpec s = base("impulse", "Q5: a force (0.25, 0.25) on the first frame sets it moving, Δv = f·dt/m ≈ 0.42 px/ms (Draw+Move+Forces)",
                        systems(true, true, true, false));
     BlockSpec b = red_block();
     b.force = {0.25, 0.25};

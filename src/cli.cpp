@@ -110,7 +110,7 @@ int headless_run(const SceneSpec& spec, const Options& o, Recorder& rec, const s
   Game::print_summary(out, w, summary, why, spec.name);
   rec.finish(w);
   if (picture && !Offscreen::screenshot(w, spec.width, spec.height, o.screenshot)) {
-    err << "game: cannot write " << o.screenshot << "\n";
+    err << "game: --screenshot: cannot write " << o.screenshot << "\n";
     return 1;
   }
   return 0;
@@ -135,6 +135,20 @@ Options parse(std::span<const std::string> args) {
     std::vector<std::string> argv(args.begin(), args.end());
     po::store(po::command_line_parser(argv).options(descriptions()).positional({}).run(), vm);
     po::notify(vm);
+  } catch (const po::too_many_positional_options_error&) {
+    // Boost does not say which word: find the first one that no flag took.
+    const auto& opts = descriptions();
+    for (std::size_t i = 0; i < args.size(); ++i) {
+      const std::string& a = args[i];
+      if (a.starts_with("-")) {
+        const std::string name = a.substr(a.find_first_not_of('-'), a.find('=') - a.find_first_not_of('-'));
+        const auto* d = opts.find_nothrow(name, false);
+        if (a.find('=') == std::string::npos && d && d->semantic()->max_tokens() > 0) ++i;  // its value
+        continue;
+      }
+      throw UsageError("unexpected argument '" + a + "' (scenes are given with --scene; see --help)");
+    }
+    throw UsageError("unexpected argument (see --help)");
   } catch (const po::error& e) {
     throw UsageError(std::string(e.what()) + " (see --help)");
   }
@@ -154,6 +168,7 @@ Options parse(std::span<const std::string> args) {
   if (has("dt")) {
     ov.dt = real("--dt", get("dt"));
     if (*ov.dt <= 0) bad("--dt", "must be > 0", get("dt"));
+    if (*ov.dt > max_dt) bad("--dt", "must be <= 1000000 ms", get("dt"));
   }
   if (has("substeps")) ov.substeps = static_cast<int>(integer("--substeps", get("substeps"), 1, max_substeps));
   if (has("iterations"))
@@ -163,6 +178,8 @@ Options parse(std::span<const std::string> args) {
     const auto comma = g.find(',');
     if (comma == std::string::npos) bad("--gravity", "must be two numbers X,Y", g);
     ov.gravity = Vector{real("--gravity", g.substr(0, comma)), real("--gravity", g.substr(comma + 1))};
+    if (std::abs(ov.gravity->x) > max_motion || std::abs(ov.gravity->y) > max_motion)
+      bad("--gravity", "must be within ±1000000 per axis", g);
   }
   if (has("restitution")) {
     ov.restitution = real("--restitution", get("restitution"));
@@ -274,6 +291,12 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err,
   }
   if (!o.screenshot.empty() && std::int64_t{spec.width} * spec.height > max_screenshot_pixels) {
     err << "game: --screenshot: the " << spec.width << "x" << spec.height << " world is too large to save\n";
+    return 2;
+  }
+  // Like --dump and --trace: an unwritable picture is refused before the run,
+  // not after it.
+  if (!o.screenshot.empty() && !std::ofstream(o.screenshot, std::ios::binary | std::ios::app)) {
+    err << "game: --screenshot: cannot write " << o.screenshot << ": " << std::strerror(errno) << "\n";
     return 2;
   }
   try {

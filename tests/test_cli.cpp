@@ -115,6 +115,42 @@ Ran program(const TempDir& dir, const std::string& env, const std::vector<std::s
 
 const std::string no_display = "-u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER";
 
+// The pixels of a PNG written by our own Png::write (8-bit RGB, filter 0,
+// stored deflate blocks): enough to look at a screenshot without a decoder.
+struct Picture {
+  std::uint32_t width = 0, height = 0;
+  std::vector<std::uint8_t> rgb;
+};
+Picture read_own_png(const std::string& path) {
+  const std::string f = read(path);
+  const auto be32 = [&](std::size_t at) {
+    return (std::uint32_t(std::uint8_t(f[at])) << 24) | (std::uint32_t(std::uint8_t(f[at + 1])) << 16) |
+           (std::uint32_t(std::uint8_t(f[at + 2])) << 8) | std::uint32_t(std::uint8_t(f[at + 3]));
+  };
+  Picture p;
+  std::string z;  // the zlib stream, from every IDAT chunk
+  for (std::size_t at = 8; at + 8 <= f.size();) {
+    const std::uint32_t len = be32(at);
+    const std::string type = f.substr(at + 4, 4);
+    if (type == "IHDR") p.width = be32(at + 8), p.height = be32(at + 12);
+    if (type == "IDAT") z += f.substr(at + 8, len);
+    at += 12 + len;
+  }
+  std::string raw;
+  for (std::size_t at = 2; at + 5 <= z.size();) {  // after the 2-byte zlib header
+    const bool last = z[at] & 1;
+    const std::size_t len = std::uint8_t(z[at + 1]) | (std::size_t(std::uint8_t(z[at + 2])) << 8);
+    raw += z.substr(at + 5, len);
+    at += 5 + len;
+    if (last) break;
+  }
+  const std::size_t row = std::size_t{p.width} * 3 + 1;
+  if (raw.size() != row * p.height) return {};
+  for (std::uint32_t y = 0; y < p.height; ++y)
+    p.rgb.insert(p.rgb.end(), raw.begin() + long(y * row + 1), raw.begin() + long((y + 1) * row));
+  return p;
+}
+
 bool is_png(const std::string& path) {
   const std::string head = read(path).substr(0, 8);
   return head == "\x89PNG\r\n\x1a\n";
@@ -264,7 +300,9 @@ BOOST_AUTO_TEST_SUITE(cli_bad_input)
 BOOST_AUTO_TEST_CASE(unknown_flags_and_missing_values) {
   expect_bad({"--sceen", "many"}, "unrecognised option '--sceen'");
   expect_bad({"--frames"}, "--frames");
-  expect_bad({"many"}, "positional");
+  expect_bad({"many"}, "unexpected argument 'many' (scenes are given with --scene");
+  expect_bad({"--frames", "3", "many"}, "unexpected argument 'many'");
+  expect_bad({"--dt=5", "--headless", "x"}, "unexpected argument 'x'");
   expect_bad({"--dt", "1", "--dt", "2"}, "--dt");
 }
 
@@ -322,6 +360,9 @@ BOOST_AUTO_TEST_CASE(bad_values_on_the_command_line) {
   expect_bad({"--frames", "ten"}, "--frames");
   expect_bad({"--gravity", "0"}, "--gravity: must be two numbers X,Y (got '0')");
   expect_bad({"--gravity", "0,x"}, "--gravity");
+  // Finite but beyond what a scene file accepts: the flag is named, not the scene.
+  expect_bad({"--gravity", "1e7,0"}, "--gravity: must be within ±1000000 per axis (got '1e7,0')");
+  expect_bad({"--dt", "1e7"}, "--dt: must be <= 1000000 ms (got '1e7')");
   expect_bad({"--seed=-3"}, "--seed");
   expect_bad({"--solver", "fast"}, "--solver: must be course or stable (got 'fast')");
   expect_bad({"--ccd=maybe"}, "--ccd: must be on or off");
@@ -331,6 +372,7 @@ BOOST_AUTO_TEST_CASE(bad_values_on_the_command_line) {
 BOOST_AUTO_TEST_CASE(unwritable_outputs_fail_before_the_run) {
   expect_bad({"--dump", "/nonexistent/dir/x.csv"}, "--dump: cannot write /nonexistent/dir/x.csv");
   expect_bad({"--trace", "/nonexistent/dir/x.csv"}, "--trace: cannot write");
+  expect_bad({"--screenshot", "/nonexistent/dir/x.png", "--headless"}, "--screenshot: cannot write /nonexistent/dir/x.png");
   expect_bad({"--dump", ""}, "must not be empty");
 }
 
@@ -370,6 +412,35 @@ BOOST_AUTO_TEST_CASE(a_window_run_draws_and_saves_a_screenshot) {
   BOOST_TEST(!has(r.out, "ran headless"));
   BOOST_TEST(is_png(dir.file("w.png")));
   BOOST_TEST(csv(read(dir.file("w.csv"))).size() == 7u);
+}
+
+BOOST_AUTO_TEST_CASE(the_window_draws_the_same_bodies_as_the_offscreen_picture) {
+  // The window's picture (SDL renderer) and the headless one (Offscreen) of
+  // the same frame: below the HUD they must agree, so the window really
+  // draws the bodies where they are.
+  TempDir dir;
+  const std::vector<std::string> args{"--scene", "many", "--frames", "30"};
+  auto with = [&](std::vector<std::string> a, const std::string& png) {
+    a.insert(a.end(), {"--screenshot", png});
+    return a;
+  };
+  BOOST_TEST_REQUIRE(program(dir, no_display + " SDL_VIDEODRIVER=dummy", with(args, "window.png")).code == 0);
+  BOOST_TEST_REQUIRE(program(dir, no_display, with(args, "offscreen.png")).code == 0);
+  const Picture w = read_own_png(dir.file("window.png")), h = read_own_png(dir.file("offscreen.png"));
+  BOOST_TEST_REQUIRE(w.width == 800u);
+  BOOST_TEST_REQUIRE(w.height == 600u);
+  BOOST_TEST_REQUIRE(h.rgb.size() == w.rgb.size());
+  std::size_t painted = 0, differ = 0, compared = 0;
+  for (std::size_t y = 200; y < 600; ++y)  // below the HUD's lines
+    for (std::size_t x = 0; x < 800; ++x) {
+      const std::size_t i = (y * 800 + x) * 3;
+      const bool white = w.rgb[i] == 255 && w.rgb[i + 1] == 255 && w.rgb[i + 2] == 255;
+      painted += !white;
+      differ += w.rgb[i] != h.rgb[i] || w.rgb[i + 1] != h.rgb[i + 1] || w.rgb[i + 2] != h.rgb[i + 2];
+      ++compared;
+    }
+  BOOST_TEST(painted > compared / 10, painted << " painted pixels of " << compared);  // walls and blocks
+  BOOST_TEST(differ < compared / 200, differ << " pixels differ of " << compared);    // edge rounding at most
 }
 
 BOOST_AUTO_TEST_CASE(a_missing_font_turns_the_hud_off_with_a_warning) {
