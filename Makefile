@@ -157,7 +157,7 @@ fuzz: deps
 	@mkdir -p $(FUZZ_DIR)/corpus
 	cp scenes/*.json tests/fuzz_regressions/* $(FUZZ_DIR)/corpus/ 2>/dev/null || true
 	clang++ -std=c++20 -O1 -g -ffp-contract=off -Isrc -fsanitize=fuzzer,address,undefined \
-	  -fno-sanitize-recover=all $(CORE_SRC) fuzz/scene_fuzzer.cpp -o $(FUZZ_DIR)/scene_fuzzer
+	  -fno-sanitize-recover=all -DGAME_NO_MAIN $(CORE_SRC) src/game.cpp fuzz/scene_fuzzer.cpp -o $(FUZZ_DIR)/scene_fuzzer
 	./$(FUZZ_DIR)/scene_fuzzer -max_total_time=$(FUZZ_SECONDS) -max_len=8192 -timeout=10 -rss_limit_mb=4096 \
 	  -artifact_prefix=$(FUZZ_DIR)/ -print_final_stats=1 $(FUZZ_DIR)/corpus
 
