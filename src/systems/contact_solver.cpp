@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <tuple>
+#include <type_traits>
 
 #include "utils/rect.hpp"
 
@@ -201,7 +202,14 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
   // Sequential impulses with accumulated clamping, then the bottom-up pass.
   // `after_bounce`: the same on the velocities the restitution left, with
   // fresh accumulators and no approach allowed at the impacts (see below).
-  const auto relax = [&](bool after_bounce) {
+  // The support order depends only on the contacts, not on velocities: both
+  // relaxations share it.
+  std::vector<std::size_t> support_order;
+  bool have_order = false;
+  // after_bounce is a compile-time constant (std::bool_constant), so the
+  // inner loop carries no test of it.
+  const auto relax = [&](auto after_bounce_tag) {
+    constexpr bool after_bounce = decltype(after_bounce_tag)::value;
     for (Contact& ct : contacts_) ct.lambda2 = 0.0;
     const auto target = [&](const Contact& ct) { return after_bounce && !ct.resting ? 0.0 : ct.target; };
     for (int it = 0; it < s.iterations; ++it) {
@@ -215,7 +223,8 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
       }
     }
     if (!s.shock_propagation || Vector::is_zero(g)) return;
-    for (const std::size_t i : bottom_up(k, contacts_, g)) {
+    if (!have_order) support_order = bottom_up(k, contacts_, g), have_order = true;
+    for (const std::size_t i : support_order) {
       const Contact& ct = contacts_[i];
       const Vector n = axis_normal[ct.axis];
       const double vn = Vector::dot(k.velocity[ct.c] - k.velocity[ct.b], n);
@@ -228,7 +237,7 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
       }
     }
   };
-  relax(false);
+  relax(std::false_type{});
 
   // Restitution, Poisson's way: each impact gets e times the impulse that
   // stopped it. With one e for all contacts this is v+ = v_c + e (v_c - v-),
@@ -242,7 +251,7 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
   // The bounce impulses were computed contact by contact: a light block
   // lying on the floor when a heavy one lands on it gets e times its share
   // pushing it into the floor, which nothing would then hold. Relax again.
-  if (bounced) relax(true);
+  if (bounced) relax(std::true_type{});
   guard_energy(k);
 
   // An impact found before the bodies touch (gap > 0) happens at toi within
