@@ -220,16 +220,6 @@ Outcome spawn_overlapping(const Mode& m) {
   Random rng(11);
   for (int i = 0; i < 10000; ++i) block(w, rng.uniform(40, 756), rng.uniform(40, 556), 4, 4, rng.uniform(1, 2));
   const double before = max_overlap(w);
-  if (m.solver == Solver::course) {
-    // The course's pass looks at all 5e7 pairs one by one, several seconds
-    // per substep here (a broadphase is another issue's): one frame only, to
-    // measure it, and only in the plain course mode.
-    if (m.substeps > 1 || m.ccd) return {false, "not run (see course: one frame of the all-pairs pass)"};
-    const auto t0 = std::chrono::steady_clock::now();
-    w.step();
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    return {false, fmt("overlap %.2g -> %.2g px after 1 frame", before, max_overlap(w)) + fmt(" (%.1f s/frame)", s)};
-  }
   const Track t = run(w, 30, true, {}, 30);
   if (!t.finite) return nan_outcome();
   const double after = max_overlap(w);
