@@ -147,7 +147,8 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
     // and resolves chains of them one after the other (a cradle). The solver
     // keeps the resting contacts, which CCD alone cannot hold.
     if (impact && !s.impacts) continue;
-    Contact ct{p.c, p.b, axis, inverse_mass(k.mass[p.c]), inverse_mass(k.mass[p.b]), 0.0, 0.0, 0.0, 0.0, 0.0, true};
+    const double wc = inverse_mass(k.mass[p.c]), wb = inverse_mass(k.mass[p.b]);
+    Contact ct{p.c, p.b, axis, wc, wb, 1.0 / (wc + wb), 0.0, 0.0, 0.0, 0.0, 0.0, true};
     if (impact) {
       // A real impact this substep: stopped here (target 0), then bounced by
       // e times the stopping impulse once the iterations are done.
@@ -215,9 +216,8 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
     for (int it = 0; it < s.iterations; ++it) {
       for (Contact& ct : contacts_) {
         const double vn = Vector::dot(k.velocity[ct.c] - k.velocity[ct.b], axis_normal[ct.axis]);
-        const double w = ct.wc + ct.wb;
         double& acc = after_bounce ? ct.lambda2 : ct.lambda;
-        const double lambda = std::max(acc - (vn - target(ct)) / w, 0.0);
+        const double lambda = std::max(acc - (vn - target(ct)) * ct.inv_w, 0.0);
         apply(ct, lambda - acc);
         acc = lambda;
       }
@@ -397,7 +397,8 @@ void ContactSolver::solve_positions(Components& k, std::span<const EntityId> ent
     const auto [axis, gap] = best_axis(k, p.c, p.b);
     if (gap > s.margin) continue;
     any_overlap = any_overlap || gap < -s.slop;
-    contacts_.push_back(Contact{p.c, p.b, axis, inverse_mass(k.mass[p.c]), inverse_mass(k.mass[p.b]), 0, 0, 0, 0, 0, true});
+    const double wc = inverse_mass(k.mass[p.c]), wb = inverse_mass(k.mass[p.b]);
+    contacts_.push_back(Contact{p.c, p.b, axis, wc, wb, 1.0 / (wc + wb), 0, 0, 0, 0, 0, true});
   }
   if (!any_overlap) return;
 

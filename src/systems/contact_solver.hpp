@@ -66,6 +66,7 @@ class ContactSolver {
     EntityId c, b;
     int axis;          // 0: -x, 1: +x, 2: -y, 3: +y (the normal that moves c away from b)
     double wc, wb;     // inverse masses
+    double inv_w;      // 1 / (wc + wb): the iterations multiply by it (a division there sat on the dependency chain)
     double target;     // lowest allowed (v_c - v_b)·n
     double lambda;     // accumulated impulse
     double lambda2;    // accumulated in the relaxation after the bounces

@@ -22,53 +22,51 @@ Swept swept(const Components& k, EntityId e, double h, double reach) {
 
 void PairFinder::find(const Components& k, std::span<const EntityId> entities, double h, double reach,
                       std::vector<BodyPair>& out) {
-  out.clear();
   const std::size_t n = entities.size();
-  bounds_.resize(n);
-  boxes_.resize(n);
-  fixed_.resize(n);
+  current_.resize(n);
+  bool reuse = built_ && n == entities_.size() && std::equal(entities.begin(), entities.end(), entities_.begin());
   for (std::size_t i = 0; i < n; ++i) {
     const Swept s = swept(k, entities[i], h, reach);
-    bounds_[i] = {s.x0, s.y0, s.x1, s.y1};
-    // Rounded outwards to float: the grid's boxes contain the exact ones, so
-    // it finds a superset of the pairs, which the exact test below trims.
-    boxes_[i] = Aabb::outward(s.x0, s.y0, s.x1, s.y1);
-    fixed_[i] = !std::isfinite(k.mass[entities[i]]);
+    current_[i] = {s.x0, s.y0, s.x1, s.y1};
+    // (A NaN fails the test: a rebuild, which handles it.)
+    const Bounds& f = fat_[i < fat_.size() ? i : 0];
+    reuse = reuse && f.x0 <= s.x0 && f.y0 <= s.y0 && s.x1 <= f.x1 && s.y1 <= f.y1 &&
+            fixed_[i] == !std::isfinite(k.mass[entities[i]]);
   }
-  grid_.build(boxes_, fixed_);
-  entities_.assign(entities.begin(), entities.end());
+  if (!reuse) rebuild(k, entities);
+  out.clear();
   out.reserve(grid_.pairs().size());
   for (const PairKey key : grid_.pairs()) {
     const std::uint32_t i = pair_first(key), j = pair_second(key);
-    const Bounds& a = bounds_[i];
-    const Bounds& b = bounds_[j];
+    const Bounds& a = current_[i];
+    const Bounds& b = current_[j];
     // Closed test: touching boxes are candidates (resting contact). A NaN
     // bound fails it, so a lost body has no pair.
     if (a.x0 <= b.x1 && b.x0 <= a.x1 && a.y0 <= b.y1 && b.y0 <= a.y1) out.push_back({entities[i], entities[j]});
   }
 }
 
+void PairFinder::rebuild(const Components& k, std::span<const EntityId> entities) {
+  const std::size_t n = entities.size();
+  fat_.resize(n);
+  boxes_.resize(n);
+  fixed_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Bounds& c = current_[i];
+    fat_[i] = {c.x0 - fat_margin, c.y0 - fat_margin, c.x1 + fat_margin, c.y1 + fat_margin};
+    // Rounded outwards to float: the grid's boxes contain the exact ones, so
+    // it finds a superset of the pairs, which the exact test trims.
+    boxes_[i] = Aabb::outward(fat_[i].x0, fat_[i].y0, fat_[i].x1, fat_[i].y1);
+    fixed_[i] = !std::isfinite(k.mass[entities[i]]);
+  }
+  grid_.build(boxes_, fixed_);
+  entities_.assign(entities.begin(), entities.end());
+  built_ = true;
+}
+
 void PairFinder::find_again(const Components& k, std::span<const EntityId> entities, double reach,
                             std::vector<BodyPair>& out) {
-  const std::size_t n = entities.size();
-  bool inside = n == entities_.size() && std::equal(entities.begin(), entities.end(), entities_.begin());
-  current_.resize(n);
-  for (std::size_t i = 0; inside && i < n; ++i) {
-    const Swept s = swept(k, entities[i], 0.0, reach);
-    const Bounds& old = bounds_[i];
-    current_[i] = {s.x0, s.y0, s.x1, s.y1};
-    // (A NaN fails the test: a fresh find, which handles it.)
-    inside = old.x0 <= s.x0 && old.y0 <= s.y0 && s.x1 <= old.x1 && s.y1 <= old.y1 &&
-             fixed_[i] == !std::isfinite(k.mass[entities[i]]);
-  }
-  if (!inside) return find(k, entities, 0.0, reach, out);
-  out.clear();
-  for (const PairKey key : grid_.pairs()) {
-    const std::uint32_t i = pair_first(key), j = pair_second(key);
-    const Bounds& a = current_[i];
-    const Bounds& b = current_[j];
-    if (a.x0 <= b.x1 && b.x0 <= a.x1 && a.y0 <= b.y1 && b.y0 <= a.y1) out.push_back({entities[i], entities[j]});
-  }
+  find(k, entities, 0.0, reach, out);
 }
 
 void candidate_pairs(const Components& k, std::span<const EntityId> entities, double h, double reach,
