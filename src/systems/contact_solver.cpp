@@ -310,6 +310,19 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
 // inelastic velocities alone are above, move back towards the starting ones).
 // Both are blends of impulse sets, so momentum is kept.
 void ContactSolver::guard_energy(Components& k) {
+  // When no body of a contact ends with more kinetic energy than it started
+  // with, no island can have gained (each island's sums below add the same
+  // per-body terms, and rounding is monotone): nothing to do. A resting pile
+  // is the common case, and this skips the islands' bookkeeping there.
+  const auto body_gained = [&](EntityId e) {
+    const double m = k.mass[e];
+    const Vector v0 = v_start_[e], v1 = k.velocity[e];
+    return 0.5 * m * Vector::dot(v1, v1) > 0.5 * m * Vector::dot(v0, v0);
+  };
+  bool gained = false;
+  for (const Contact& ct : contacts_)
+    gained = gained || (ct.wc > 0.0 && body_gained(ct.c)) || (ct.wb > 0.0 && body_gained(ct.b));
+  if (!gained) return;
   const auto n = k.size();
   parent_.resize(n);
   for (const Contact& ct : contacts_) parent_[ct.c] = ct.c, parent_[ct.b] = ct.b;
