@@ -29,8 +29,9 @@ void PairFinder::find(const Components& k, std::span<const EntityId> entities, d
     const Swept s = swept(k, entities[i], h, reach);
     current_[i] = {s.x0, s.y0, s.x1, s.y1};
     // (A NaN fails the test: a rebuild, which handles it.)
-    const Bounds& f = fat_[i < fat_.size() ? i : 0];
-    reuse = reuse && f.x0 <= s.x0 && f.y0 <= s.y0 && s.x1 <= f.x1 && s.y1 <= f.y1 &&
+    if (!reuse) continue;  // (reuse implies fat_ holds the same n bodies)
+    const Bounds& f = fat_[i];
+    reuse = f.x0 <= s.x0 && f.y0 <= s.y0 && s.x1 <= f.x1 && s.y1 <= f.y1 &&
             fixed_[i] == !std::isfinite(k.mass[entities[i]]);
   }
   if (!reuse) rebuild(k, entities);
