@@ -195,6 +195,30 @@ BOOST_AUTO_TEST_CASE(a_query_after_moves_reports_every_overlapping_box) {
   BOOST_TEST(missed == 0u);
 }
 
+BOOST_AUTO_TEST_CASE(many_large_bodies_find_the_same_pairs_as_all_pairs) {
+  // A hundred bodies far above the mean size among a thousand tiny ones:
+  // they all leave the grid for the large list, whose own pairs come from a
+  // sweep on x (testing them all pairwise was quadratic).
+  World w = test::physics_world();
+  Game::init_walls(w);
+  Random rng(5);
+  for (int i = 0; i < 1000; ++i) Block::make(w, rng.uniform(40, 750), rng.uniform(40, 550), 2, 2, test::grey, 1.0);
+  for (int i = 0; i < 100; ++i) Block::make(w, rng.uniform(40, 700), rng.uniform(40, 500), 60, 60, test::grey, 1.0);
+  const auto pairs = w.systems.collision->candidate_pairs(w.components, 1.0);
+  std::vector<std::pair<EntityId, EntityId>> expected;
+  const auto ids = w.systems.collision->entities();
+  const Components& k = w.components;
+  for (std::size_t i = 0; i < ids.size(); ++i)
+    for (std::size_t j = i + 1; j < ids.size(); ++j) {
+      if (!std::isfinite(k.mass[ids[i]]) && !std::isfinite(k.mass[ids[j]])) continue;
+      if (overlap(Aabb::around(k.position[ids[i]], k.box[ids[i]], 1.0), Aabb::around(k.position[ids[j]], k.box[ids[j]], 1.0)))
+        expected.emplace_back(ids[i], ids[j]);
+    }
+  BOOST_TEST(w.systems.collision->grid().large_count() >= 100u);
+  BOOST_TEST(expected.size() > 500u);
+  BOOST_TEST((pairs == expected));
+}
+
 BOOST_AUTO_TEST_CASE(candidate_pairs_are_the_overlapping_grown_boxes_never_two_infinite_masses) {
   for (const double margin : {0.0, 1.0, 7.5}) {
     World w = make_scene(Spec{.bodies = 300, .fixed_fraction = 0.2, .big_fraction = 0.05, .shuffle = true});
