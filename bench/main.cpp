@@ -11,10 +11,12 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -36,6 +38,8 @@ struct Options {
   double budget = 40.0;  // s per run: a run past it stops early (and says so)
   std::string out = "bench/RESULTS.md";
   bool compare = true;  // the broadphase comparison
+  bool isolate = true;  // each run in a fresh process (see run_isolated)
+  std::string child;    // internal: "ENGINE,SCENE,N": run only that and print its RESULT line
 };
 
 struct Quality {
@@ -153,6 +157,46 @@ Result run(const std::string& engine, const Scene& s, const Options& o) {
   return r;
 }
 
+std::vector<std::string> split(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  for (std::string item; std::getline(in, item, ',');)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+// One run in a fresh process (this program again, with --child): every
+// engine starts from a clean heap, whatever ran before it. In one process the
+// runs were not independent: our 100 000-body gas measured 4.5 ms/step alone
+// and 5-5.7 ms after the other engines' runs, the allocator's state being
+// what the earlier runs left.
+Result run_isolated(const std::string& self, const std::string& engine, const Scene& s, const Options& o) {
+  std::ostringstream cmd;
+  cmd << "'" << self << "' --child " << engine << "," << s.name << "," << s.dynamic_count() << " --steps " << o.steps
+      << " --warmup " << o.warmup << " --budget " << o.budget;
+  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(cmd.str().c_str(), "r"), pclose);
+  if (!pipe) throw std::runtime_error("cannot start " + cmd.str());
+  Result r;
+  r.engine = engine, r.scene = s.name, r.n = s.dynamic_count();
+  bool got = false;
+  char line[512];
+  while (std::fgets(line, sizeof line, pipe.get()))
+    got = got || std::sscanf(line, "RESULT %lf %lf %lf %d %zu %lf %lf %lf", &r.median_ms, &r.p95_ms, &r.build_ms,
+                             &r.steps_run, &r.q.escaped, &r.q.max_overlap, &r.q.energy_drift, &r.q.top_moved) == 8;
+  if (pclose(pipe.release()) != 0 || !got) throw std::runtime_error("the run failed: " + cmd.str());
+  return r;
+}
+
+int child_run(const Options& o) {
+  const auto parts = split(o.child);
+  if (parts.size() != 3) throw std::invalid_argument("--child wants ENGINE,SCENE,N");
+  const Scene s = make_scene(parts[1], std::stoul(parts[2]));
+  const Result r = run(parts[0], s, o);
+  std::printf("RESULT %.17g %.17g %.17g %d %zu %.17g %.17g %.17g\n", r.median_ms, r.p95_ms, r.build_ms, r.steps_run,
+              r.q.escaped, r.q.max_overlap, r.q.energy_drift, r.q.top_moved);
+  return 0;
+}
+
 std::string machine_line() {
   std::ifstream in("/proc/cpuinfo");
   std::string line, model = "unknown CPU";
@@ -166,18 +210,11 @@ std::string machine_line() {
   return s.str();
 }
 
-std::vector<std::string> split(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream in(s);
-  for (std::string item; std::getline(in, item, ',');)
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
 
 const char* usage =
     "usage: bench [--scenes gas,rain,pyramid] [--sizes 1000,10000,100000] [--engines ours,box2d,chipmunk]\n"
     "             [--steps 600] [--warmup 60] [--out bench/RESULTS.md]\n"
-    "             [--compare 0|1] [--budget 40 (s per run)]   (engines also: ours-course, our course solver on every scene)\n";
+    "             [--compare 0|1] [--budget 40 (s per run)] [--isolate 0|1]   (engines also: ours-course, our course solver on every scene)\n";
 
 Options parse(int argc, char** argv) {
   Options o;
@@ -199,6 +236,8 @@ Options parse(int argc, char** argv) {
     else if (a == "--out") o.out = v;
     else if (a == "--compare") o.compare = v != "0";
     else if (a == "--budget") o.budget = std::stod(v);
+    else if (a == "--isolate") o.isolate = v != "0";
+    else if (a == "--child") o.child = v;
     else throw std::invalid_argument("unknown option " + a);
   }
   if (o.steps <= o.warmup || o.warmup < 0) throw std::invalid_argument("--steps must exceed --warmup >= 0");
@@ -215,6 +254,8 @@ std::string fmt(const char* f, double x) {
 
 int main(int argc, char** argv) try {
   const Options o = parse(argc, argv);
+  if (!o.child.empty()) return child_run(o);
+  const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
   std::string command = "build/bench";
   for (int i = 1; i < argc; ++i) command += std::string(" ") + argv[i];
   const std::string machine = machine_line();
@@ -233,7 +274,7 @@ int main(int argc, char** argv) try {
       const Scene s = make_scene(name, n);
       double ours_ms = 0;
       for (const std::string& engine : o.engines) {
-        const Result r = run(engine, s, o);
+        const Result r = o.isolate ? run_isolated(self, engine, s, o) : run(engine, s, o);
         if (engine == "ours") ours_ms = r.median_ms;
         const double ns_body = r.median_ms * 1e6 / static_cast<double>(r.n);
         const std::string ratio = ours_ms > 0 ? fmt("%.2f", r.median_ms / ours_ms) : "-";
@@ -280,7 +321,7 @@ int main(int argc, char** argv) try {
   md << "# Benchmark: our engine, Box2D 2.4.1, Chipmunk 7.0.3\n\n"
      << "Written by `make bench` (`" << command << "`); do not edit by hand.\n\n"
      << "Machine: " << machine << ". Steps: " << o.steps << ", the first " << o.warmup
-     << " discarded; times are per step, single thread. A run that passes " << o.budget
+     << " discarded; times are per step, single thread, each run in a fresh process. A run that passes " << o.budget
      << " s stops early: its row says after how many steps (its statistics then cover the steps past the warm-up, "
         "or all of them if it did not get that far; its quality is the state where it stopped).\n\n"
      << "Scenes (bench/scenes.cpp): unit squares of mass 1, fixed rotation, friction 0, sleeping off, each "
