@@ -58,6 +58,16 @@ int support_sign(int axis, Vector g) {
   return 0;
 }
 
+// The lower (bearing) and upper (resting) body of a weight-bearing contact;
+// false for a side contact.
+template <class Contact>
+bool support_ends(const Contact& ct, Vector g, EntityId& lower, EntityId& upper) {
+  const int sign = support_sign(ct.axis, g);
+  if (sign == 0) return false;
+  lower = sign > 0 ? ct.b : ct.c, upper = sign > 0 ? ct.c : ct.b;
+  return true;
+}
+
 // Depth in the support graph: fixed bodies are at 0, a body resting on a
 // body of depth d is at d + 1; bodies resting on nothing fixed get `none`.
 constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
@@ -73,10 +83,7 @@ std::vector<std::uint32_t> support_depths(const Components& k, const Contacts& c
   std::vector<std::uint32_t> start(k.size() + 1, 0), upper_of;
   std::vector<EntityId> queue;
   const auto ends = [&](const auto& ct, EntityId& lower, EntityId& upper) {
-    const int sign = support_sign(ct.axis, g);
-    if (sign == 0) return false;
-    lower = sign > 0 ? ct.b : ct.c, upper = sign > 0 ? ct.c : ct.b;
-    return std::isfinite(k.mass[upper]);  // a fixed body's depth stays 0
+    return support_ends(ct, g, lower, upper) && std::isfinite(k.mass[upper]);  // a fixed body's depth stays 0
   };
   for (const auto& ct : contacts) {
     EntityId lower, upper;
@@ -110,10 +117,8 @@ std::vector<std::size_t> bottom_up(const Components& k, const Contacts& contacts
   std::vector<std::size_t> order;
   std::vector<std::uint32_t> level;  // depth of each listed contact's lower body
   for (std::size_t i = 0; i < contacts.size(); ++i) {
-    const int sign = support_sign(contacts[i].axis, g);
-    if (sign == 0) continue;
-    const EntityId lower = sign > 0 ? contacts[i].b : contacts[i].c;
-    const EntityId upper = sign > 0 ? contacts[i].c : contacts[i].b;
+    EntityId lower, upper;
+    if (!support_ends(contacts[i], g, lower, upper)) continue;
     if (depth[lower] != none && depth[lower] < depth[upper]) order.push_back(i), level.push_back(depth[lower]);
   }
   std::uint32_t levels = 0;
@@ -403,7 +408,7 @@ void ContactSolver::solve_positions(Components& k, std::span<const EntityId> ent
                                     const SolverSettings& s) {
   // Touching pairs too (within the margin): they take no correction but link
   // the support graph of the bottom-up pass down to the ground.
-  pair_finder_.find_again(k, entities, s.margin, pairs_);
+  pair_finder_.find(k, entities, 0.0, s.margin, pairs_);
   contacts_.clear();
   bool any_overlap = false;
   for (const BodyPair& p : pairs_) {

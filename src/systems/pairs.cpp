@@ -6,12 +6,10 @@
 namespace physics {
 
 namespace {
-struct Swept {
-  double x0, y0, x1, y1;
-};
+using Bounds = PairFinder::Bounds;
 
 // The box swept over [0, h] at constant velocity, grown by `reach`.
-Swept swept(const Components& k, EntityId e, double h, double reach) {
+Bounds swept(const Components& k, EntityId e, double h, double reach) {
   const Vector p = k.position[e];
   const Vector q = p + h * k.velocity[e];
   const double w = k.box[e].width, hh = k.box[e].height;
@@ -26,8 +24,7 @@ void PairFinder::find(const Components& k, std::span<const EntityId> entities, d
   current_.resize(n);
   bool reuse = built_ && n == entities_.size() && std::equal(entities.begin(), entities.end(), entities_.begin());
   for (std::size_t i = 0; i < n; ++i) {
-    const Swept s = swept(k, entities[i], h, reach);
-    current_[i] = {s.x0, s.y0, s.x1, s.y1};
+    const Bounds s = current_[i] = swept(k, entities[i], h, reach);
     // (A NaN fails the test: a rebuild, which handles it.)
     if (!reuse) continue;  // (reuse implies fat_ holds the same n bodies)
     const Bounds& f = fat_[i];
@@ -65,11 +62,6 @@ void PairFinder::rebuild(const Components& k, std::span<const EntityId> entities
   built_ = true;
 }
 
-void PairFinder::find_again(const Components& k, std::span<const EntityId> entities, double reach,
-                            std::vector<BodyPair>& out) {
-  find(k, entities, 0.0, reach, out);
-}
-
 void candidate_pairs(const Components& k, std::span<const EntityId> entities, double h, double reach,
                      std::vector<BodyPair>& out) {
   PairFinder().find(k, entities, h, reach, out);
@@ -80,10 +72,10 @@ void brute_force_pairs(const Components& k, std::span<const EntityId> entities, 
   out.clear();
   const std::size_t n = entities.size();
   for (std::size_t i = 0; i < n; ++i) {
-    const Swept bi = swept(k, entities[i], h, reach);
+    const Bounds bi = swept(k, entities[i], h, reach);
     for (std::size_t j = i + 1; j < n; ++j) {
       if (!std::isfinite(k.mass[entities[i]]) && !std::isfinite(k.mass[entities[j]])) continue;
-      const Swept bj = swept(k, entities[j], h, reach);
+      const Bounds bj = swept(k, entities[j], h, reach);
       if (bi.x0 <= bj.x1 && bj.x0 <= bi.x1 && bi.y0 <= bj.y1 && bj.y0 <= bi.y1) out.push_back({entities[i], entities[j]});
     }
   }

@@ -33,18 +33,16 @@ class PairFinder {
  public:
   void find(const Components& k, std::span<const EntityId> entities, double h, double reach,
             std::vector<BodyPair>& out);
-  // find(k, entities, 0, reach, out).
-  void find_again(const Components& k, std::span<const EntityId> entities, double reach,
-                  std::vector<BodyPair>& out);
+  // A body's box in double, [x0, x1] x [y0, y1].
+  struct Bounds {
+    double x0, y0, x1, y1;
+  };
 
   // px. Larger keeps a grid longer but lists more candidates to filter;
   // 2 px is a fifth of the bench's blocks and above a resting body's drift.
   double fat_margin = 2.0;
 
  private:
-  struct Bounds {
-    double x0, y0, x1, y1;
-  };
   void rebuild(const Components& k, std::span<const EntityId> entities);
 
   std::vector<Bounds> current_;  // this call's exact boxes

@@ -1,6 +1,5 @@
 #include "numerics/stability.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 
