@@ -29,20 +29,22 @@ PACKAGES := g++ make pkg-config libsdl2-dev libsdl2-ttf-dev libboost-test-dev fo
             nlohmann-json3-dev libboost-program-options-dev
 SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-CORE_SRC := src/utils/vect.cpp src/utils/rect.cpp src/utils/png.cpp \
-            src/component_defs.cpp src/system_defs.cpp src/world.cpp \
-            src/systems/move.cpp src/systems/forces.cpp src/systems/collision.cpp \
-            src/entities/block.cpp
-CORE_SRC += src/systems/broadphase.cpp src/soak.cpp
-# Scenes (description, built-ins, JSON files), dumps and offscreen pictures: SDL-free, in the library.
-CORE_SRC += src/scene.cpp src/scene_json.cpp src/builtin_scenes.cpp src/dump.cpp src/offscreen.cpp
+# The course tree (src/, src/systems, src/utils, src/entities), the engine
+# beside it (src/engine) and the SDL-free part of the application (scenes,
+# dumps, offscreen pictures, the command line and the testbed's input logic):
+# the physics library, linked by the game, the tests and the tools.
+COURSE_SRC := src/utils/vect.cpp src/utils/rect.cpp src/component_defs.cpp src/system_defs.cpp \
+              src/systems/move.cpp src/systems/forces.cpp src/systems/collision.cpp src/systems/draw.cpp \
+              src/entities/block.cpp src/game.cpp
+ENGINE_SRC := $(wildcard src/engine/*.cpp)
+APP_LIB_SRC := src/app/scene.cpp src/app/scene_json.cpp src/app/builtin_scenes.cpp src/app/dump.cpp \
+               src/app/offscreen.cpp src/app/soak.cpp src/app/headless.cpp src/utils/png.cpp
+CORE_SRC := $(COURSE_SRC) $(ENGINE_SRC) $(APP_LIB_SRC)
 # The command line and the testbed's input logic: SDL-free, linked into the game and the tests.
-APP_SRC  := src/cli.cpp src/testbed.cpp
-GAME_SRC := src/game.cpp src/window.cpp src/systems/draw.cpp $(APP_SRC)
+APP_SRC  := src/app/cli.cpp src/app/testbed.cpp
+GAME_SRC := src/app/main.cpp src/app/window.cpp $(APP_SRC)
 TEST_SRC := $(wildcard tests/*.cpp) $(APP_SRC)
 APP_LIBS := -lboost_program_options
-# Numerics options (docs/numerics.md): swept collision, stable contact solver.
-CORE_SRC += src/systems/pairs.cpp src/systems/ccd.cpp src/systems/contact_solver.cpp
 # The exact event-driven reference (not part of the engine): tests and report tools.
 REF_SRC  := src/reference/event_sim.cpp src/reference/closed_forms.cpp
 
@@ -82,9 +84,7 @@ test: deps
 check-no-sdl: $(BUILD)/libphysics.a
 	@if nm -C $< | grep -q ' U SDL_'; then echo "libphysics.a references SDL"; exit 1; fi
 
-# game.cpp without main() is part of the library: init_walls (Q1) and
-# init_scene (Q9) live there, as in the course, and scenes are built with them.
-$(BUILD)/libphysics.a: $(CORE_OBJ) $(BUILD)/obj/src/game_nomain.o
+$(BUILD)/libphysics.a: $(CORE_OBJ)
 	@mkdir -p $(@D)
 	ar rcs $@ $^
 
@@ -94,7 +94,7 @@ $(BUILD)/game: $(GAME_OBJ) $(BUILD)/libphysics.a
 $(BUILD)/tests: $(TEST_OBJ) $(BUILD)/libphysics.a
 	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS) -lboost_unit_test_framework $(APP_LIBS)
 
-$(BUILD)/obj/src/window.o $(BUILD)/obj/src/systems/draw.o: CXXFLAGS += $(SDL_CFLAGS)
+$(BUILD)/obj/src/app/window.o $(BUILD)/obj/src/app/main.o: CXXFLAGS += $(SDL_CFLAGS)
 $(BUILD)/obj/tools/%.o $(BUILD)/obj/tests/%.o: CXXFLAGS += -Itools
 
 # ---- numerics (docs/numerics.md) ----
@@ -121,11 +121,6 @@ stability: deps
 $(BUILD)/obj/%.o: %.cpp
 	@mkdir -p $(@D)
 	$(CXX) $(CXXFLAGS) -c $< -o $@
-
-# game.cpp without its main(): the tests call init_walls, init_scene, run_headless.
-$(BUILD)/obj/src/game_nomain.o: src/game.cpp
-	@mkdir -p $(@D)
-	$(CXX) $(CXXFLAGS) -DGAME_NO_MAIN -c $< -o $@
 
 # The committed state hash must come out of -O0 and -O2 builds alike.
 determinism: deps
@@ -157,7 +152,7 @@ fuzz: deps
 	@mkdir -p $(FUZZ_DIR)/corpus
 	cp scenes/*.json tests/fuzz_regressions/* $(FUZZ_DIR)/corpus/ 2>/dev/null || true
 	clang++ -std=c++20 -O1 -g -ffp-contract=off -Isrc -fsanitize=fuzzer,address,undefined \
-	  -fno-sanitize-recover=all -DGAME_NO_MAIN $(CORE_SRC) src/game.cpp fuzz/scene_fuzzer.cpp -o $(FUZZ_DIR)/scene_fuzzer
+	  -fno-sanitize-recover=all $(CORE_SRC) fuzz/scene_fuzzer.cpp -o $(FUZZ_DIR)/scene_fuzzer
 	./$(FUZZ_DIR)/scene_fuzzer -max_total_time=$(FUZZ_SECONDS) -max_len=8192 -timeout=10 -rss_limit_mb=4096 \
 	  -artifact_prefix=$(FUZZ_DIR)/ -print_final_stats=1 $(FUZZ_DIR)/corpus
 

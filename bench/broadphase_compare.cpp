@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "bench.hpp"
-#include "systems/broadphase.hpp"
+#include "engine/broadphase.hpp"
 
 namespace bench {
 

@@ -6,7 +6,7 @@
 
 #include "bench.hpp"
 #include "entities/block.hpp"
-#include "world.hpp"
+#include "engine/world.hpp"
 
 namespace bench {
 
@@ -29,7 +29,7 @@ class Ours final : public Engine {
     }
   }
 
-  void step() override { world_->step(); }
+  void step() override { physics::Game::step(*world_); }
 
   void read(std::vector<Body>& out) const override {
     const physics::Components& k = world_->components;

@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <string_view>
 
-#include "scene.hpp"
-#include "scene_json.hpp"
+#include "app/scene.hpp"
+#include "app/scene_json.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace physics;
@@ -18,7 +18,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // each input fast.
     if (body_count(spec) <= 200) {
       World w = make_world(spec, false, "fuzz");
-      for (int i = 0; i < 3; ++i) w.step();
+      for (int i = 0; i < 3; ++i) Game::step(w);
     }
   } catch (const SceneError&) {
     // the expected outcome for bad input

@@ -1,75 +1,48 @@
-// The game (course: game.ml): the walls of question 1, the scene of question 9,
-// and the headless run. The command line is cli.hpp; the window loop and
-// main() are in game.cpp behind GAME_NO_MAIN, with the SDL front end in
-// window.hpp. What this header declares builds and runs without SDL.
+// The game (course: game.ml): the walls of question 1, the scene of question
+// 9, and the frame the main program calls, in the sheet's order: Forces,
+// Move, Collision, then Draw. The window and the command line are the
+// application's (src/app/); nothing here needs SDL.
 #pragma once
 
 #include <cstdint>
-#include <iosfwd>
-#include <string>
 
-#include "scene.hpp"
-#include "world.hpp"
+#include "engine/world.hpp"
+#include "entities/block.hpp"
 
 namespace physics::Game {
 
-inline constexpr int width = default_width;   // px, the course's window
-inline constexpr int height = default_height;
-inline constexpr int wall_thickness = physics::wall_thickness;
-inline constexpr Color wall_blue = physics::wall_blue;    // horizontal walls
-inline constexpr Color wall_black = physics::wall_black;  // vertical walls
+inline constexpr int width = 800;  // px, the course's window
+inline constexpr int height = 600;
+inline constexpr int wall_thickness = 40;
+inline constexpr Color wall_blue{0, 0, 255, 255};  // horizontal walls
+inline constexpr Color wall_black{0, 0, 0, 255};   // vertical walls
+inline constexpr Color red{255, 0, 0, 255};        // the block of questions 4, 5 and 9
 
 // Q1. Four walls of infinite mass on the edges of a width × height screen:
 // top and bottom blue and full width, left and right black and between them,
 // 40 px thick, not overlapping. Scenes with `walls: true` are built with it.
 void init_walls(World& w, int width = Game::width, int height = Game::height, double restitution = 1.0);
 
-// Q9, the built-in scene `many` (the default): the walls, the red block of
-// questions 3-4 (40×40, mass 10, initial force (0.25, 0.25)) and ten squares
-// with a random side in [20, 40], a random mass in [1, 20) and a random
-// initial impulse in [0, 0.25) per axis, on a grid so that nothing overlaps.
+// The red block of questions 4, 5 and 9: 40×40 at (100, 100), mass 10.
+Block::t red_block(World& w);
+// Q4. The red block with the velocity (0.25, 0.25): with Move alone it
+// drifts through the walls (built-in scene `drift`).
+Block::t red_block_with_velocity(World& w);
+// Q5. The red block set going by the force (0.25, 0.25) on the first frame
+// instead: the same motion (built-in scene `impulse`).
+Block::t red_block_with_force(World& w);
+
+// Q9, the built-in scene `many` (the default): the walls, the red block set
+// going by the force (0.25, 0.25), and ten squares with a random side in
+// [20, 40], a random mass in [1, 20) and a random initial impulse in
+// [0, 0.25) per axis, on a grid so that nothing overlaps.
 void init_scene(World& w, std::uint64_t seed = 42);
 
-// Runs `frames` physics frames without any window and prints a summary.
-struct Summary {
-  std::int64_t frames = 0;
-  std::size_t bodies = 0, mobile = 0;
-  double ke_start = 0, ke_end = 0;
-  Vector p_start{}, p_end{};
-};
-// `after_step` (may be empty) sees the world after every frame: the trace.
-Summary run_headless(World& w, std::int64_t frames);
-template <class AfterStep>
-Summary run_headless(World& w, std::int64_t frames, AfterStep&& after_step);
-void print_summary(std::ostream& out, const World& w, const Summary& s, const std::string& why,
-                   const std::string& scene = "");
+// One frame of physics (the sheet: "call update in the main program"):
+// Forces, Move, Collision, each `substeps` times with dt / substeps.
+void step(World& w);
 
-// "forces 0.0012  move off ...": physics ms per step of each system, `off`
-// for the systems the scene left out.
-std::string system_times(const World& w);
-
-// The HUD line: fps, physics ms/step, body count, kinetic energy, momentum.
-std::string hud_line(const World& w, double fps);
-
-template <class AfterStep>
-Summary run_headless(World& w, std::int64_t frames, AfterStep&& after_step) {
-  Summary s;
-  s.bodies = w.components.size();
-  s.mobile = w.finite_bodies();
-  for (std::int64_t f = 0; f < frames; ++f) {
-    w.step();
-    after_step(static_cast<const World&>(w));
-    // Bodies start at rest with their first impulse pending in sum_forces;
-    // the motion they start with is the one after the first frame.
-    if (f == 0) {
-      s.ke_start = w.kinetic_energy();
-      s.p_start = w.momentum();
-    }
-  }
-  s.frames = frames;
-  s.ke_end = w.kinetic_energy();
-  s.p_end = w.momentum();
-  return s;
-}
+// Draw's part of the frame, on whatever canvas the front end gives.
+void draw(const World& w, Canvas& canvas);
 
 }  // namespace physics::Game

@@ -5,8 +5,9 @@
 
 #include <cmath>
 
-#include "entities/block.hpp"
-#include "world.hpp"
+#include <vector>
+
+#include "game.hpp"
 
 namespace physics::test {
 
@@ -18,6 +19,37 @@ inline World physics_world(Params p = {}) { return World(SystemSet{false, true, 
 inline bool overlaps(const Components& c, EntityId a, EntityId b) {
   const auto [p, r] = Rect::mdiff(c.position[a], c.box[a], c.position[b], c.box[b]);
   return Rect::has_origin(p, r);
+}
+
+// The Collision system's pass, on the pairs of the world's broad phase.
+inline void collide(World& w) { w.systems.collision->update(w.components, w.course_pairs()); }
+
+// The pairs the broad phase hands the course's pass, with boxes grown by
+// `margin` (nothing resolved, so nothing moves and no pair is added).
+inline std::vector<Pair> course_candidates(World& w, double margin) {
+  w.broadphase.course_margin = margin;
+  std::vector<Pair> out;
+  for (const Pair p : w.course_pairs()) out.push_back(p);
+  return out;
+}
+
+// The sheet's loop over every pair of the Collision system's bodies, O(n²):
+// the oracle of Collision::update.
+struct AllPairs {
+  std::vector<Contact> contacts;
+  std::size_t count = 0;
+};
+inline AllPairs update_all_pairs(World& w) {
+  AllPairs out;
+  const auto ids = w.systems.collision->entities();
+  for (std::size_t i = 0; i < ids.size(); ++i)
+    for (std::size_t j = i + 1; j < ids.size(); ++j) {
+      Contact contact;
+      if (!Collision::resolve(w.components, ids[i], ids[j], &contact)) continue;
+      ++out.count;
+      out.contacts.push_back(contact);
+    }
+  return out;
 }
 
 }  // namespace physics::test

@@ -8,7 +8,7 @@
 
 #include "game.hpp"
 #include "helpers.hpp"
-#include "systems/broadphase.hpp"
+#include "engine/broadphase.hpp"
 #include "utils/random.hpp"
 
 using namespace physics;
@@ -66,7 +66,7 @@ World make_scene(const Spec& s) {
         c.register_entity(Block::t{e});
       }
   }
-  w.systems.collision->margin = s.margin;
+  w.broadphase.course_margin = s.margin;
   w.systems.collision->record_contacts = true;
   return w;
 }
@@ -85,19 +85,18 @@ Outcome compare_with_oracle(const Spec& s, int frames) {
       w->systems.forces->update(w->components, w->params.dt, w->params.gravity);
       w->systems.move->update(w->components, w->params.dt);
     }
-    fast.systems.collision->update(fast.components);
-    oracle.systems.collision->update_all_pairs(oracle.components);
+    test::collide(fast);
+    const test::AllPairs all = test::update_all_pairs(oracle);
     const auto& a = fast.systems.collision->contacts();
-    const auto& b = oracle.systems.collision->contacts();
-    bool same = a.size() == b.size() &&
-                fast.systems.collision->contact_count() == oracle.systems.collision->contact_count();
+    const auto& b = all.contacts;
+    bool same = a.size() == b.size() && fast.systems.collision->contact_count() == all.count;
     for (std::size_t i = 0; same && i < a.size(); ++i)
       same = a[i].c == b[i].c && a[i].b == b[i].b && same_bits(a[i].penetration, b[i].penetration) &&
              same_bits(a[i].normal, b[i].normal) && a[i].approaching == b[i].approaching;
     out.bad_frames += !same;
     out.contacts += b.size();
-    out.requeries += fast.systems.collision->stats().requeries;
-    out.rebuilds += fast.systems.collision->stats().rebuilds;
+    out.requeries += fast.broadphase.stats().requeries;
+    out.rebuilds += fast.broadphase.stats().rebuilds;
   }
   for (EntityId e = 0; e < fast.components.size(); ++e)
     out.bad_bodies += !(same_bits(fast.components.position[e], oracle.components.position[e]) &&
@@ -204,17 +203,17 @@ BOOST_AUTO_TEST_CASE(many_large_bodies_find_the_same_pairs_as_all_pairs) {
   Random rng(5);
   for (int i = 0; i < 1000; ++i) Block::make(w, rng.uniform(40, 750), rng.uniform(40, 550), 2, 2, test::grey, 1.0);
   for (int i = 0; i < 100; ++i) Block::make(w, rng.uniform(40, 700), rng.uniform(40, 500), 60, 60, test::grey, 1.0);
-  const auto pairs = w.systems.collision->candidate_pairs(w.components, 1.0);
-  std::vector<std::pair<EntityId, EntityId>> expected;
+  const auto pairs = test::course_candidates(w, 1.0);
+  std::vector<Pair> expected;
   const auto ids = w.systems.collision->entities();
   const Components& k = w.components;
   for (std::size_t i = 0; i < ids.size(); ++i)
     for (std::size_t j = i + 1; j < ids.size(); ++j) {
       if (!std::isfinite(k.mass[ids[i]]) && !std::isfinite(k.mass[ids[j]])) continue;
       if (overlap(Aabb::around(k.position[ids[i]], k.box[ids[i]], 1.0), Aabb::around(k.position[ids[j]], k.box[ids[j]], 1.0)))
-        expected.emplace_back(ids[i], ids[j]);
+        expected.push_back({ids[i], ids[j]});
     }
-  BOOST_TEST(w.systems.collision->grid().large_count() >= 100u);
+  BOOST_TEST(w.broadphase.grid().large_count() >= 100u);
   BOOST_TEST(expected.size() > 500u);
   BOOST_TEST((pairs == expected));
 }
@@ -223,9 +222,9 @@ BOOST_AUTO_TEST_CASE(candidate_pairs_are_the_overlapping_grown_boxes_never_two_i
   for (const double margin : {0.0, 1.0, 7.5}) {
     World w = make_scene(Spec{.bodies = 300, .fixed_fraction = 0.2, .big_fraction = 0.05, .shuffle = true});
     const Collision& c = *w.systems.collision;
-    const auto pairs = w.systems.collision->candidate_pairs(w.components, margin);
+    const auto pairs = test::course_candidates(w, margin);
     // Brute force over the registration order, with the same boxes.
-    std::vector<std::pair<EntityId, EntityId>> expected;
+    std::vector<Pair> expected;
     const auto ids = c.entities();
     for (std::size_t i = 0; i < ids.size(); ++i)
       for (std::size_t j = i + 1; j < ids.size(); ++j) {
@@ -233,7 +232,7 @@ BOOST_AUTO_TEST_CASE(candidate_pairs_are_the_overlapping_grown_boxes_never_two_i
         if (!std::isfinite(k.mass[ids[i]]) && !std::isfinite(k.mass[ids[j]])) continue;
         if (overlap(Aabb::around(k.position[ids[i]], k.box[ids[i]], margin),
                     Aabb::around(k.position[ids[j]], k.box[ids[j]], margin)))
-          expected.emplace_back(ids[i], ids[j]);
+          expected.push_back({ids[i], ids[j]});
       }
     BOOST_TEST(pairs.size() == expected.size());
     BOOST_TEST((pairs == expected));
@@ -244,7 +243,7 @@ BOOST_AUTO_TEST_CASE(candidate_pairs_are_the_overlapping_grown_boxes_never_two_i
   // The walls touch at their corners; they never make a pair.
   World walls = test::physics_world();
   Game::init_walls(walls);
-  BOOST_TEST(walls.systems.collision->candidate_pairs(walls.components, 5.0).empty());
+  BOOST_TEST(test::course_candidates(walls, 5.0).empty());
 }
 
 BOOST_AUTO_TEST_CASE(sparse_gas_matches_the_all_pairs_loop_bit_for_bit) {
@@ -297,19 +296,19 @@ BOOST_AUTO_TEST_CASE(changes_between_passes_are_seen) {
   World w = test::physics_world();
   const auto a = Block::make(w, 100, 100, 20, 20, test::grey, 1.0);
   const auto b = Block::make(w, 500, 500, 20, 20, test::grey, 1.0);
-  w.systems.collision->update(w.components);
+  test::collide(w);
   BOOST_TEST(w.systems.collision->contact_count() == 0u);
   w.components.position[b.id] = {110, 110};
-  w.systems.collision->update(w.components);
+  test::collide(w);
   BOOST_TEST(w.systems.collision->contact_count() == 1u);
   w.components.position[b.id] = {125, 100};
   w.components.box[a.id] = {30, 20};
-  w.systems.collision->update(w.components);
+  test::collide(w);
   BOOST_TEST(w.systems.collision->contact_count() == 1u);
   w.components.mass[a.id] = w.components.mass[b.id] = infinity;
   w.components.position[b.id] = {110, 100};
-  BOOST_TEST(w.systems.collision->candidate_pairs(w.components, 0.0).empty());
-  w.systems.collision->update(w.components);
+  BOOST_TEST(test::course_candidates(w, 0.0).empty());
+  test::collide(w);
   BOOST_TEST(w.systems.collision->contact_count() == 0u);
 }
 

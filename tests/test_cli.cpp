@@ -11,11 +11,11 @@
 #include <fstream>
 #include <sstream>
 
-#include "builtin_scenes.hpp"
-#include "cli.hpp"
-#include "dump.hpp"
+#include "app/builtin_scenes.hpp"
+#include "app/cli.hpp"
+#include "app/dump.hpp"
 #include "helpers.hpp"
-#include "scene_json.hpp"
+#include "app/scene_json.hpp"
 
 using namespace physics;
 namespace fs = std::filesystem;
@@ -222,7 +222,7 @@ BOOST_AUTO_TEST_CASE(dump_is_the_final_state_exactly) {
   const Ran r = cli({"--scene", "many", "--frames", "120", "--dump", path});
   BOOST_TEST_REQUIRE(r.code == 0);
   World w = make_world(*find_builtin("many"), false);
-  for (int i = 0; i < 120; ++i) w.step();
+  for (int i = 0; i < 120; ++i) Game::step(w);
   const auto rows = csv(read(path));
   BOOST_TEST_REQUIRE(rows.size() == 1 + w.components.size());
   const std::vector<std::string> header{"id", "x", "y", "w", "h", "vx", "vy", "mass"};

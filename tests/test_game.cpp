@@ -1,5 +1,5 @@
 // Q8-Q9: whole scenes, headless.
-#include "game.hpp"
+#include "app/headless.hpp"
 #include "helpers.hpp"
 
 using namespace physics;
@@ -33,12 +33,12 @@ BOOST_AUTO_TEST_CASE(the_red_block_bounces_off_the_walls_keeping_its_speed) {
   Game::init_walls(w);
   const auto red = Block::make(w, 100, 100, 40, 40, Color{255, 0, 0, 255}, 10.0);
   w.components.sum_forces[red.id] = {0.25, 0.25};
-  w.step();
+  Game::step(w);
   const double ke = w.kinetic_energy();
   int reversals = 0;
   double last_vx = w.components.velocity[red.id].x;
   for (int i = 0; i < 3000; ++i) {
-    w.step();
+    Game::step(w);
     if (w.components.velocity[red.id].x != last_vx) ++reversals;
     last_vx = w.components.velocity[red.id].x;
     check_inside_walls(w);
@@ -75,11 +75,11 @@ BOOST_AUTO_TEST_CASE(the_default_scene_has_walls_and_varied_mobile_blocks) {
 BOOST_AUTO_TEST_CASE(ten_thousand_frames_stay_inside_the_walls_without_nan) {
   World w = test::physics_world();
   Game::init_scene(w);
-  w.step();
+  Game::step(w);
   const double ke0 = w.kinetic_energy();
   std::size_t contacts = 0;
   for (int i = 0; i < 10000; ++i) {
-    w.step();
+    Game::step(w);
     contacts += w.systems.collision->contact_count();
     check_inside_walls(w);
   }
@@ -93,7 +93,7 @@ BOOST_AUTO_TEST_CASE(the_scene_is_reproducible_for_a_seed) {
   Game::init_scene(a, 7);
   Game::init_scene(b, 7);
   Game::init_scene(c, 8);
-  for (int i = 0; i < 500; ++i) a.step(), b.step(), c.step();
+  for (int i = 0; i < 500; ++i) Game::step(a), Game::step(b), Game::step(c);
   BOOST_TEST((a.components.position == b.components.position));
   BOOST_TEST((a.components.velocity == b.components.velocity));
   BOOST_TEST(!(a.components.position == c.components.position));
@@ -102,13 +102,13 @@ BOOST_AUTO_TEST_CASE(the_scene_is_reproducible_for_a_seed) {
 BOOST_AUTO_TEST_CASE(headless_summary_reports_the_run) {
   World w = test::physics_world();
   Game::init_scene(w);
-  const auto s = Game::run_headless(w, 120);
+  const auto s = Headless::run(w, 120);
   BOOST_TEST(s.frames == 120);
   BOOST_TEST(s.bodies == 15u);
   BOOST_TEST(s.mobile == 11u);
   BOOST_TEST(s.ke_start > 0.0);
   std::ostringstream out;
-  Game::print_summary(out, w, s, "test");
+  Headless::print_summary(out, w, s, "test");
   BOOST_TEST(out.str().find("ran headless") != std::string::npos);
   BOOST_TEST(out.str().find("physics ms/step") != std::string::npos);
   BOOST_TEST(w.times.steps == 120);

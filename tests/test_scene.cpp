@@ -4,12 +4,12 @@
 #include <set>
 #include <sstream>
 
-#include "builtin_scenes.hpp"
-#include "dump.hpp"
-#include "game.hpp"
+#include "app/builtin_scenes.hpp"
+#include "app/dump.hpp"
+#include "app/headless.hpp"
 #include "helpers.hpp"
-#include "offscreen.hpp"
-#include "scene.hpp"
+#include "app/offscreen.hpp"
+#include "app/scene.hpp"
 #include "utils/random.hpp"
 
 using namespace physics;
@@ -97,21 +97,21 @@ BOOST_AUTO_TEST_CASE(each_step_of_the_sheet_declares_only_its_systems) {
 
 BOOST_AUTO_TEST_CASE(a_left_out_system_has_no_time_in_the_summary) {
   World w = make_world(builtin("drift"), false);
-  const auto s = Game::run_headless(w, 10);
+  const auto s = Headless::run(w, 10);
   std::ostringstream out;
-  Game::print_summary(out, w, s, "test", "drift");
+  Headless::print_summary(out, w, s, "test", "drift");
   const std::string text = out.str();
   BOOST_TEST(text.find("forces off") != std::string::npos);
   BOOST_TEST(text.find("collision off") != std::string::npos);
   BOOST_TEST(text.find("move off") == std::string::npos);
-  BOOST_TEST(w.times.ns[static_cast<int>(SystemId::forces)] == 0);
-  BOOST_TEST(w.times.ns[static_cast<int>(SystemId::collision)] == 0);
+  BOOST_TEST(w.times.ns[static_cast<int>(Stage::forces)] == 0);
+  BOOST_TEST(w.times.ns[static_cast<int>(Stage::collision)] == 0);
 }
 
 BOOST_AUTO_TEST_CASE(drift_passes_through_the_walls_and_bounce_does_not) {
   World drift = make_world(builtin("drift"), false);
   World bounce = make_world(builtin("bounce"), false);
-  for (int i = 0; i < 600; ++i) drift.step(), bounce.step();
+  for (int i = 0; i < 600; ++i) Game::step(drift), Game::step(bounce);
   BOOST_TEST(drift.components.position[4].x > 800.0);  // 4 walls first, then the red block
   BOOST_TEST(bounce.components.position[4].x < 760.0);
   BOOST_TEST(bounce.components.position[4].x > 40.0);
@@ -121,7 +121,7 @@ BOOST_AUTO_TEST_CASE(impulse_starts_from_a_force_not_a_velocity) {
   World w = make_world(builtin("impulse"), false);
   BOOST_TEST((w.components.velocity[4] == Vector::zero()));
   BOOST_TEST((w.components.sum_forces[4] == Vector{0.25, 0.25}));
-  w.step();
+  Game::step(w);
   BOOST_TEST(w.components.velocity[4].x == course_dt * 0.025);
 }
 
@@ -139,7 +139,7 @@ BOOST_AUTO_TEST_CASE(many_is_the_question_9_scene_bit_for_bit) {
     BOOST_TEST(state(game) == state(ref));
     BOOST_TEST((scene.components.sum_forces == ref.components.sum_forces));
     BOOST_TEST((scene.components.color == ref.components.color));
-    for (int i = 0; i < 200; ++i) ref.step(), scene.step();
+    for (int i = 0; i < 200; ++i) Game::step(ref), Game::step(scene);
     BOOST_TEST(state(scene) == state(ref));
   }
 }
@@ -149,7 +149,7 @@ BOOST_AUTO_TEST_CASE(cradle_hands_the_momentum_down_the_row) {
   BOOST_TEST(w.components.size() == 10u);
   const Vector p0 = w.momentum();
   // Before the striker arrives the row is still; once it has hit, the striker stops.
-  for (int i = 0; i < 60; ++i) w.step();
+  for (int i = 0; i < 60; ++i) Game::step(w);
   BOOST_TEST(w.components.velocity[4].x == 0.0);
   BOOST_TEST(w.components.velocity[9].x == 0.3);  // the far end carries it all
   BOOST_TEST(w.momentum().x == p0.x);
@@ -171,7 +171,7 @@ BOOST_AUTO_TEST_CASE(gas_has_hundreds_of_small_blocks_and_keeps_its_energy) {
   BOOST_TEST(ke > 0.0);
   std::size_t contacts = 0;
   for (int i = 0; i < 300; ++i) {
-    w.step();
+    Game::step(w);
     contacts += w.systems.collision->contact_count();
   }
   BOOST_TEST(contacts > 100u);
@@ -189,7 +189,7 @@ BOOST_AUTO_TEST_CASE(stack_stands_on_the_floor_under_gravity) {
   BOOST_TEST(*bottoms.rbegin() == 560.0);  // the floor's top
   for (EntityId a = 0; a < w.components.size(); ++a)
     for (EntityId b = a + 1; b < w.components.size(); ++b) BOOST_TEST(!test::overlaps(w.components, a, b));
-  for (int i = 0; i < 600; ++i) w.step();
+  for (int i = 0; i < 600; ++i) Game::step(w);
   // The towers stand: no block fell through the floor or off its tower.
   for (std::size_t e = 4; e < w.components.size(); ++e) {
     BOOST_TEST(w.components.position[e].y + 40 <= 560.0 + 1e-9);
@@ -313,7 +313,7 @@ BOOST_AUTO_TEST_CASE(an_impulse_becomes_the_velocity_change_impulse_over_mass) {
   b.impulse = {1.0, -2.0};
   s.blocks.push_back(b);
   World w = make_world(s, false);
-  w.step();
+  Game::step(w);
   BOOST_TEST(w.components.velocity[4].x == 0.25, boost::test_tools::tolerance(1e-15));
   BOOST_TEST(w.components.velocity[4].y == -0.5, boost::test_tools::tolerance(1e-15));
 }
@@ -399,8 +399,8 @@ BOOST_AUTO_TEST_CASE(the_offscreen_picture_paints_the_drawn_blocks) {
     const std::size_t i = (static_cast<std::size_t>(y) * 800 + x) * 3;
     return Color{rgb[i], rgb[i + 1], rgb[i + 2], 255};
   };
-  BOOST_TEST((px(400, 10) == wall_blue));
-  BOOST_TEST((px(10, 300) == wall_black));
+  BOOST_TEST((px(400, 10) == Game::wall_blue));
+  BOOST_TEST((px(10, 300) == Game::wall_black));
   BOOST_TEST((px(120, 120) == Color{255, 0, 0, 255}));       // the red block
   BOOST_TEST((px(340, 310) == default_block_color));         // the platform
   BOOST_TEST((px(400, 200) == Color{255, 255, 255, 255}));   // background

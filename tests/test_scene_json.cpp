@@ -4,10 +4,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "builtin_scenes.hpp"
-#include "dump.hpp"
+#include "app/builtin_scenes.hpp"
+#include "app/dump.hpp"
 #include "helpers.hpp"
-#include "scene_json.hpp"
+#include "app/scene_json.hpp"
 
 using namespace physics;
 
@@ -21,7 +21,7 @@ std::string scene_file(const std::string& name) {
 
 std::string state_after(const SceneSpec& s, int frames) {
   World w = make_world(s, false);
-  for (int i = 0; i < frames; ++i) w.step();
+  for (int i = 0; i < frames; ++i) Game::step(w);
   std::ostringstream o;
   Dump::write_state(o, w);
   return o.str();

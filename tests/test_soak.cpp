@@ -1,8 +1,8 @@
 // Soak, the short version of `make soak`: 10^5 steps of the gas and stack
 // scenes, checked every 10^4 steps.
-#include "builtin_scenes.hpp"
+#include "app/builtin_scenes.hpp"
 #include "helpers.hpp"
-#include "soak.hpp"
+#include "app/soak.hpp"
 
 using namespace physics;
 

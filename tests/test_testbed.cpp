@@ -2,9 +2,9 @@
 #include <algorithm>
 #include <vector>
 
-#include "builtin_scenes.hpp"
+#include "app/builtin_scenes.hpp"
 #include "helpers.hpp"
-#include "testbed.hpp"
+#include "app/testbed.hpp"
 
 using namespace physics;
 

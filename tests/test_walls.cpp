@@ -64,7 +64,7 @@ BOOST_AUTO_TEST_CASE(walls_never_move_under_collision_or_forces) {
   Game::init_walls(w);
   for (EntityId e = 0; e < 4; ++e) w.components.sum_forces[e] = {5.0, 5.0};
   const auto before = w.components.position;
-  for (int i = 0; i < 10; ++i) w.step();
+  for (int i = 0; i < 10; ++i) Game::step(w);
   BOOST_TEST((w.components.position == before));
   for (EntityId e = 0; e < 4; ++e) BOOST_TEST((w.components.velocity[e] == Vector::zero()));
 }

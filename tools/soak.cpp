@@ -6,8 +6,8 @@
 #include <cstdlib>
 #include <string>
 
-#include "builtin_scenes.hpp"
-#include "soak.hpp"
+#include "app/builtin_scenes.hpp"
+#include "app/soak.hpp"
 
 using namespace physics;
 

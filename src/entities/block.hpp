@@ -2,7 +2,7 @@
 #pragma once
 
 #include "component_defs.hpp"
-#include "world.hpp"
+#include "engine/world.hpp"
 
 namespace physics::Block {
 

@@ -1,5 +1,7 @@
 #include "reference/event_sim.hpp"
 
+#include "engine/contact.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -185,11 +187,9 @@ void EventSim::resolve(std::size_t i, std::size_t j, int axis) {
   double vn = Vector::dot(bi.v - bj.v, n);
   if (std::abs(vn) <= speed_floor(bi, bj)) vn = 0.0;  // touching, not hitting: no impulse
   const double e = std::min(bi.e, bj.e);
-  const double wi = finite(i) ? 1.0 / bi.m : 0.0, wj = finite(j) ? 1.0 / bj.m : 0.0;
   const double dv = -(1.0 + e) * vn;
   const Vector vi0 = bi.v, vj0 = bj.v;
-  bi.v = bi.v + (dv * (wi / (wi + wj))) * n;
-  bj.v = bj.v - (dv * (wj / (wi + wj))) * n;
+  change_normal_velocity(bi.v, bj.v, n, dv, inverse_mass(bi.m), inverse_mass(bj.m));  // the engine's law
   // A resting body that an impulse reaches is free again, and so is what rests on it.
   if (!(bi.v == vi0) && support_[i] >= 0) free_body(i);
   if (!(bj.v == vj0) && support_[j] >= 0) free_body(j);

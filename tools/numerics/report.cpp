@@ -139,7 +139,7 @@ Errors measure(const Scenario& s, const Mode& mode) {
   const auto involved = [&](std::size_t i) { return s.tracked < 0 ? std::isfinite(mass[i]) : i == static_cast<std::size_t>(s.tracked); };
   for (int f = 1; f <= frames; ++f) {
     for (std::size_t i = 0; i < n; ++i) v_before[i] = k.velocity[i];
-    w.step();
+    Game::step(w);
     // First impact: a velocity that is not free flight's v + g·dt.
     if (std::isnan(err.first_impact)) {
       for (std::size_t i = 0; i < n; ++i) {

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "entities/block.hpp"
-#include "world.hpp"
+#include "game.hpp"
+#include "engine/world.hpp"
 
 namespace physics::numerics {
 

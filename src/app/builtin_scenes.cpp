@@ -1,4 +1,4 @@
-#include "builtin_scenes.hpp"
+#include "app/builtin_scenes.hpp"
 
 #include <vector>
 

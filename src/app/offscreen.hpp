@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "world.hpp"
+#include "engine/world.hpp"
 
 namespace physics::Offscreen {
 

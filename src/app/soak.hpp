@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <string>
 
-#include "scene.hpp"
-#include "world.hpp"
+#include "app/scene.hpp"
+#include "engine/world.hpp"
 
 namespace physics {
 

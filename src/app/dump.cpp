@@ -1,4 +1,4 @@
-#include "dump.hpp"
+#include "app/dump.hpp"
 
 #include <charconv>
 #include <cmath>

@@ -5,7 +5,7 @@
 #include <span>
 #include <string_view>
 
-#include "scene.hpp"
+#include "app/scene.hpp"
 
 namespace physics {
 

@@ -1,4 +1,4 @@
-#include "systems/broadphase.hpp"
+#include "engine/broadphase.hpp"
 
 #include <algorithm>
 #include <bit>

@@ -1,4 +1,4 @@
-#include "scene.hpp"
+#include "app/scene.hpp"
 
 #include "game.hpp"
 

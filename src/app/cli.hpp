@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "scene.hpp"
-#include "testbed.hpp"
+#include "app/scene.hpp"
+#include "app/testbed.hpp"
 
 namespace physics::Cli {
 

@@ -3,13 +3,14 @@
 // tests and the testbed can hold several worlds at once.
 #pragma once
 
-#include <array>
 #include <cstdint>
 
 #include "component_defs.hpp"
 #include "system_defs.hpp"
-#include "systems/ccd.hpp"
-#include "systems/contact_solver.hpp"
+#include "engine/ccd.hpp"
+#include "engine/contact_solver.hpp"
+#include "engine/pairs.hpp"
+#include "engine/timing.hpp"
 
 namespace physics {
 
@@ -32,43 +33,36 @@ struct Params {
 // Throws std::invalid_argument naming the bad parameter.
 void validate(const Params& p);
 
-// Wall-clock time spent in each physics system since the world was made.
-struct SystemTimes {
-  std::array<std::int64_t, 4> ns{};  // indexed by SystemId
-  std::int64_t steps = 0;
-  double ms_per_step(SystemId s) const;
-  double total_ms_per_step() const;
-};
-
 struct World {
   Components components;
   Systems systems;
   Params params;
-  SystemTimes times;
+  StageTimes times;
   std::int64_t frame = 0;
-  // State of the numerics options (Params::ccd, Params::solver): impact
-  // counters and the stable solver's warm-start impulses. Unused in the
-  // course mode.
+  // The engine beside the course's systems: the one broad phase every stage
+  // takes its pairs from, and the state of the numerics options (Params::ccd,
+  // Params::solver): impact counters and the stable solver's warm-start
+  // impulses. The course mode uses the broad phase alone.
+  BroadPhase broadphase;
   Ccd ccd;
   ContactSolver contact_solver;
 
   explicit World(SystemSet set = {}, Params p = {});
 
-  // One frame of physics, in the sheet's order: Forces, Move, Collision.
-  // (Draw is the front end's business.) With ccd or the stable solver, each
-  // substep runs Forces, [stable: solve velocities], [ccd: impacts], Move,
-  // then stable: project positions / course: the sheet's Collision pass; the
-  // time of all but Forces and Move counts as Collision's.
-  void step();
+  // The engine's stages around Move in a substep of h ms (Game::step calls
+  // them; they do nothing in the course mode): before Move, the stable
+  // solver's velocities and CCD's impacts; after it, the stable solver's
+  // position projection, which replaces the course's Collision pass.
+  void before_move(double h);
+  void after_move();
+  // The pairs of the Collision system's bodies, for its pass.
+  BroadPhase::CoursePairs course_pairs();
 
   // Diagnostics over finite masses (fixed bodies carry no kinetic energy and
   // an infinite momentum that means nothing).
   double kinetic_energy() const;
   Vector momentum() const;
   std::size_t finite_bodies() const;
-
- private:
-  void step_numerics(double h);
 };
 
 }  // namespace physics

@@ -1,4 +1,4 @@
-#include "scene_json.hpp"
+#include "app/scene_json.hpp"
 
 #include <algorithm>
 #include <cerrno>

@@ -14,7 +14,7 @@
 #include <string>
 #include <string_view>
 
-#include "scene.hpp"
+#include "app/scene.hpp"
 
 namespace physics {
 

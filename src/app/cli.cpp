@@ -1,4 +1,4 @@
-#include "cli.hpp"
+#include "app/cli.hpp"
 
 #include <boost/program_options.hpp>
 #include <charconv>
@@ -8,11 +8,11 @@
 #include <iostream>
 #include <sstream>
 
-#include "builtin_scenes.hpp"
-#include "dump.hpp"
-#include "game.hpp"
-#include "offscreen.hpp"
-#include "scene_json.hpp"
+#include "app/builtin_scenes.hpp"
+#include "app/dump.hpp"
+#include "app/headless.hpp"
+#include "app/offscreen.hpp"
+#include "app/scene_json.hpp"
 
 namespace physics::Cli {
 namespace po = boost::program_options;
@@ -106,8 +106,8 @@ int headless_run(const SceneSpec& spec, const Options& o, Recorder& rec, const s
   World w = make_world(spec, picture && spec.systems.draw, scene_source(o.scene));
   rec.start(w);
   const std::int64_t frames = o.frames.value_or(picture ? screenshot_frames : headless_frames);
-  const auto summary = Game::run_headless(w, frames, [&](const World& world) { rec.after_step(world); });
-  Game::print_summary(out, w, summary, why, spec.name);
+  const auto summary = Headless::run(w, frames, [&](const World& world) { rec.after_step(world); });
+  Headless::print_summary(out, w, summary, why, spec.name);
   rec.finish(w);
   if (picture && !Offscreen::screenshot(w, spec.width, spec.height, o.screenshot)) {
     err << "game: --screenshot: cannot write " << o.screenshot << "\n";

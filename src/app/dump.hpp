@@ -9,7 +9,7 @@
 #include <iosfwd>
 #include <string>
 
-#include "world.hpp"
+#include "engine/world.hpp"
 
 namespace physics::Dump {
 

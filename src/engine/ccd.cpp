@@ -1,10 +1,11 @@
-#include "systems/ccd.hpp"
+#include "engine/ccd.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <queue>
 
+#include "engine/contact.hpp"
 #include "systems/collision.hpp"
 #include "utils/rect.hpp"
 
@@ -73,10 +74,11 @@ std::optional<Impact> Ccd::time_of_impact(const Components& k, EntityId c, Entit
   return Impact{t0, n};
 }
 
-void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h, Vector gravity) {
+void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h, Vector gravity,
+                  BroadPhase& broadphase) {
   const std::size_t count = entities.size();
   if (count < 2) return;
-  pair_finder_.find(k, entities, h, 0.0, pairs_);
+  broadphase.find(k, entities, h, 0.0, pairs_);
   if (pairs_.empty()) return;
 
   // Registration index of each entity, and a version per body: an event
@@ -91,7 +93,7 @@ void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h, V
     if (const auto hit = time_of_impact(k, entities[ic], entities[ib], t0, h))
       queue.push(Event{hit->t, ic, ib, version[ic], version[ib]});
   };
-  for (const BodyPair& p : pairs_) predict(index[p.c], index[p.b], 0.0);
+  for (const Pair& p : pairs_) predict(index[p.c], index[p.b], 0.0);
 
   const std::int64_t budget = 16 * static_cast<std::int64_t>(count) + 128;
   std::int64_t resolved = 0;
@@ -116,10 +118,9 @@ void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h, V
     const Vector n = hit->n;
     const Vector vc = k.velocity[c], vb = k.velocity[b];
     const double vn = Vector::dot(vc - vb, n);
-    // The course's impulse, written as in Collision::resolve so that a wall
-    // reverses the normal velocity exactly.
+    // The course's impulse (the engine's one contact law), restitution the
+    // smaller of the pair's.
     const double e = std::min(k.restitution[c], k.restitution[b]);
-    const double wc = 1.0 / k.mass[c], wb = 1.0 / k.mass[b];
     // Gravity: Forces gave the whole substep's kick g·h at its start, but the
     // impact happens at t; the kick after t must not be reflected. The
     // normal velocity after the substep is -e·v_n + (1+e)(a·n)(h - t), a the
@@ -132,8 +133,8 @@ void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h, V
     const Vector ab = std::isfinite(k.mass[b]) ? gravity : Vector{};
     const double kick = std::max((1.0 + e) * Vector::dot(ac - ab, n) * (h - ev.t), e * vn);
     const double dv = -(1.0 + e) * vn + kick;
-    const Vector vc2 = vc + (dv * (wc / (wc + wb))) * n;
-    const Vector vb2 = vb - (dv * (wb / (wc + wb))) * n;
+    Vector vc2 = vc, vb2 = vb;
+    change_normal_velocity(vc2, vb2, n, dv, inverse_mass(k.mass[c]), inverse_mass(k.mass[b]));
     // Keep position + t·velocity continuous at t (see the header).
     k.position[c] = k.position[c] + ev.t * (vc - vc2);
     k.position[b] = k.position[b] + ev.t * (vb - vb2);

@@ -6,8 +6,11 @@
 // the floor by the ones above, and a heavy block on a light one drives it
 // through the floor: the one pass cannot carry a weight down to the ground.
 //
-// This solver, per substep of h ms:
-//  1. solve_velocities, before Move: contacts are the pairs whose boxes are
+// This solver, per substep of h ms, in named stages (as Box2D v3's
+// contact_solver.h: prepare, warm start, solve, restitution, store), each
+// timed under its own name (engine/timing.hpp):
+//  1. solve_velocities, before Move: prepare, warm_start, relax, restitution,
+//     impact_time, store. contacts are the pairs whose boxes are
 //     closer than `margin` along their separating axis (speculative, so a
 //     resting body is caught before it sinks). Sequential impulses, each
 //     clamped so that the impulse accumulated on a contact never pulls
@@ -23,7 +26,7 @@
 //     ground up, the lower body treated as immovable. It runs only on bodies
 //     that rest on a fixed one through such contacts; free bodies keep the
 //     plain, momentum-conserving impulses.
-//  2. solve_positions, after Move: what still overlaps by more than `slop` is
+//  2. solve_positions (stage `positions`), after Move: what still overlaps by more than `slop` is
 //     projected apart (non-linear Gauss-Seidel on positions, shared in
 //     proportion to inverse masses, then the same bottom-up pass). Positions
 //     only: no velocity is added, so no energy is (unlike a Baumgarte bias).
@@ -35,7 +38,8 @@
 #include <vector>
 
 #include "component_defs.hpp"
-#include "systems/pairs.hpp"
+#include "engine/pairs.hpp"
+#include "engine/timing.hpp"
 
 namespace physics {
 
@@ -53,41 +57,57 @@ struct SolverStats {
   std::int64_t energy_clamps = 0;  // body velocities the energy guard scaled back
 };
 
+// One contact as the solver's iterations read it: the pair, its axis and
+// inverse masses, and the accumulated impulses.
+struct ContactConstraint {
+  EntityId c, b;
+  int axis;          // 0: -x, 1: +x, 2: -y, 3: +y (the normal that moves c away from b)
+  double wc, wb;     // inverse masses
+  double inv_w;      // 1 / (wc + wb): the iterations multiply by it (a division there sat on the dependency chain)
+  double target;     // lowest allowed (v_c - v_b)·n
+  double lambda;     // accumulated impulse
+  double lambda2;    // accumulated in the relaxation after the bounces
+  double restitution;  // of an impact: bounce impulse = restitution × lambda
+  double toi;          // of an impact found before touching: ms into the substep
+  bool resting;      // no restitution target: its impulse may warm start the next substep
+};
+
 class ContactSolver {
  public:
   void solve_velocities(Components& k, std::span<const EntityId> entities, double h, Vector gravity,
-                        const SolverSettings& s);
-  void solve_positions(Components& k, std::span<const EntityId> entities, Vector gravity,
-                       const SolverSettings& s);
+                        const SolverSettings& s, BroadPhase& broadphase, StageTimes& times);
+  void solve_positions(Components& k, std::span<const EntityId> entities, Vector gravity, const SolverSettings& s,
+                       BroadPhase& broadphase, StageTimes& times);
 
   SolverStats stats;
 
-  struct Contact {
-    EntityId c, b;
-    int axis;          // 0: -x, 1: +x, 2: -y, 3: +y (the normal that moves c away from b)
-    double wc, wb;     // inverse masses
-    double inv_w;      // 1 / (wc + wb): the iterations multiply by it (a division there sat on the dependency chain)
-    double target;     // lowest allowed (v_c - v_b)·n
-    double lambda;     // accumulated impulse
-    double lambda2;    // accumulated in the relaxation after the bounces
-    double restitution;  // of an impact: bounce impulse = restitution × lambda
-    double toi;          // of an impact found before touching: ms into the substep
-    bool resting;      // no restitution target: its impulse may warm start the next substep
-  };
-
  private:
+  // The stages of solve_velocities, in order.
+  void prepare(const Components& k, std::span<const EntityId> entities, double h, Vector g, const SolverSettings& s,
+               BroadPhase& broadphase);
+  void warm_start(Components& k);
+  template <bool after_bounce>
+  void relax(Components& k, Vector g, const SolverSettings& s);
+  void restitution(Components& k, Vector g, const SolverSettings& s);
   void guard_energy(Components& k);
+  void impact_time(Components& k, double h, Vector g);
+  void store();
+  // solve_positions' stages.
+  bool prepare_positions(const Components& k, std::span<const EntityId> entities, const SolverSettings& s,
+                         BroadPhase& broadphase);
+  void project(Components& k, Vector g, const SolverSettings& s);
 
-  std::vector<BodyPair> pairs_;
-  PairFinder pair_finder_;
+  std::vector<Pair> pairs_;
+  std::vector<ContactConstraint> contacts_;
+  std::vector<std::size_t> support_order_;     // bottom-up order of this substep's contacts
+  bool have_order_ = false;
   std::vector<Vector> v_start_, v_inelastic_;  // indexed by entity id
   std::vector<EntityId> parent_;               // union-find of islands
   std::vector<std::uint32_t> island_;
   std::vector<std::uint8_t> seen_;             // guard_energy: bodies of the contacts
   std::vector<std::uint32_t> root_index_;      // guard_energy: island of each root
   std::vector<double> toi_;                    // earliest impact time per body, indexed by entity id
-  std::vector<Contact> contacts_;
-  // Impulses of the previous substep's resting contacts: (c << 32 | b, axis,
+  // Impulses of the previous substep's resting contacts: (pair key, axis,
   // impulse), sorted.
   std::vector<std::tuple<std::uint64_t, int, double>> warm_;
 };

@@ -1,4 +1,4 @@
-#include "systems/contact_solver.hpp"
+#include "engine/contact_solver.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,6 +6,7 @@
 #include <tuple>
 #include <type_traits>
 
+#include "engine/contact.hpp"
 #include "utils/rect.hpp"
 
 namespace physics {
@@ -44,9 +45,12 @@ std::pair<int, double> best_axis(const Components& k, EntityId c, EntityId b) {
   return {best, gaps[best]};
 }
 
-std::uint64_t key(EntityId c, EntityId b) { return (static_cast<std::uint64_t>(c) << 32) | b; }
+std::uint64_t key(EntityId c, EntityId b) { return Pair{c, b}.key(); }
 
-double inverse_mass(double m) { return std::isfinite(m) ? 1.0 / m : 0.0; }
+// The contact law (engine/contact.hpp) on a contact's axis.
+void apply(Components& k, const ContactConstraint& ct, double impulse) {
+  apply_normal_impulse(k.velocity[ct.c], k.velocity[ct.b], axis_normal[ct.axis], impulse, ct.wc, ct.wb);
+}
 
 // Which body of a contact bears the other's weight: the one lying in the
 // direction of gravity. 0: neither (side contact, or no gravity).
@@ -133,14 +137,26 @@ std::vector<std::size_t> bottom_up(const Components& k, const Contacts& contacts
 }  // namespace
 
 void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> entities, double h, Vector g,
-                                     const SolverSettings& s) {
-  pair_finder_.find(k, entities, h, s.margin, pairs_);
+                                     const SolverSettings& s, BroadPhase& broadphase, StageTimes& times) {
+  times.time(Stage::pairs, [&] { broadphase.find(k, entities, h, s.margin, pairs_); });
+  times.time(Stage::prepare, [&] { prepare(k, entities, h, g, s, broadphase); });
+  times.time(Stage::warm_start, [&] { warm_start(k); });
+  times.time(Stage::relax, [&] { relax<false>(k, g, s); });
+  times.time(Stage::restitution, [&] { restitution(k, g, s); });
+  times.time(Stage::impact_time, [&] { impact_time(k, h, g); });
+  times.time(Stage::store, [&] { store(); });
+}
+
+// Contacts are the pairs whose boxes are closer than the margin along their
+// separating axis, or will be within this substep (speculative).
+void ContactSolver::prepare(const Components& k, std::span<const EntityId>, double h, Vector g,
+                            const SolverSettings& s, BroadPhase&) {
   contacts_.clear();
+  have_order_ = false;
   // Slower than the speed gravity gives in two substeps: a resting contact,
   // not an impact, so no bounce (otherwise a block on the floor would hop).
   const double threshold = 2.0 * Vector::norm(g) * h + 1e-12;
-  std::vector<std::tuple<std::uint64_t, int, double>> next_warm;
-  for (const BodyPair& p : pairs_) {
+  for (const Pair& p : pairs_) {
     const auto [axis, gap] = best_axis(k, p.c, p.b);
     const Vector n = axis_normal[axis];
     const double vn = Vector::dot(k.velocity[p.c] - k.velocity[p.b], n);
@@ -153,7 +169,7 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
     // keeps the resting contacts, which CCD alone cannot hold.
     if (impact && !s.impacts) continue;
     const double wc = inverse_mass(k.mass[p.c]), wb = inverse_mass(k.mass[p.b]);
-    Contact ct{p.c, p.b, axis, wc, wb, 1.0 / (wc + wb), 0.0, 0.0, 0.0, 0.0, 0.0, true};
+    ContactConstraint ct{p.c, p.b, axis, wc, wb, 1.0 / (wc + wb), 0.0, 0.0, 0.0, 0.0, 0.0, true};
     if (impact) {
       // A real impact this substep: stopped here (target 0), then bounced by
       // e times the stopping impulse once the iterations are done.
@@ -167,26 +183,20 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
     contacts_.push_back(ct);
   }
   stats.contacts += static_cast<std::int64_t>(contacts_.size());
-
-  // Velocities before any impulse, for the energy guard at the end.
+  // Velocities before any impulse, for the energy guard and the impact time.
   v_start_.resize(k.size());
   v_inelastic_.resize(k.size());
-  for (const Contact& ct : contacts_) v_start_[ct.c] = k.velocity[ct.c], v_start_[ct.b] = k.velocity[ct.b];
+  for (const ContactConstraint& ct : contacts_) v_start_[ct.c] = k.velocity[ct.c], v_start_[ct.b] = k.velocity[ct.b];
+}
 
-  const auto apply = [&](Contact& ct, double impulse) {
-    const Vector n = axis_normal[ct.axis];
-    k.velocity[ct.c] = k.velocity[ct.c] + (ct.wc * impulse) * n;
-    k.velocity[ct.b] = k.velocity[ct.b] - (ct.wb * impulse) * n;
-  };
-
-  // Warm start: a resting contact that was there last substep starts with the
-  // impulse it ended with (a stack's weight is then carried from the start).
-  // Contacts mostly come in the order of warm_ (pairs in registration
-  // order, ids mostly registered in increasing order), so each search starts
-  // where the last one ended when it can: a merge, not a binary search from
-  // scratch per contact.
+// A resting contact that was there last substep starts with the impulse it
+// ended with (a stack's weight is then carried from the start). Contacts
+// mostly come in the order of warm_ (pairs in registration order, ids mostly
+// registered in increasing order), so each search starts where the last one
+// ended when it can: a merge, not a binary search from scratch per contact.
+void ContactSolver::warm_start(Components& k) {
   auto from = warm_.begin();
-  for (Contact& ct : contacts_) {
+  for (ContactConstraint& ct : contacts_) {
     if (!ct.resting) continue;
     const auto kk = key(ct.c, ct.b);
     const auto probe = std::make_tuple(kk, ct.axis, -infinity);
@@ -201,106 +211,108 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
     from = it;
     if (it != warm_.end() && std::get<0>(*it) == kk && std::get<1>(*it) == ct.axis) {
       ct.lambda = std::get<2>(*it);
-      apply(ct, ct.lambda);
+      apply(k, ct, ct.lambda);
     }
   }
+}
 
-  // Sequential impulses with accumulated clamping, then the bottom-up pass.
-  // `after_bounce`: the same on the velocities the restitution left, with
-  // fresh accumulators and no approach allowed at the impacts (see below).
-  // The support order depends only on the contacts, not on velocities: both
-  // relaxations share it.
-  std::vector<std::size_t> support_order;
-  bool have_order = false;
-  // after_bounce is a compile-time constant (std::bool_constant), so the
-  // inner loop carries no test of it.
-  const auto relax = [&](auto after_bounce_tag) {
-    constexpr bool after_bounce = decltype(after_bounce_tag)::value;
-    for (Contact& ct : contacts_) ct.lambda2 = 0.0;
-    const auto target = [&](const Contact& ct) { return after_bounce && !ct.resting ? 0.0 : ct.target; };
-    for (int it = 0; it < s.iterations; ++it) {
-      for (Contact& ct : contacts_) {
-        const double vn = Vector::dot(k.velocity[ct.c] - k.velocity[ct.b], axis_normal[ct.axis]);
-        double& acc = after_bounce ? ct.lambda2 : ct.lambda;
-        const double lambda = std::max(acc - (vn - target(ct)) * ct.inv_w, 0.0);
-        apply(ct, lambda - acc);
-        acc = lambda;
-      }
+// Sequential impulses with accumulated clamping, then the bottom-up pass.
+// `after_bounce`: the same on the velocities the restitution left, with
+// fresh accumulators and no approach allowed at the impacts (a compile-time
+// constant, so the inner loop carries no test of it). The support order
+// depends only on the contacts, not on velocities: both relaxations share it.
+template <bool after_bounce>
+void ContactSolver::relax(Components& k, Vector g, const SolverSettings& s) {
+  for (ContactConstraint& ct : contacts_) ct.lambda2 = 0.0;
+  const auto target = [&](const ContactConstraint& ct) { return after_bounce && !ct.resting ? 0.0 : ct.target; };
+  for (int it = 0; it < s.iterations; ++it) {
+    for (ContactConstraint& ct : contacts_) {
+      const double vn = Vector::dot(k.velocity[ct.c] - k.velocity[ct.b], axis_normal[ct.axis]);
+      double& acc = after_bounce ? ct.lambda2 : ct.lambda;
+      const double lambda = std::max(acc - (vn - target(ct)) * ct.inv_w, 0.0);
+      apply(k, ct, lambda - acc);
+      acc = lambda;
     }
-    if (!s.shock_propagation || Vector::is_zero(g)) return;
-    if (!have_order) support_order = bottom_up(k, contacts_, g), have_order = true;
-    for (const std::size_t i : support_order) {
-      const Contact& ct = contacts_[i];
-      const Vector n = axis_normal[ct.axis];
-      const double vn = Vector::dot(k.velocity[ct.c] - k.velocity[ct.b], n);
-      if (vn >= target(ct)) continue;
-      // The lower body is immovable for this pass: the upper takes it all.
-      if (support_sign(ct.axis, g) > 0) {
-        if (ct.wc > 0.0) k.velocity[ct.c] = k.velocity[ct.c] + (target(ct) - vn) * n;
-      } else {
-        if (ct.wb > 0.0) k.velocity[ct.b] = k.velocity[ct.b] - (target(ct) - vn) * n;
-      }
+  }
+  if (!s.shock_propagation || Vector::is_zero(g)) return;
+  if (!have_order_) support_order_ = bottom_up(k, contacts_, g), have_order_ = true;
+  for (const std::size_t i : support_order_) {
+    const ContactConstraint& ct = contacts_[i];
+    const Vector n = axis_normal[ct.axis];
+    const double vn = Vector::dot(k.velocity[ct.c] - k.velocity[ct.b], n);
+    if (vn >= target(ct)) continue;
+    // The lower body is immovable for this pass: the upper takes it all.
+    if (support_sign(ct.axis, g) > 0) {
+      if (ct.wc > 0.0) k.velocity[ct.c] = k.velocity[ct.c] + (target(ct) - vn) * n;
+    } else {
+      if (ct.wb > 0.0) k.velocity[ct.b] = k.velocity[ct.b] - (target(ct) - vn) * n;
     }
-  };
-  relax(std::false_type{});
+  }
+}
 
-  // Restitution, Poisson's way: each impact gets e times the impulse that
-  // stopped it. With one e for all contacts this is v+ = v_c + e (v_c - v-),
-  // v_c the inelastic (projected) velocity, so |v+| <= |v-| in the mass
-  // norm: the energy never grows, even for simultaneous contacts (a target
-  // velocity -e·v_n per contact, Newton's way, can gain energy there).
-  for (const Contact& ct : contacts_) v_inelastic_[ct.c] = k.velocity[ct.c], v_inelastic_[ct.b] = k.velocity[ct.b];
+// Restitution, Poisson's way: each impact gets e times the impulse that
+// stopped it. With one e for all contacts this is v+ = v_c + e (v_c - v-),
+// v_c the inelastic (projected) velocity, so |v+| <= |v-| in the mass norm:
+// the energy never grows, even for simultaneous contacts (a target velocity
+// -e·v_n per contact, Newton's way, can gain energy there).
+void ContactSolver::restitution(Components& k, Vector g, const SolverSettings& s) {
+  for (const ContactConstraint& ct : contacts_)
+    v_inelastic_[ct.c] = k.velocity[ct.c], v_inelastic_[ct.b] = k.velocity[ct.b];
   bool bounced = false;
-  for (Contact& ct : contacts_)
-    if (!ct.resting && ct.restitution > 0.0 && ct.lambda > 0.0) apply(ct, ct.restitution * ct.lambda), bounced = true;
+  for (ContactConstraint& ct : contacts_)
+    if (!ct.resting && ct.restitution > 0.0 && ct.lambda > 0.0) apply(k, ct, ct.restitution * ct.lambda), bounced = true;
   // The bounce impulses were computed contact by contact: a light block
   // lying on the floor when a heavy one lands on it gets e times its share
   // pushing it into the floor, which nothing would then hold. Relax again.
-  if (bounced) relax(std::true_type{});
+  if (bounced) relax<true>(k, g, s);
   guard_energy(k);
+}
 
-  // An impact found before the bodies touch (gap > 0) happens at toi within
-  // the substep, not at its start: shift each body by toi·(v_before - v_after)
-  // of that impulse, so that Move's x += h·v ends it where the motion that
-  // changes velocity at toi does (what Ccd does at each impact). Without it a
-  // bounce happens up to |v|·h early, and under gravity each such bounce
-  // gains energy (g·v·h).
-  //
-  // And, as in Ccd, the part of the substep's gravity kick that comes after
-  // the impact is not reflected: against a fixed body the normal velocity
-  // gets (1+e)(a·n)(h - toi), never enough to turn the pair back. A body
-  // landing on the floor then rests instead of hopping g·h, and bounces do
-  // not drift the energy up.
-  for (const Contact& ct : contacts_) {
+// An impact found before the bodies touch (gap > 0) happens at toi within the
+// substep, not at its start: shift each body by toi·(v_before - v_after) of
+// that impulse, so that Move's x += h·v ends it where the motion that changes
+// velocity at toi does (what Ccd does at each impact). Without it a bounce
+// happens up to |v|·h early, and under gravity each such bounce gains energy
+// (g·v·h).
+//
+// And, as in Ccd, the part of the substep's gravity kick that comes after the
+// impact is not reflected: against a fixed body the normal velocity gets
+// (1+e)(a·n)(h - toi), never enough to turn the pair back. A body landing on
+// the floor then rests instead of hopping g·h, and bounces do not drift the
+// energy up.
+void ContactSolver::impact_time(Components& k, double h, Vector g) {
+  for (const ContactConstraint& ct : contacts_) {
     if (ct.resting) continue;
     const Vector n = axis_normal[ct.axis];
     const Vector a = (ct.wc > 0.0 ? g : Vector{}) - (ct.wb > 0.0 ? g : Vector{});
     const double vn = Vector::dot(k.velocity[ct.c] - k.velocity[ct.b], n);
     const double extra = std::max((1.0 + ct.restitution) * Vector::dot(a, n) * (h - ct.toi), -vn);
     if (extra >= 0.0) continue;
-    const double w = ct.wc + ct.wb;
-    k.velocity[ct.c] = k.velocity[ct.c] + (extra * (ct.wc / w)) * n;
-    k.velocity[ct.b] = k.velocity[ct.b] - (extra * (ct.wb / w)) * n;
+    change_normal_velocity(k.velocity[ct.c], k.velocity[ct.b], n, extra, ct.wc, ct.wb);
   }
   // The shift uses each body's net velocity change (a light block lying on
   // the floor when a heavy one lands on it is held by the floor: it must not
   // be shifted by what the heavy one's impulse alone would do), and its
   // earliest such impact.
   toi_.assign(k.size(), infinity);
-  for (const Contact& ct : contacts_) {
+  for (const ContactConstraint& ct : contacts_) {
     if (ct.resting || ct.toi <= 0.0) continue;
     toi_[ct.c] = std::min(toi_[ct.c], ct.toi);
     toi_[ct.b] = std::min(toi_[ct.b], ct.toi);
   }
-  for (const Contact& ct : contacts_) {
+  for (const ContactConstraint& ct : contacts_) {
     for (const EntityId e : {ct.c, ct.b}) {
       if (!(toi_[e] < infinity) || !std::isfinite(k.mass[e])) continue;
       k.position[e] = k.position[e] + toi_[e] * (v_start_[e] - k.velocity[e]);
       toi_[e] = infinity;  // once per body
     }
   }
+}
 
-  for (const Contact& ct : contacts_)
+// The resting contacts' impulses, for the next substep's warm start.
+void ContactSolver::store() {
+  std::vector<std::tuple<std::uint64_t, int, double>> next_warm;
+  for (const ContactConstraint& ct : contacts_)
     if (ct.resting && ct.lambda + ct.lambda2 > 0.0) next_warm.emplace_back(key(ct.c, ct.b), ct.axis, ct.lambda + ct.lambda2);
   if (!std::is_sorted(next_warm.begin(), next_warm.end())) std::sort(next_warm.begin(), next_warm.end());
   warm_ = std::move(next_warm);
@@ -325,17 +337,17 @@ void ContactSolver::guard_energy(Components& k) {
     return 0.5 * m * Vector::dot(v1, v1) > 0.5 * m * Vector::dot(v0, v0);
   };
   bool gained = false;
-  for (const Contact& ct : contacts_)
+  for (const ContactConstraint& ct : contacts_)
     gained = gained || (ct.wc > 0.0 && body_gained(ct.c)) || (ct.wb > 0.0 && body_gained(ct.b));
   if (!gained) return;
   const auto n = k.size();
   parent_.resize(n);
-  for (const Contact& ct : contacts_) parent_[ct.c] = ct.c, parent_[ct.b] = ct.b;
+  for (const ContactConstraint& ct : contacts_) parent_[ct.c] = ct.c, parent_[ct.b] = ct.b;
   const auto find = [&](EntityId x) {
     while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
     return x;
   };
-  for (const Contact& ct : contacts_)
+  for (const ContactConstraint& ct : contacts_)
     if (ct.wc > 0.0 && ct.wb > 0.0) parent_[find(ct.c)] = find(ct.b);
 
   struct Sums {
@@ -345,7 +357,7 @@ void ContactSolver::guard_energy(Components& k) {
   // the sums below are taken in), found by marking: no sort.
   std::vector<EntityId> bodies;
   seen_.assign(n, 0);
-  for (const Contact& ct : contacts_) {
+  for (const ContactConstraint& ct : contacts_) {
     if (ct.wc > 0.0) seen_[ct.c] = 1;
     if (ct.wb > 0.0) seen_[ct.b] = 1;
   }
@@ -405,23 +417,35 @@ void ContactSolver::guard_energy(Components& k) {
 }
 
 void ContactSolver::solve_positions(Components& k, std::span<const EntityId> entities, Vector g,
-                                    const SolverSettings& s) {
+                                    const SolverSettings& s, BroadPhase& broadphase, StageTimes& times) {
   // Touching pairs too (within the margin): they take no correction but link
   // the support graph of the bottom-up pass down to the ground.
-  pair_finder_.find(k, entities, 0.0, s.margin, pairs_);
+  times.time(Stage::pairs, [&] { broadphase.find(k, entities, 0.0, s.margin, pairs_); });
+  times.time(Stage::positions, [&] {
+    if (prepare_positions(k, entities, s, broadphase)) project(k, g, s);
+  });
+}
+
+// The contacts within the margin; whether any overlaps by more than the slop.
+bool ContactSolver::prepare_positions(const Components& k, std::span<const EntityId>, const SolverSettings& s,
+                                      BroadPhase&) {
   contacts_.clear();
   bool any_overlap = false;
-  for (const BodyPair& p : pairs_) {
+  for (const Pair& p : pairs_) {
     const auto [axis, gap] = best_axis(k, p.c, p.b);
     if (gap > s.margin) continue;
     any_overlap = any_overlap || gap < -s.slop;
     const double wc = inverse_mass(k.mass[p.c]), wb = inverse_mass(k.mass[p.b]);
-    contacts_.push_back(Contact{p.c, p.b, axis, wc, wb, 1.0 / (wc + wb), 0, 0, 0, 0, 0, true});
+    contacts_.push_back(ContactConstraint{p.c, p.b, axis, wc, wb, 1.0 / (wc + wb), 0, 0, 0, 0, 0, true});
   }
-  if (!any_overlap) return;
+  return any_overlap;
+}
 
+// Non-linear Gauss-Seidel on positions, shared in proportion to inverse
+// masses, then the same bottom-up pass as the velocities'.
+void ContactSolver::project(Components& k, Vector g, const SolverSettings& s) {
   for (int it = 0; it < s.iterations; ++it) {
-    for (const Contact& ct : contacts_) {
+    for (const ContactConstraint& ct : contacts_) {
       const double depth = -gap_along(k, ct.c, ct.b, ct.axis) - s.slop;
       if (!(depth > 0.0)) continue;
       const Vector n = axis_normal[ct.axis];
@@ -431,18 +455,16 @@ void ContactSolver::solve_positions(Components& k, std::span<const EntityId> ent
       k.position[ct.b] = k.position[ct.b] - (push * (ct.wb / w)) * n;
     }
   }
-
-  if (s.shock_propagation && !Vector::is_zero(g)) {
-    for (const std::size_t i : bottom_up(k, contacts_, g)) {
-      const Contact& ct = contacts_[i];
-      const double depth = -gap_along(k, ct.c, ct.b, ct.axis) - s.slop;
-      if (!(depth > 0.0)) continue;
-      const Vector n = axis_normal[ct.axis];
-      if (support_sign(ct.axis, g) > 0) {
-        if (ct.wc > 0.0) k.position[ct.c] = k.position[ct.c] + depth * n;
-      } else {
-        if (ct.wb > 0.0) k.position[ct.b] = k.position[ct.b] - depth * n;
-      }
+  if (!s.shock_propagation || Vector::is_zero(g)) return;
+  for (const std::size_t i : bottom_up(k, contacts_, g)) {
+    const ContactConstraint& ct = contacts_[i];
+    const double depth = -gap_along(k, ct.c, ct.b, ct.axis) - s.slop;
+    if (!(depth > 0.0)) continue;
+    const Vector n = axis_normal[ct.axis];
+    if (support_sign(ct.axis, g) > 0) {
+      if (ct.wc > 0.0) k.position[ct.c] = k.position[ct.c] + depth * n;
+    } else {
+      if (ct.wb > 0.0) k.position[ct.b] = k.position[ct.b] - depth * n;
     }
   }
 }

@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "scene.hpp"
-#include "world.hpp"
+#include "app/scene.hpp"
+#include "engine/world.hpp"
 
 namespace physics {
 

@@ -1,4 +1,4 @@
-#include "testbed.hpp"
+#include "app/testbed.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "entities/block.hpp"
-#include "game.hpp"
+#include "app/headless.hpp"
 
 namespace physics {
 namespace {
@@ -58,7 +58,7 @@ void Testbed::after_step() {
 }
 
 void Testbed::step() {
-  world_.step();
+  Game::step(world_);
   after_step();
 }
 
@@ -175,10 +175,10 @@ View Testbed::view(double fps, double draw_ms) const {
     if (slow_) title += "  [slow x0.25]";
     title += "   H: keys";
     v.hud.push_back(title);
-    v.hud.push_back(Game::hud_line(world_, fps) + "  frame " + std::to_string(world_.frame));
+    v.hud.push_back(Headless::hud_line(world_, fps) + "  frame " + std::to_string(world_.frame));
     char draw[64];
     std::snprintf(draw, sizeof draw, "  draw %.3f ms/frame", draw_ms);
-    v.hud.push_back("ms/step: " + Game::system_times(world_) + (world_.systems.draw ? draw : "  draw off"));
+    v.hud.push_back("ms/step: " + Headless::stage_times(world_) + (world_.systems.draw ? draw : "  draw off"));
     if (!message_.empty()) v.hud.push_back(message_);
   }
   if (overlays_.help) v.help = key_list();

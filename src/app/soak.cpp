@@ -1,4 +1,4 @@
-#include "soak.hpp"
+#include "app/soak.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -76,7 +76,7 @@ SoakResult soak(World& w, std::int64_t steps, std::int64_t every, const SoakLimi
   r.energy_start = r.energy_min = r.energy_max = r.energy_reference = total_energy(w);
   for (std::int64_t done = 0; done < steps;) {
     const std::int64_t n = std::min(every, steps - done);
-    for (std::int64_t k = 0; k < n; ++k) w.step();
+    for (std::int64_t k = 0; k < n; ++k) Game::step(w);
     done += n;
     r.steps = done;
     ++r.checks;

@@ -1,4 +1,4 @@
-#include "window.hpp"
+#include "app/window.hpp"
 
 #include <SDL.h>
 #include <SDL_ttf.h>
@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <vector>
 
+#include "game.hpp"
 #include "utils/png.hpp"
 
 namespace physics {
@@ -158,10 +159,26 @@ Vector contact_point(const Components& c, EntityId a, EntityId b) {
 // Draw's bodies and the overlays drawn over them (boxes, velocities).
 // Returns Draw's time, ms: the renderer batches its commands, so they are
 // flushed inside the timed span (otherwise the time is only the queuing).
+// The course's Draw system on the window's renderer.
+class SdlCanvas final : public Canvas {
+ public:
+  explicit SdlCanvas(SDL_Renderer* r) : r_(r) {}
+  void fill_rect(Vector p, Rect box, Color col) override {
+    SDL_SetRenderDrawColor(r_, col.r, col.g, col.b, col.a);
+    const SDL_FRect rect{static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(box.width),
+                         static_cast<float>(box.height)};
+    SDL_RenderFillRectF(r_, &rect);
+  }
+
+ private:
+  SDL_Renderer* r_;
+};
+
 double render_bodies(const World& world, const View& view, SDL_Renderer* r) {
   const Draw& draw = *world.systems.draw;
   const Uint64 t0 = SDL_GetPerformanceCounter();
-  draw.update(world.components, r);
+  SdlCanvas canvas(r);
+  Game::draw(world, canvas);
   SDL_RenderFlush(r);
   const double draw_ms =
       1000.0 * static_cast<double>(SDL_GetPerformanceCounter() - t0) / static_cast<double>(SDL_GetPerformanceFrequency());

@@ -13,17 +13,15 @@
 #include <variant>
 #include <vector>
 
+#include "game.hpp"
 #include "utils/random.hpp"
-#include "world.hpp"
 
 namespace physics {
 
 // The course's screen and walls (question 1).
-inline constexpr int default_width = 800;  // px
-inline constexpr int default_height = 600;
-inline constexpr int wall_thickness = 40;
-inline constexpr Color wall_blue{0, 0, 255, 255};   // horizontal walls
-inline constexpr Color wall_black{0, 0, 0, 255};    // vertical walls
+inline constexpr int default_width = Game::width;  // px
+inline constexpr int default_height = Game::height;
+inline constexpr int wall_thickness = Game::wall_thickness;
 inline constexpr Color default_block_color{128, 128, 128, 255};
 
 // Limits that keep any input from exhausting memory or hanging the loader.

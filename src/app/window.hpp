@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "testbed.hpp"
-#include "world.hpp"
+#include "app/testbed.hpp"
+#include "engine/world.hpp"
 
 namespace physics {
 

@@ -1,0 +1,78 @@
+#include "app/headless.hpp"
+
+#include <cstdio>
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+
+namespace physics::Headless {
+
+Summary run(World& w, std::int64_t frames) {
+  return run(w, frames, [](const World&) {});
+}
+
+namespace {
+// Whether the options of this world run stage s at all.
+bool runs(const World& w, Stage s) {
+  switch (s) {
+    case Stage::forces: case Stage::move: case Stage::collision: return true;
+    case Stage::ccd: return w.params.ccd;
+    case Stage::pairs: return w.params.ccd || w.params.solver == Solver::stable;
+    default: return w.params.solver == Solver::stable;
+  }
+}
+}  // namespace
+
+std::string stage_times(const World& w) {
+  std::ostringstream out;
+  out << std::setprecision(4);
+  bool first = true;
+  for (std::size_t i = 0; i < stage_count; ++i) {
+    const Stage s = static_cast<Stage>(i);
+    if (!runs(w, s)) continue;
+    // The stable solver replaces the course's Collision pass.
+    if (s == Stage::collision && w.params.solver == Solver::stable) continue;
+    out << (first ? "" : ", ") << name(s) << ' ';
+    first = false;
+    // A system the scene left out has no time at all, not a time of zero.
+    const bool off = (s == Stage::forces && !w.systems.forces) || (s == Stage::move && !w.systems.move) ||
+                     (s == Stage::collision && !w.systems.collision);
+    if (off) out << "off";
+    else out << w.times.ms_per_step(s);
+  }
+  return out.str();
+}
+
+void print_summary(std::ostream& out, const World& w, const Summary& s, const std::string& why,
+                   const std::string& scene) {
+  const auto vec = [](Vector v) {
+    std::ostringstream o;
+    o << std::setprecision(6) << "(" << v.x << ", " << v.y << ")";
+    return o.str();
+  };
+  std::ostringstream o;
+  o << "ran headless: " << why << "\n";
+  if (!scene.empty()) {
+    SystemSet physics_systems = w.systems.declared();
+    physics_systems.draw = false;
+    const std::string names = physics_systems.to_string();
+    o << "scene:           " << scene << " (systems: " << (names.empty() ? "none" : names) << ")\n";
+  }
+  o << "frames:          " << s.frames << " (dt = " << w.params.dt << " ms, " << w.params.substeps << " substep(s))\n"
+    << "bodies:          " << s.bodies << " (" << s.mobile << " mobile)\n"
+    << std::setprecision(9) << "kinetic energy:  " << s.ke_start << " after frame 1, " << s.ke_end << " at the end\n"
+    << "momentum:        " << vec(s.p_start) << " after frame 1, " << vec(s.p_end) << " at the end\n"
+    << std::setprecision(4) << "physics ms/step: " << w.times.total_ms_per_step() << " total, " << stage_times(w)
+    << "\n";
+  out << o.str();
+}
+
+std::string hud_line(const World& w, double fps) {
+  const Vector p = w.momentum();
+  char buf[200];
+  std::snprintf(buf, sizeof buf, "%.0f fps  physics %.3f ms/step  %zu bodies  KE %.5g  p (%.4g, %.4g)", fps,
+                w.times.total_ms_per_step(), w.components.size(), w.kinetic_energy(), p.x, p.y);
+  return buf;
+}
+
+}  // namespace physics::Headless

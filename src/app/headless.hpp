@@ -1,0 +1,56 @@
+// A run without a window: `frames` frames of Game::step, and the summary the
+// command line prints (kinetic energy, momentum, time per stage).
+#pragma once
+
+#include <cstdint>
+#include <iosfwd>
+#include <string>
+
+#include "game.hpp"
+
+namespace physics::Headless {
+
+struct Summary {
+  std::int64_t frames = 0;
+  std::size_t bodies = 0, mobile = 0;
+  double ke_start = 0, ke_end = 0;
+  Vector p_start{}, p_end{};
+};
+
+// `after_step` (may be empty) sees the world after every frame: the trace.
+Summary run(World& w, std::int64_t frames);
+template <class AfterStep>
+Summary run(World& w, std::int64_t frames, AfterStep&& after_step);
+void print_summary(std::ostream& out, const World& w, const Summary& s, const std::string& why,
+                   const std::string& scene = "");
+
+// "forces 0.0012, move 0.0008, collision off, relax 0.12 ...": physics ms per
+// step of each of the world's stages; `off` for the course systems the scene
+// left out; the engine's stages only when the options that run them are on.
+std::string stage_times(const World& w);
+
+// The HUD line: fps, physics ms/step, body count, kinetic energy, momentum.
+std::string hud_line(const World& w, double fps);
+
+template <class AfterStep>
+Summary run(World& w, std::int64_t frames, AfterStep&& after_step) {
+  Summary s;
+  s.bodies = w.components.size();
+  s.mobile = w.finite_bodies();
+  for (std::int64_t f = 0; f < frames; ++f) {
+    Game::step(w);
+    after_step(static_cast<const World&>(w));
+    // Bodies start at rest with their first impulse pending in sum_forces;
+    // the motion they start with is the one after the first frame.
+    if (f == 0) {
+      s.ke_start = w.kinetic_energy();
+      s.p_start = w.momentum();
+    }
+  }
+  s.frames = frames;
+  s.ke_end = w.kinetic_energy();
+  s.p_end = w.momentum();
+  return s;
+}
+
+}  // namespace physics::Headless

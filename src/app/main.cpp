@@ -1,0 +1,65 @@
+// The program: the command line (app/cli.hpp) and, with a display, the
+// testbed in a window. Everything else is in the library.
+#include <iostream>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/cli.hpp"
+#include "app/testbed.hpp"
+#include "app/window.hpp"
+
+namespace {
+
+using namespace physics;
+
+// The testbed in a window. Fixed time step: the physics advances by dt
+// whatever the display's rate, so a run does not depend on the machine.
+int run_window(Cli::Session& s) {
+  const Cli::Options& o = s.options;
+  Testbed tb(s.scenes, s.current, o.overrides, o.overlays);
+  const SceneSpec& first = tb.scene();
+  std::optional<Window> win;
+  try {
+    win.emplace(first.width, first.height, "physics - " + first.name + " (H: keys)");
+  } catch (const WindowError& e) {
+    throw Cli::NoWindow(e.what());
+  }
+  if (!win->hud_warning().empty()) *s.err << "warning: " << win->hud_warning() << "\n";
+  Cli::Recorder& rec = *s.recorder;
+  rec.start(tb.world());
+  tb.on_step = [&](const World& w) { rec.after_step(w); };
+  tb.on_reset = [&](const World& w) { rec.restart(w); };
+  std::optional<std::int64_t> frames = o.frames;
+  if (!o.screenshot.empty() && !frames) frames = Cli::screenshot_frames;
+
+  double last = win->seconds(), fps = 0.0, draw_ms = 0.0;
+  for (bool running = true; running;) {
+    for (const InputEvent& ev : win->poll_events())
+      if (tb.handle(ev) == Testbed::Action::quit) running = false;
+    const double now = win->seconds();
+    const double elapsed = now - last;
+    last = now;
+    if (elapsed > 0) fps = 0.9 * fps + 0.1 / elapsed;
+    // With --frames, stop at exactly that frame whatever the display's speed.
+    tb.advance(elapsed * 1000.0, frames.value_or(std::numeric_limits<std::int64_t>::max()));
+    const double ms = win->render(tb.world(), tb.view(fps, draw_ms));
+    draw_ms = draw_ms == 0.0 ? ms : 0.9 * draw_ms + 0.1 * ms;
+    if (frames && tb.world().frame >= *frames) {
+      if (!o.screenshot.empty()) win->screenshot(o.screenshot);
+      running = false;
+    }
+    win->present();
+  }
+  rec.finish(tb.world());
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  const Cli::WindowFrontEnd window{display_available, run_window};
+  return Cli::run(args, std::cout, std::cerr, &window);
+}

@@ -1,0 +1,39 @@
+// The one contact type and the one contact law of the engine: every solver
+// (the course's Collision pass, CCD, the stable solver) and the exact
+// reference exchange normal impulses through apply_normal_impulse, with one
+// inverse-mass convention (inverse_mass: 0 for a fixed body).
+#pragma once
+
+#include <cmath>
+
+#include "component_defs.hpp"
+
+namespace physics {
+
+// A contact between the bodies c and b, as found by a solver.
+struct Contact {
+  EntityId c, b;
+  Vector penetration;  // moves c out of b (the shortest of the four vectors of the sheet's figure 2)
+  Vector normal;       // unit, along penetration
+  bool approaching;    // whether an impulse was applied (v·n < 0)
+};
+
+// w = 1/M, and 0 for an infinite mass (a wall is not moved by any impulse).
+inline double inverse_mass(double m) { return std::isfinite(m) ? 1.0 / m : 0.0; }
+
+// The impulse j along the unit normal n (pointing from b to c): the sheet's
+// v_c += n·j/M_c and v_b -= n·j/M_b, written with inverse masses.
+inline void apply_normal_impulse(Vector& vc, Vector& vb, Vector n, double j, double wc, double wb) {
+  vc = vc + (wc * j) * n;
+  vb = vb - (wb * j) * n;
+}
+
+// The same law given the change dv of the normal relative velocity instead
+// of the impulse: j = dv / (w_c + w_b), applied as dv·w_c/(w_c + w_b) and
+// dv·w_b/(w_c + w_b), which is exact when one body is fixed (ratio 1: a wall
+// reverses the normal velocity bit for bit) or the masses are equal (1/2).
+inline void change_normal_velocity(Vector& vc, Vector& vb, Vector n, double dv, double wc, double wb) {
+  apply_normal_impulse(vc, vb, n, dv, wc / (wc + wb), wb / (wc + wb));
+}
+
+}  // namespace physics

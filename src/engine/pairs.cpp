@@ -1,0 +1,172 @@
+#include "engine/pairs.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+namespace physics {
+
+namespace {
+using Bounds = BroadPhase::Bounds;
+
+// The box swept over [0, h] at constant velocity, grown by `reach`.
+Bounds swept(const Components& k, EntityId e, double h, double reach) {
+  const Vector p = k.position[e];
+  const Vector q = p + h * k.velocity[e];
+  const double w = k.box[e].width, hh = k.box[e].height;
+  return {std::min(p.x, q.x) - reach, std::min(p.y, q.y) - reach, std::max(p.x, q.x) + w + reach,
+          std::max(p.y, q.y) + hh + reach};
+}
+}  // namespace
+
+// ---- the course pass ----
+
+BroadPhase::CoursePairs BroadPhase::course_pairs(const Components& k, std::span<const EntityId> entities) {
+  entities_.assign(entities.begin(), entities.end());
+  stats_ = {};
+  found_late_.clear();
+  course_build(k);
+  stats_.candidates = grid_.pairs().size();
+  // Past this many bodies out of their boxes (a crowded or overlapping
+  // start), rebuilding at the current positions is cheaper than querying on.
+  rebuild_after_ = std::max<std::size_t>(256, entities_.size() / 4);
+  next_ = moved_ = 0;
+  last_ = ~PairKey{0};  // never a pair: i < j < 2^32 - 1
+  started_ = false;
+  return CoursePairs(this, &k);
+}
+
+void BroadPhase::course_build(const Components& k) {
+  const std::size_t n = entities_.size();
+  boxes_.resize(n);
+  fixed_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const EntityId e = entities_[i];
+    boxes_[i] = Aabb::around(k.position[e], k.box[e], course_margin);
+    fixed_[i] = !std::isfinite(k.mass[e]);  // the same test as "two walls never collide"
+  }
+  grid_.build(boxes_, fixed_);
+  fat_built_ = false;
+}
+
+bool BroadPhase::refresh(const Components& k, std::uint32_t i, PairKey current) {
+  const EntityId e = entities_[i];
+  if (boxes_[i].contains(k.position[e], k.box[e])) return false;
+  // Pushed out of its box: the pairs found when the pass began may no longer
+  // hold all of its contacts. Give it a new box and queue the pairs it may
+  // now form that the pass has not reached yet (the earlier ones are behind
+  // us in the sheet's loop too).
+  const Aabb box = Aabb::around(k.position[e], k.box[e], course_margin);
+  boxes_[i] = box;
+  grid_.move(i, box);
+  grid_.query(box, [&](std::uint32_t j) {
+    if (j == i || (fixed_[i] && fixed_[j])) return;
+    const PairKey key = pair_key(i, j);
+    if (key <= current) return;
+    found_late_.push_back(key);
+    std::push_heap(found_late_.begin(), found_late_.end(), std::greater<>());
+  });
+  ++stats_.requeries;
+  return true;
+}
+
+bool BroadPhase::course_next(const Components& k, Pair& out) {
+  if (started_) {
+    // The pair handed out last may have been corrected: bodies it pushed out
+    // of their boxes get their new pairs (a pair left alone moved nothing).
+    moved_ += refresh(k, pair_first(last_), last_) + refresh(k, pair_second(last_), last_);
+    if (moved_ > rebuild_after_) {
+      course_build(k);
+      const std::vector<PairKey>& rebuilt = grid_.pairs();
+      next_ = static_cast<std::size_t>(std::upper_bound(rebuilt.begin(), rebuilt.end(), last_) - rebuilt.begin());
+      found_late_.clear();
+      moved_ = 0;
+      ++stats_.rebuilds;
+    }
+  }
+  for (;;) {
+    const std::vector<PairKey>& listed = grid_.pairs();
+    const bool in_list = next_ < listed.size();
+    if (!in_list && found_late_.empty()) return false;
+    PairKey key;
+    if (!found_late_.empty() && (!in_list || found_late_.front() < listed[next_])) {
+      std::pop_heap(found_late_.begin(), found_late_.end(), std::greater<>());
+      key = found_late_.back();
+      found_late_.pop_back();
+    } else {
+      key = listed[next_++];
+    }
+    if (key == last_) continue;  // found both when the pass began and later
+    last_ = key;
+    started_ = true;
+    out = {entities_[pair_first(key)], entities_[pair_second(key)]};
+    return true;
+  }
+}
+
+// ---- find() ----
+
+void BroadPhase::find(const Components& k, std::span<const EntityId> entities, double h, double reach,
+                      std::vector<Pair>& out) {
+  const std::size_t n = entities.size();
+  current_.resize(n);
+  bool reuse = fat_built_ && n == entities_.size() && std::equal(entities.begin(), entities.end(), entities_.begin());
+  for (std::size_t i = 0; i < n; ++i) {
+    const Bounds s = current_[i] = swept(k, entities[i], h, reach);
+    // (A NaN fails the test: a rebuild, which handles it.)
+    if (!reuse) continue;  // (reuse implies fat_ holds the same n bodies)
+    const Bounds& f = fat_[i];
+    reuse = f.x0 <= s.x0 && f.y0 <= s.y0 && s.x1 <= f.x1 && s.y1 <= f.y1 &&
+            fixed_[i] == !std::isfinite(k.mass[entities[i]]);
+  }
+  if (!reuse) fat_rebuild(k, entities);
+  out.clear();
+  out.reserve(grid_.pairs().size());
+  for (const PairKey key : grid_.pairs()) {
+    const std::uint32_t i = pair_first(key), j = pair_second(key);
+    const Bounds& a = current_[i];
+    const Bounds& b = current_[j];
+    // Closed test: touching boxes are candidates (resting contact). A NaN
+    // bound fails it, so a lost body has no pair.
+    if (a.x0 <= b.x1 && b.x0 <= a.x1 && a.y0 <= b.y1 && b.y0 <= a.y1) out.push_back({entities[i], entities[j]});
+  }
+}
+
+void BroadPhase::fat_rebuild(const Components& k, std::span<const EntityId> entities) {
+  const std::size_t n = entities.size();
+  fat_.resize(n);
+  boxes_.resize(n);
+  fixed_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Bounds& c = current_[i];
+    fat_[i] = {c.x0 - fat_margin, c.y0 - fat_margin, c.x1 + fat_margin, c.y1 + fat_margin};
+    // Rounded outwards to float: the grid's boxes contain the exact ones, so
+    // it finds a superset of the pairs, which the exact test trims.
+    boxes_[i] = Aabb::outward(fat_[i].x0, fat_[i].y0, fat_[i].x1, fat_[i].y1);
+    fixed_[i] = !std::isfinite(k.mass[entities[i]]);
+  }
+  grid_.build(boxes_, fixed_);
+  entities_.assign(entities.begin(), entities.end());
+  fat_built_ = true;
+}
+
+void candidate_pairs(const Components& k, std::span<const EntityId> entities, double h, double reach,
+                     std::vector<Pair>& out) {
+  BroadPhase().find(k, entities, h, reach, out);
+}
+
+void brute_force_pairs(const Components& k, std::span<const EntityId> entities, double h, double reach,
+                       std::vector<Pair>& out) {
+  out.clear();
+  const std::size_t n = entities.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Bounds bi = swept(k, entities[i], h, reach);
+    for (std::size_t j = i + 1; j < n; ++j) {
+      if (!std::isfinite(k.mass[entities[i]]) && !std::isfinite(k.mass[entities[j]])) continue;
+      const Bounds bj = swept(k, entities[j], h, reach);
+      if (bi.x0 <= bj.x1 && bj.x0 <= bi.x1 && bi.y0 <= bj.y1 && bj.y0 <= bi.y1) out.push_back({entities[i], entities[j]});
+    }
+  }
+}
+
+}  // namespace physics

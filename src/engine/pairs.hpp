@@ -1,0 +1,134 @@
+// The world's one broad phase: every stage asks it for its candidate pairs
+// (the course's Collision pass, CCD, the stable solver), and it keeps one
+// uniform grid (engine/broadphase.hpp) for all of them.
+//
+// Two ways to ask:
+//  - course_pairs(): the pairs of the sheet's loop "for each pair (c, b)",
+//    in its order (c registered before b), as Collision::update resolves
+//    them. The grid is built on each body's box grown by `course_margin`;
+//    when a correction pushes a body out of its box, the pairs it may now
+//    form that the loop has not reached yet are found and merged in. So the
+//    pass resolves exactly the pairs the all-pairs loop finds overlapping,
+//    in the same order, with the same values (tests/test_broadphase.cpp).
+//  - find(h, reach): every pair whose boxes, each swept over h ms at its
+//    velocity and grown by `reach`, overlap or touch; exactly the all-pairs
+//    definition brute_force_pairs() keeps for the tests. The grid is built
+//    on boxes grown by `fat_margin` and kept while every body stays inside
+//    its fat box: a resting pile costs a filter per call, not a grid.
+// Pairs of two infinite masses are never listed (two walls never collide).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "component_defs.hpp"
+#include "engine/broadphase.hpp"
+
+namespace physics {
+
+// A pair of bodies, c registered before b: the one pair type of the engine.
+struct Pair {
+  EntityId c, b;
+  // Packed, so that sorting keys sorts pairs by c, then b.
+  std::uint64_t key() const { return (std::uint64_t{c} << 32) | b; }
+  friend bool operator==(Pair, Pair) = default;
+};
+
+class BroadPhase {
+ public:
+  class CoursePairs;
+  // The course pass's pairs; valid until the next call on this broad phase.
+  CoursePairs course_pairs(const Components& k, std::span<const EntityId> entities);
+
+  void find(const Components& k, std::span<const EntityId> entities, double h, double reach, std::vector<Pair>& out);
+
+  // px. How far a correction may push a body before its pairs are looked up
+  // again; any value >= 0 gives the same pairs, this one was the fastest on
+  // the bench scenes (fewer look-ups against more candidates).
+  double course_margin = 1.0;
+  // px. Larger keeps a grid longer but lists more candidates to filter;
+  // 2 px is a fifth of the bench's blocks and above a resting body's drift.
+  double fat_margin = 2.0;
+
+  // What the last course pass did, for the benchmark.
+  struct Stats {
+    std::size_t candidates = 0;  // pairs found when the pass began
+    std::size_t requeries = 0;   // bodies pushed out of their box during the pass
+    std::size_t rebuilds = 0;    // grid rebuilt during the pass (many bodies pushed out)
+  };
+  const Stats& stats() const { return stats_; }
+  const UniformGrid& grid() const { return grid_; }
+
+  // A body's box in double, [x0, x1] x [y0, y1].
+  struct Bounds {
+    double x0, y0, x1, y1;
+  };
+
+ private:
+  // The course pass.
+  void course_build(const Components& k);
+  bool course_next(const Components& k, Pair& out);
+  bool refresh(const Components& k, std::uint32_t i, PairKey current);
+  // find().
+  void fat_rebuild(const Components& k, std::span<const EntityId> entities);
+
+  UniformGrid grid_;
+  std::vector<EntityId> entities_;   // the bodies the grid was built on, in registration order
+  std::vector<std::uint8_t> fixed_;  // infinite mass, by registration rank
+  std::vector<Aabb> boxes_;          // the grid's boxes, by registration rank
+  bool fat_built_ = false;           // the grid holds find()'s fat boxes
+
+  // Course pass state.
+  std::vector<PairKey> found_late_;  // min-heap: pairs found after a body left its box
+  std::size_t next_ = 0, moved_ = 0, rebuild_after_ = 0;
+  PairKey last_ = ~PairKey{0};
+  bool started_ = false;
+  Stats stats_;
+
+  // find() state.
+  std::vector<Bounds> current_;  // this call's exact boxes
+  std::vector<Bounds> fat_;      // the boxes the grid was built on
+};
+
+// The course pass's pairs as a range: `for (const Pair p : pairs)`. Moving on
+// to the next pair first checks whether the last one's correction pushed a
+// body out of its box.
+class BroadPhase::CoursePairs {
+ public:
+  struct End {};
+  class Iterator {
+   public:
+    Pair operator*() const { return pair_; }
+    Iterator& operator++() {
+      done_ = !bp_->course_next(*k_, pair_);
+      return *this;
+    }
+    bool operator!=(End) const { return !done_; }
+
+   private:
+    friend class CoursePairs;
+    Iterator(BroadPhase* bp, const Components* k) : bp_(bp), k_(k) { ++*this; }
+    BroadPhase* bp_;
+    const Components* k_;
+    Pair pair_{};
+    bool done_ = false;
+  };
+  Iterator begin() const { return Iterator(bp_, k_); }
+  End end() const { return {}; }
+
+ private:
+  friend class BroadPhase;
+  CoursePairs(BroadPhase* bp, const Components* k) : bp_(bp), k_(k) {}
+  BroadPhase* bp_;
+  const Components* k_;
+};
+
+// One-off versions (a fresh BroadPhase each call) and the all-pairs
+// definition, for the tests.
+void candidate_pairs(const Components& k, std::span<const EntityId> entities, double h, double reach,
+                     std::vector<Pair>& out);
+void brute_force_pairs(const Components& k, std::span<const EntityId> entities, double h, double reach,
+                       std::vector<Pair>& out);
+
+}  // namespace physics

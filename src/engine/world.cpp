@@ -1,0 +1,92 @@
+#include "engine/world.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace physics {
+
+void validate(const Params& p) {
+  if (!std::isfinite(p.dt) || p.dt <= 0.0)
+    throw std::invalid_argument("dt must be a finite number > 0 (got " + std::to_string(p.dt) + ")");
+  if (p.substeps < 1)
+    throw std::invalid_argument("substeps must be >= 1 (got " + std::to_string(p.substeps) + ")");
+  if (p.iterations < 1)
+    throw std::invalid_argument("iterations must be >= 1 (got " + std::to_string(p.iterations) + ")");
+  if (!std::isfinite(p.gravity.x) || !std::isfinite(p.gravity.y))
+    throw std::invalid_argument("gravity must be finite");
+}
+
+std::string_view name(Stage s) {
+  static constexpr std::string_view names[stage_count] = {
+      "forces", "move", "collision", "pairs", "ccd", "prepare", "warm_start", "relax", "restitution", "impact_time",
+      "store", "positions"};
+  return names[static_cast<std::size_t>(s)];
+}
+
+double StageTimes::ms_per_step(Stage s) const {
+  return steps == 0 ? 0.0 : static_cast<double>(ns[static_cast<std::size_t>(s)]) / 1e6 / static_cast<double>(steps);
+}
+
+double StageTimes::total_ms_per_step() const {
+  double t = 0.0;
+  for (std::size_t s = 0; s < stage_count; ++s) t += ms_per_step(static_cast<Stage>(s));
+  return t;
+}
+
+World::World(SystemSet set, Params p) : systems(set), params(p) { validate(params); }
+
+namespace {
+SolverSettings solver_settings(const Params& p) {
+  SolverSettings s;
+  s.iterations = p.iterations;
+  s.impacts = !p.ccd;  // with CCD on, impacts are its business
+  return s;
+}
+}  // namespace
+
+void World::before_move(double h) {
+  if (!systems.collision) return;
+  const auto bodies = systems.collision->entities();
+  if (params.solver == Solver::stable)
+    contact_solver.solve_velocities(components, bodies, h, params.gravity, solver_settings(params), broadphase, times);
+  if (params.ccd) times.time(Stage::ccd, [&] { ccd.resolve(components, bodies, h, params.gravity, broadphase); });
+}
+
+void World::after_move() {
+  if (!systems.collision || params.solver != Solver::stable) return;
+  contact_solver.solve_positions(components, systems.collision->entities(), params.gravity, solver_settings(params),
+                                 broadphase, times);
+}
+
+BroadPhase::CoursePairs World::course_pairs() {
+  return broadphase.course_pairs(components, systems.collision->entities());
+}
+
+double World::kinetic_energy() const {
+  double ke = 0.0;
+  for (std::size_t e = 0; e < components.size(); ++e) {
+    const double m = components.mass[e];
+    if (!std::isfinite(m)) continue;
+    ke += 0.5 * m * Vector::dot(components.velocity[e], components.velocity[e]);
+  }
+  return ke;
+}
+
+Vector World::momentum() const {
+  Vector p{};
+  for (std::size_t e = 0; e < components.size(); ++e) {
+    const double m = components.mass[e];
+    if (!std::isfinite(m)) continue;
+    p = p + m * components.velocity[e];
+  }
+  return p;
+}
+
+std::size_t World::finite_bodies() const {
+  std::size_t n = 0;
+  for (const double m : components.mass) n += std::isfinite(m) ? 1 : 0;
+  return n;
+}
+
+}  // namespace physics
