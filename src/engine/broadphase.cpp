@@ -113,18 +113,31 @@ void UniformGrid::emit(std::uint32_t a, std::uint32_t b) {
   found_.push_back(pair_key(a, b));
 }
 
+// In stages: classify the boxes (small in the grid, large aside), size the
+// grid, sort the small boxes into cells, then the pairs: grid cells against
+// their neighbours, large boxes against the grid and each other; sorted.
 void UniformGrid::build(std::span<const Aabb> boxes, std::span<const std::uint8_t> fixed) {
   const std::size_t n = boxes.size();
   if (n >= (std::size_t{1} << 32) - 1) throw std::length_error("broadphase: too many bodies");
   fixed_.assign(fixed.begin(), fixed.end());
+  found_.clear();
+  double max_extent = 0.0;
+  const std::size_t small = classify(boxes, max_extent);
+  size_grid(boxes, small, max_extent);
+  fill_cells(boxes, small);
+  pairs_in_grid();
+  pairs_of_large();
+  sort_pairs(n);
+}
+
+// Sorts the bodies into small (in the grid) and large (aside); boxes with a
+// NaN bound are in neither and collide with nothing. Afterwards cell_of_ says
+// which bodies are small (nonzero). Returns how many are small.
+std::size_t UniformGrid::classify(std::span<const Aabb> boxes, double& max_extent) {
+  const std::size_t n = boxes.size();
   large_.clear();
   large_box_.clear();
   large_slot_.assign(n, -1);
-  found_.clear();
-
-  // Sort the bodies into small (in the grid) and large (aside); boxes with a
-  // NaN bound are in neither and collide with nothing. cell_of_ first says
-  // which bodies are small (nonzero), then holds their cell.
   double sum = 0.0;
   std::size_t counted = 0;
   for (const Aabb& b : boxes) {
@@ -134,7 +147,6 @@ void UniformGrid::build(std::span<const Aabb> boxes, std::span<const std::uint8_
   const double threshold = counted ? large_factor * (sum / static_cast<double>(counted)) : 0.0;
   cell_of_.assign(n, 0);
   std::size_t small = 0;
-  double max_extent = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     const Aabb& b = boxes[i];
     if (!b.valid()) continue;
@@ -149,10 +161,13 @@ void UniformGrid::build(std::span<const Aabb> boxes, std::span<const std::uint8_
       large_box_.push_back(b);
     }
   }
-  size_grid(boxes, small, max_extent);
+  return small;
+}
 
-  // Counting sort of the small boxes by cell (row-major). Filling backwards
-  // leaves each cell's bodies in increasing index order.
+// Counting sort of the small boxes by cell (row-major). Filling backwards
+// leaves each cell's bodies in increasing index order.
+void UniformGrid::fill_cells(std::span<const Aabb> boxes, std::size_t small) {
+  const std::size_t n = boxes.size();
   const std::size_t cells = this->cells();
   cell_start_.assign(cells + 1, 0);
   for (std::size_t i = 0; i < n; ++i) {
@@ -172,18 +187,19 @@ void UniformGrid::build(std::span<const Aabb> boxes, std::span<const std::uint8_
     if (c == std::numeric_limits<std::uint32_t>::max()) continue;
     entries_[--cell_start_[c]] = Entry{boxes[i], static_cast<std::uint32_t>(i)};
   }
-
   // No moved bodies yet: clear the lists the last pass left.
   for (const std::uint32_t c : moved_cells_)
     if (c < moved_head_.size()) moved_head_[c] = -1;
   moved_cells_.clear();
   moved_.clear();
   moved_head_.resize(cells, -1);
+}
 
-  // Sweep the cells in order. Each pair of neighbouring cells is visited
-  // once, from the earlier one: a cell meets itself, its right neighbour and
-  // the three cells below it (below-left, below, below-right), which are
-  // contiguous in entries_.
+// Sweeps the cells in order. Each pair of neighbouring cells is visited once,
+// from the earlier one: a cell meets itself, its right neighbour and the
+// three cells below it (below-left, below, below-right), which are contiguous
+// in entries_.
+void UniformGrid::pairs_in_grid() {
   const std::uint32_t* start = cell_start_.data();
   const Entry* entry = entries_.data();
   for (int cy = 0; cy < ny_; ++cy) {
@@ -208,11 +224,13 @@ void UniformGrid::build(std::span<const Aabb> boxes, std::span<const std::uint8_
       }
     }
   }
+}
 
-  // Large bodies against the grid, then against each other by a sweep on
-  // x: "large" is relative to the mean, so when resting bodies make most of
-  // a scene, every falling one (its box swept over the step) can be large,
-  // and testing them all pairwise was quadratic (tens of ms at 100 000).
+// Large bodies against the grid, then against each other by a sweep on x:
+// "large" is relative to the mean, so when resting bodies make most of a
+// scene, every falling one (its box swept over the step) can be large, and
+// testing them all pairwise was quadratic (tens of ms at 100 000).
+void UniformGrid::pairs_of_large() {
   for (std::size_t l = 0; l < large_.size(); ++l) {
     const std::uint32_t i = large_[l];
     query_grid(large_box_[l], [&](std::uint32_t j) { emit(i, j); });
@@ -230,8 +248,6 @@ void UniformGrid::build(std::span<const Aabb> boxes, std::span<const std::uint8_
       if (overlap(box, other)) emit(large_[large_order_[a]], large_[large_order_[b]]);
     }
   }
-
-  sort_pairs(n);
 }
 
 void UniformGrid::sort_pairs(std::size_t n) {

@@ -115,7 +115,12 @@ class UniformGrid {
   void query_grid(const Aabb& box, F&& f) const;
   int cell_x(double x) const;
   int cell_y(double y) const;
+  // build()'s stages.
+  std::size_t classify(std::span<const Aabb> boxes, double& max_extent);
   void size_grid(std::span<const Aabb> boxes, std::size_t small, double max_extent);
+  void fill_cells(std::span<const Aabb> boxes, std::size_t small);
+  void pairs_in_grid();
+  void pairs_of_large();
   void emit(std::uint32_t a, std::uint32_t b);
   void sort_pairs(std::size_t n);
 

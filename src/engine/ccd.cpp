@@ -46,6 +46,34 @@ struct Later {
   }
 };
 
+// The course's impulse at an impact at time t of the substep (the engine's
+// one contact law), restitution the smaller of the pair's.
+//
+// Gravity: Forces gave the whole substep's kick g·h at its start, but the
+// impact happens at t; the kick after t must not be reflected. The normal
+// velocity after the substep is -e·v_n + (1+e)(a·n)(h - t), a the pair's
+// relative acceleration (g against a fixed body, 0 between two free ones).
+// Without this, a body resting on the floor with e = 1 hops g·h every
+// substep and each bounce gains or loses m(g·n)(v·n)(h - 2t) of energy, a
+// random walk that drifts up; with it, it rests. Never enough to turn the
+// pair back towards each other.
+void impact(Components& k, EntityId c, EntityId b, Vector n, double t, double h, Vector gravity) {
+  const Vector vc = k.velocity[c], vb = k.velocity[b];
+  const double vn = Vector::dot(vc - vb, n);
+  const double e = std::min(k.restitution[c], k.restitution[b]);
+  const Vector ac = std::isfinite(k.mass[c]) ? gravity : Vector{};
+  const Vector ab = std::isfinite(k.mass[b]) ? gravity : Vector{};
+  const double kick = std::max((1.0 + e) * Vector::dot(ac - ab, n) * (h - t), e * vn);
+  const double dv = -(1.0 + e) * vn + kick;
+  Vector vc2 = vc, vb2 = vb;
+  change_normal_velocity(vc2, vb2, n, dv, inverse_mass(k.mass[c]), inverse_mass(k.mass[b]));
+  // Keep position + t·velocity continuous at t (see the header).
+  k.position[c] = k.position[c] + t * (vc - vc2);
+  k.position[b] = k.position[b] + t * (vb - vb2);
+  k.velocity[c] = vc2;
+  k.velocity[b] = vb2;
+}
+
 }  // namespace
 
 std::optional<Impact> Ccd::time_of_impact(const Components& k, EntityId c, EntityId b, double t0, double t1) {
@@ -115,31 +143,7 @@ void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h, V
     // normal at the event's time (the function is deterministic).
     const auto hit = time_of_impact(k, c, b, ev.t, h);
     if (!hit || hit->t != ev.t) continue;
-    const Vector n = hit->n;
-    const Vector vc = k.velocity[c], vb = k.velocity[b];
-    const double vn = Vector::dot(vc - vb, n);
-    // The course's impulse (the engine's one contact law), restitution the
-    // smaller of the pair's.
-    const double e = std::min(k.restitution[c], k.restitution[b]);
-    // Gravity: Forces gave the whole substep's kick g·h at its start, but the
-    // impact happens at t; the kick after t must not be reflected. The
-    // normal velocity after the substep is -e·v_n + (1+e)(a·n)(h - t), a the
-    // pair's relative acceleration (g against a fixed body, 0 between two
-    // free ones). Without this, a body resting on the floor with e = 1 hops
-    // g·h every substep and each bounce gains or loses m(g·n)(v·n)(h - 2t) of
-    // energy, a random walk that drifts up; with it, it rests. Never enough
-    // to turn the pair back towards each other.
-    const Vector ac = std::isfinite(k.mass[c]) ? gravity : Vector{};
-    const Vector ab = std::isfinite(k.mass[b]) ? gravity : Vector{};
-    const double kick = std::max((1.0 + e) * Vector::dot(ac - ab, n) * (h - ev.t), e * vn);
-    const double dv = -(1.0 + e) * vn + kick;
-    Vector vc2 = vc, vb2 = vb;
-    change_normal_velocity(vc2, vb2, n, dv, inverse_mass(k.mass[c]), inverse_mass(k.mass[b]));
-    // Keep position + t·velocity continuous at t (see the header).
-    k.position[c] = k.position[c] + ev.t * (vc - vc2);
-    k.position[b] = k.position[b] + ev.t * (vb - vb2);
-    k.velocity[c] = vc2;
-    k.velocity[b] = vb2;
+    impact(k, c, b, hit->n, ev.t, h, gravity);
     ++resolved;
     ++stats.impacts;
     // Both bodies changed course: predict their impacts with everything again

@@ -139,7 +139,7 @@ std::vector<std::size_t> bottom_up(const Components& k, const Contacts& contacts
 void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> entities, double h, Vector g,
                                      const SolverSettings& s, BroadPhase& broadphase, StageTimes& times) {
   times.time(Stage::pairs, [&] { broadphase.find(k, entities, h, s.margin, pairs_); });
-  times.time(Stage::prepare, [&] { prepare(k, entities, h, g, s, broadphase); });
+  times.time(Stage::prepare, [&] { prepare(k, h, g, s); });
   times.time(Stage::warm_start, [&] { warm_start(k); });
   times.time(Stage::relax, [&] { relax<false>(k, g, s); });
   times.time(Stage::restitution, [&] { restitution(k, g, s); });
@@ -149,8 +149,7 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
 
 // Contacts are the pairs whose boxes are closer than the margin along their
 // separating axis, or will be within this substep (speculative).
-void ContactSolver::prepare(const Components& k, std::span<const EntityId>, double h, Vector g,
-                            const SolverSettings& s, BroadPhase&) {
+void ContactSolver::prepare(const Components& k, double h, Vector g, const SolverSettings& s) {
   contacts_.clear();
   have_order_ = false;
   // Slower than the speed gravity gives in two substeps: a resting contact,
@@ -327,65 +326,8 @@ void ContactSolver::store() {
 // inelastic velocities alone are above, move back towards the starting ones).
 // Both are blends of impulse sets, so momentum is kept.
 void ContactSolver::guard_energy(Components& k) {
-  // When no body of a contact ends with more kinetic energy than it started
-  // with, no island can have gained (each island's sums below add the same
-  // per-body terms, and rounding is monotone): nothing to do. A resting pile
-  // is the common case, and this skips the islands' bookkeeping there.
-  const auto body_gained = [&](EntityId e) {
-    const double m = k.mass[e];
-    const Vector v0 = v_start_[e], v1 = k.velocity[e];
-    return 0.5 * m * Vector::dot(v1, v1) > 0.5 * m * Vector::dot(v0, v0);
-  };
-  bool gained = false;
-  for (const ContactConstraint& ct : contacts_)
-    gained = gained || (ct.wc > 0.0 && body_gained(ct.c)) || (ct.wb > 0.0 && body_gained(ct.b));
-  if (!gained) return;
-  const auto n = k.size();
-  parent_.resize(n);
-  for (const ContactConstraint& ct : contacts_) parent_[ct.c] = ct.c, parent_[ct.b] = ct.b;
-  const auto find = [&](EntityId x) {
-    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
-    return x;
-  };
-  for (const ContactConstraint& ct : contacts_)
-    if (ct.wc > 0.0 && ct.wb > 0.0) parent_[find(ct.c)] = find(ct.b);
-
-  struct Sums {
-    double start = 0, inel = 0, end = 0, b_rest = 0, a_rest = 0, b_back = 0, a_back = 0;
-  };
-  // The finite bodies of the contacts, in increasing id order (the order
-  // the sums below are taken in), found by marking: no sort.
-  std::vector<EntityId> bodies;
-  seen_.assign(n, 0);
-  for (const ContactConstraint& ct : contacts_) {
-    if (ct.wc > 0.0) seen_[ct.c] = 1;
-    if (ct.wb > 0.0) seen_[ct.b] = 1;
-  }
-  for (EntityId e = 0; e < n; ++e)
-    if (seen_[e]) bodies.push_back(e);
-  // One Sums per island, numbered as their roots are first met.
-  island_.resize(n);
-  root_index_.assign(n, none);
-  std::vector<Sums> sums;
-  for (const EntityId e : bodies) {
-    const EntityId r = find(e);
-    if (root_index_[r] == none) root_index_[r] = static_cast<std::uint32_t>(sums.size()), sums.emplace_back();
-  }
-  for (const EntityId e : bodies) {
-    const std::uint32_t i = root_index_[find(e)];
-    island_[e] = i;
-    const double m = k.mass[e];
-    const Vector v0 = v_start_[e], vi = v_inelastic_[e], v1 = k.velocity[e];
-    const Vector rest = v1 - vi, back = vi - v0;
-    Sums& su = sums[i];
-    su.start += 0.5 * m * Vector::dot(v0, v0);
-    su.inel += 0.5 * m * Vector::dot(vi, vi);
-    su.end += 0.5 * m * Vector::dot(v1, v1);
-    su.b_rest += m * Vector::dot(vi, rest);
-    su.a_rest += 0.5 * m * Vector::dot(rest, rest);
-    su.b_back += m * Vector::dot(v0, back);
-    su.a_back += 0.5 * m * Vector::dot(back, back);
-  }
+  if (!any_body_gained(k)) return;
+  island_energies(k);
   // Largest s in [0, 1] with a s² + b s + c <= 0, given c <= 0.
   const auto largest = [](double a, double b, double c) {
     if (a + b + c <= 0.0) return 1.0;
@@ -393,10 +335,10 @@ void ContactSolver::guard_energy(Components& k) {
     const double s = (-b + std::sqrt(std::max(b * b - 4.0 * a * c, 0.0))) / (2.0 * a);
     return std::clamp(s, 0.0, 1.0);
   };
-  std::vector<double> s_rest(sums.size(), 1.0), s_back(sums.size(), 1.0);
+  std::vector<double> s_rest(sums_.size(), 1.0), s_back(sums_.size(), 1.0);
   bool any = false;
-  for (std::size_t i = 0; i < sums.size(); ++i) {
-    const Sums& su = sums[i];
+  for (std::size_t i = 0; i < sums_.size(); ++i) {
+    const IslandEnergy& su = sums_[i];
     if (su.end <= su.start * (1.0 + 1e-14)) continue;
     any = true;
     if (su.inel <= su.start) {
@@ -407,12 +349,76 @@ void ContactSolver::guard_energy(Components& k) {
     }
   }
   if (!any) return;
-  for (const EntityId e : bodies) {
+  for (const EntityId e : bodies_) {
     const std::uint32_t i = island_[e];
     if (s_rest[i] == 1.0 && s_back[i] == 1.0) continue;
     const Vector vi = v_start_[e] + s_back[i] * (v_inelastic_[e] - v_start_[e]);
     k.velocity[e] = vi + s_rest[i] * (k.velocity[e] - v_inelastic_[e]);
     ++stats.energy_clamps;
+  }
+}
+
+// When no body of a contact ends with more kinetic energy than it started
+// with, no island can have gained (each island's sums add the same per-body
+// terms, and rounding is monotone): nothing to do. A resting pile is the
+// common case, and this skips the islands' bookkeeping there.
+bool ContactSolver::any_body_gained(const Components& k) const {
+  const auto body_gained = [&](EntityId e) {
+    const double m = k.mass[e];
+    const Vector v0 = v_start_[e], v1 = k.velocity[e];
+    return 0.5 * m * Vector::dot(v1, v1) > 0.5 * m * Vector::dot(v0, v0);
+  };
+  bool gained = false;
+  for (const ContactConstraint& ct : contacts_)
+    gained = gained || (ct.wc > 0.0 && body_gained(ct.c)) || (ct.wb > 0.0 && body_gained(ct.b));
+  return gained;
+}
+
+// The islands of touching finite bodies (union-find over the contacts), and
+// per island the energies the guard needs: sums_, island_ of each body of
+// bodies_ (the finite bodies of the contacts, in increasing id order: the
+// order the sums are taken in).
+void ContactSolver::island_energies(const Components& k) {
+  const auto n = k.size();
+  parent_.resize(n);
+  for (const ContactConstraint& ct : contacts_) parent_[ct.c] = ct.c, parent_[ct.b] = ct.b;
+  const auto find = [&](EntityId x) {
+    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
+    return x;
+  };
+  for (const ContactConstraint& ct : contacts_)
+    if (ct.wc > 0.0 && ct.wb > 0.0) parent_[find(ct.c)] = find(ct.b);
+  // Found by marking: no sort.
+  bodies_.clear();
+  seen_.assign(n, 0);
+  for (const ContactConstraint& ct : contacts_) {
+    if (ct.wc > 0.0) seen_[ct.c] = 1;
+    if (ct.wb > 0.0) seen_[ct.b] = 1;
+  }
+  for (EntityId e = 0; e < n; ++e)
+    if (seen_[e]) bodies_.push_back(e);
+  // One IslandEnergy per island, numbered as their roots are first met.
+  island_.resize(n);
+  root_index_.assign(n, none);
+  sums_.clear();
+  for (const EntityId e : bodies_) {
+    const EntityId r = find(e);
+    if (root_index_[r] == none) root_index_[r] = static_cast<std::uint32_t>(sums_.size()), sums_.emplace_back();
+  }
+  for (const EntityId e : bodies_) {
+    const std::uint32_t i = root_index_[find(e)];
+    island_[e] = i;
+    const double m = k.mass[e];
+    const Vector v0 = v_start_[e], vi = v_inelastic_[e], v1 = k.velocity[e];
+    const Vector rest = v1 - vi, back = vi - v0;
+    IslandEnergy& su = sums_[i];
+    su.start += 0.5 * m * Vector::dot(v0, v0);
+    su.inel += 0.5 * m * Vector::dot(vi, vi);
+    su.end += 0.5 * m * Vector::dot(v1, v1);
+    su.b_rest += m * Vector::dot(vi, rest);
+    su.a_rest += 0.5 * m * Vector::dot(rest, rest);
+    su.b_back += m * Vector::dot(v0, back);
+    su.a_back += 0.5 * m * Vector::dot(back, back);
   }
 }
 
@@ -422,13 +428,12 @@ void ContactSolver::solve_positions(Components& k, std::span<const EntityId> ent
   // the support graph of the bottom-up pass down to the ground.
   times.time(Stage::pairs, [&] { broadphase.find(k, entities, 0.0, s.margin, pairs_); });
   times.time(Stage::positions, [&] {
-    if (prepare_positions(k, entities, s, broadphase)) project(k, g, s);
+    if (prepare_positions(k, s)) project(k, g, s);
   });
 }
 
 // The contacts within the margin; whether any overlaps by more than the slop.
-bool ContactSolver::prepare_positions(const Components& k, std::span<const EntityId>, const SolverSettings& s,
-                                      BroadPhase&) {
+bool ContactSolver::prepare_positions(const Components& k, const SolverSettings& s) {
   contacts_.clear();
   bool any_overlap = false;
   for (const Pair& p : pairs_) {

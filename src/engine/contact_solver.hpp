@@ -83,18 +83,18 @@ class ContactSolver {
 
  private:
   // The stages of solve_velocities, in order.
-  void prepare(const Components& k, std::span<const EntityId> entities, double h, Vector g, const SolverSettings& s,
-               BroadPhase& broadphase);
+  void prepare(const Components& k, double h, Vector g, const SolverSettings& s);
   void warm_start(Components& k);
   template <bool after_bounce>
   void relax(Components& k, Vector g, const SolverSettings& s);
   void restitution(Components& k, Vector g, const SolverSettings& s);
   void guard_energy(Components& k);
+  bool any_body_gained(const Components& k) const;
+  void island_energies(const Components& k);
   void impact_time(Components& k, double h, Vector g);
   void store();
   // solve_positions' stages.
-  bool prepare_positions(const Components& k, std::span<const EntityId> entities, const SolverSettings& s,
-                         BroadPhase& broadphase);
+  bool prepare_positions(const Components& k, const SolverSettings& s);
   void project(Components& k, Vector g, const SolverSettings& s);
 
   std::vector<Pair> pairs_;
@@ -102,6 +102,14 @@ class ContactSolver {
   std::vector<std::size_t> support_order_;     // bottom-up order of this substep's contacts
   bool have_order_ = false;
   std::vector<Vector> v_start_, v_inelastic_;  // indexed by entity id
+  // The energy guard's islands: kinetic energies at the start, after the
+  // inelastic relaxation and at the end, and the coefficients of the
+  // quadratics in the blend factors (rest: the bounces; back: towards the start).
+  struct IslandEnergy {
+    double start = 0, inel = 0, end = 0, b_rest = 0, a_rest = 0, b_back = 0, a_back = 0;
+  };
+  std::vector<IslandEnergy> sums_;
+  std::vector<EntityId> bodies_;               // finite bodies of the contacts, by id
   std::vector<EntityId> parent_;               // union-find of islands
   std::vector<std::uint32_t> island_;
   std::vector<std::uint8_t> seen_;             // guard_energy: bodies of the contacts
