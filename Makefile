@@ -15,6 +15,24 @@ ifneq ($(OPT),-O2)
   BUILD    := build/opt$(subst -,,$(OPT))
 endif
 
+# As many jobs as the machine has cores, unless the user gave -j (on the
+# command line, which wins anyway, or in MAKEFLAGS in the environment). Only
+# the top-level make sets it; the $(MAKE) calls of run/test/... inherit its
+# jobserver. --output-sync keeps each target's output (a compiler's errors)
+# in one piece.
+ifeq ($(MAKELEVEL),0)
+  ifeq ($(filter -j%,$(shell printenv MAKEFLAGS)),)
+    NPROC := $(shell nproc 2>/dev/null || echo 1)
+    MAKEFLAGS += -j$(NPROC) --output-sync=target --no-print-directory
+    # A build from scratch (no $(BUILD)/obj yet): about 200 s of CPU for the game, the tests and the library.
+    ifeq ($(wildcard $(BUILD)/obj),)
+      ifneq ($(filter-out clean deps layers,$(or $(MAKECMDGOALS),all)),)
+        $(info building from scratch (about $(shell echo $$((200 / $(NPROC)))) s on $(NPROC) cores)...)
+      endif
+    endif
+  endif
+endif
+
 ifeq ($(SANITIZE),1)
   BUILD    := $(BUILD)/sanitize
   # The long stability cases (label "slow") take minutes at -O2; under the
