@@ -44,7 +44,7 @@ endif
 
 # Debian packages each target needs; `deps` installs the missing ones.
 PACKAGES := g++ make pkg-config libsdl2-dev libsdl2-ttf-dev libboost-test-dev fonts-dejavu-core \
-            nlohmann-json3-dev libboost-program-options-dev libstb-dev
+            nlohmann-json3-dev libboost-program-options-dev libstb-dev python3
 SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 # The course tree (src/, src/systems, src/utils, src/entities), the engine
@@ -78,7 +78,7 @@ TEST_OBJ += $(REF_OBJ) $(NUM_OBJ)
 SDL_CFLAGS = $(shell pkg-config --cflags sdl2 SDL2_ttf)
 SDL_LIBS   = $(shell pkg-config --libs sdl2 SDL2_ttf)
 
-.PHONY: all run test deps clean check-no-sdl determinism memcheck soak fuzz report stability bench
+.PHONY: all run test deps clean check-no-sdl layers determinism memcheck soak fuzz report stability bench
 all: $(BUILD)/game $(BUILD)/tests
 
 deps:
@@ -95,8 +95,12 @@ run: deps
 	./$(BUILD)/game $(if $(SCENE),--scene $(SCENE)) $(ARGS)
 
 test: deps
-	@$(MAKE) --no-print-directory $(BUILD)/tests $(BUILD)/game check-no-sdl
+	@$(MAKE) --no-print-directory layers $(BUILD)/tests $(BUILD)/game check-no-sdl
 	BOOST_TEST_COLOR_OUTPUT=no ./$(BUILD)/tests $(TEST_ARGS) 2>&1
+
+# Includes under src/ go one way (utils < components < engine/systems < entities < game < app), no cycle.
+layers:
+	@python3 tools/check_layers.py
 
 # The physics core must not depend on SDL: its library names no SDL symbol.
 check-no-sdl: $(BUILD)/libphysics.a
