@@ -15,6 +15,24 @@ ifneq ($(OPT),-O2)
   BUILD    := build/opt$(subst -,,$(OPT))
 endif
 
+# As many jobs as the machine has cores, unless the user gave -j (on the
+# command line, which wins anyway, or in MAKEFLAGS in the environment). Only
+# the top-level make sets it; the $(MAKE) calls of run/test/... inherit its
+# jobserver. --output-sync keeps each target's output (a compiler's errors)
+# in one piece.
+ifeq ($(MAKELEVEL),0)
+  ifeq ($(filter -j%,$(shell printenv MAKEFLAGS)),)
+    NPROC := $(shell nproc 2>/dev/null || echo 1)
+    MAKEFLAGS += -j$(NPROC) --output-sync=target --no-print-directory
+    # A build from scratch (no $(BUILD)/obj yet): about 200 s of CPU for the game, the tests and the library.
+    ifeq ($(wildcard $(BUILD)/obj),)
+      ifneq ($(filter-out clean deps layers,$(or $(MAKECMDGOALS),all)),)
+        $(info building from scratch (about $(shell echo $$((200 / $(NPROC)))) s on $(NPROC) cores)...)
+      endif
+    endif
+  endif
+endif
+
 ifeq ($(SANITIZE),1)
   BUILD    := $(BUILD)/sanitize
   # The long stability cases (label "slow") take minutes at -O2; under the
@@ -26,7 +44,7 @@ endif
 
 # Debian packages each target needs; `deps` installs the missing ones.
 PACKAGES := g++ make pkg-config libsdl2-dev libsdl2-ttf-dev libboost-test-dev fonts-dejavu-core \
-            nlohmann-json3-dev libboost-program-options-dev
+            nlohmann-json3-dev libboost-program-options-dev libstb-dev python3
 SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 # The course tree (src/, src/systems, src/utils, src/entities), the engine
@@ -38,7 +56,7 @@ COURSE_SRC := src/utils/vect.cpp src/utils/rect.cpp src/component_defs.cpp src/s
               src/entities/block.cpp src/game.cpp
 ENGINE_SRC := $(wildcard src/engine/*.cpp)
 APP_LIB_SRC := src/app/scene.cpp src/app/scene_json.cpp src/app/builtin_scenes.cpp src/app/dump.cpp \
-               src/app/offscreen.cpp src/app/soak.cpp src/app/headless.cpp src/utils/png.cpp
+               src/app/offscreen.cpp src/app/soak.cpp src/app/headless.cpp src/app/png.cpp
 CORE_SRC := $(COURSE_SRC) $(ENGINE_SRC) $(APP_LIB_SRC)
 # The command line and the testbed's input logic: SDL-free, linked into the game and the tests.
 APP_SRC  := src/app/cli.cpp src/app/testbed.cpp
@@ -60,7 +78,7 @@ TEST_OBJ += $(REF_OBJ) $(NUM_OBJ)
 SDL_CFLAGS = $(shell pkg-config --cflags sdl2 SDL2_ttf)
 SDL_LIBS   = $(shell pkg-config --libs sdl2 SDL2_ttf)
 
-.PHONY: all run test deps clean check-no-sdl determinism memcheck soak fuzz report stability bench
+.PHONY: all run test deps clean check-no-sdl layers determinism memcheck soak fuzz report stability bench
 all: $(BUILD)/game $(BUILD)/tests
 
 deps:
@@ -77,8 +95,12 @@ run: deps
 	./$(BUILD)/game $(if $(SCENE),--scene $(SCENE)) $(ARGS)
 
 test: deps
-	@$(MAKE) --no-print-directory $(BUILD)/tests $(BUILD)/game check-no-sdl
+	@$(MAKE) --no-print-directory layers $(BUILD)/tests $(BUILD)/game check-no-sdl
 	BOOST_TEST_COLOR_OUTPUT=no ./$(BUILD)/tests $(TEST_ARGS) 2>&1
+
+# Includes under src/ go one way (utils < components < engine/systems < entities < game < app), no cycle.
+layers:
+	@python3 tools/check_layers.py
 
 # The physics core must not depend on SDL: its library names no SDL symbol.
 check-no-sdl: $(BUILD)/libphysics.a

@@ -17,6 +17,12 @@
 #include "helpers.hpp"
 #include "app/scene_json.hpp"
 
+// The PNG decoder, compiled here and private to this file.
+#define STB_IMAGE_STATIC
+#define STB_IMAGE_IMPLEMENTATION
+#define STBI_ONLY_PNG
+#include <stb/stb_image.h>
+
 using namespace physics;
 namespace fs = std::filesystem;
 
@@ -115,39 +121,18 @@ Ran program(const TempDir& dir, const std::string& env, const std::vector<std::s
 
 const std::string no_display = "-u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER";
 
-// The pixels of a PNG written by our own Png::write (8-bit RGB, filter 0,
-// stored deflate blocks): enough to look at a screenshot without a decoder.
+// The pixels of a PNG, decoded by stb_image (libstb-dev, like the writer):
+// enough to compare two screenshots.
 struct Picture {
   std::uint32_t width = 0, height = 0;
   std::vector<std::uint8_t> rgb;
 };
-Picture read_own_png(const std::string& path) {
-  const std::string f = read(path);
-  const auto be32 = [&](std::size_t at) {
-    return (std::uint32_t(std::uint8_t(f[at])) << 24) | (std::uint32_t(std::uint8_t(f[at + 1])) << 16) |
-           (std::uint32_t(std::uint8_t(f[at + 2])) << 8) | std::uint32_t(std::uint8_t(f[at + 3]));
-  };
-  Picture p;
-  std::string z;  // the zlib stream, from every IDAT chunk
-  for (std::size_t at = 8; at + 8 <= f.size();) {
-    const std::uint32_t len = be32(at);
-    const std::string type = f.substr(at + 4, 4);
-    if (type == "IHDR") p.width = be32(at + 8), p.height = be32(at + 12);
-    if (type == "IDAT") z += f.substr(at + 8, len);
-    at += 12 + len;
-  }
-  std::string raw;
-  for (std::size_t at = 2; at + 5 <= z.size();) {  // after the 2-byte zlib header
-    const bool last = z[at] & 1;
-    const std::size_t len = std::uint8_t(z[at + 1]) | (std::size_t(std::uint8_t(z[at + 2])) << 8);
-    raw += z.substr(at + 5, len);
-    at += 5 + len;
-    if (last) break;
-  }
-  const std::size_t row = std::size_t{p.width} * 3 + 1;
-  if (raw.size() != row * p.height) return {};
-  for (std::uint32_t y = 0; y < p.height; ++y)
-    p.rgb.insert(p.rgb.end(), raw.begin() + long(y * row + 1), raw.begin() + long((y + 1) * row));
+Picture read_png(const std::string& path) {
+  int w = 0, h = 0, channels = 0;
+  std::uint8_t* data = stbi_load(path.c_str(), &w, &h, &channels, 3);
+  if (data == nullptr) return {};
+  Picture p{std::uint32_t(w), std::uint32_t(h), std::vector<std::uint8_t>(data, data + std::size_t(w) * h * 3)};
+  stbi_image_free(data);
   return p;
 }
 
@@ -426,7 +411,7 @@ BOOST_AUTO_TEST_CASE(the_window_draws_the_same_bodies_as_the_offscreen_picture) 
   };
   BOOST_TEST_REQUIRE(program(dir, no_display + " SDL_VIDEODRIVER=dummy", with(args, "window.png")).code == 0);
   BOOST_TEST_REQUIRE(program(dir, no_display, with(args, "offscreen.png")).code == 0);
-  const Picture w = read_own_png(dir.file("window.png")), h = read_own_png(dir.file("offscreen.png"));
+  const Picture w = read_png(dir.file("window.png")), h = read_png(dir.file("offscreen.png"));
   BOOST_TEST_REQUIRE(w.width == 800u);
   BOOST_TEST_REQUIRE(w.height == 600u);
   BOOST_TEST_REQUIRE(h.rgb.size() == w.rgb.size());

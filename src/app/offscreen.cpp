@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "app/png.hpp"
 #include "game.hpp"
-#include "utils/png.hpp"
 
 namespace physics::Offscreen {
 

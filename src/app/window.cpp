@@ -8,8 +8,8 @@
 #include <cstdlib>
 #include <vector>
 
+#include "app/png.hpp"
 #include "game.hpp"
-#include "utils/png.hpp"
 
 namespace physics {
 

@@ -1,5 +1,6 @@
-// Minimal PNG writer (RGB, 8 bits, stored deflate blocks): enough for
-// screenshots without pulling in SDL2_image or libpng.
+// PNG files of the screenshots (`--screenshot FILE.png`, headless and in the
+// window), written by stb_image_write from Debian's libstb-dev. Part of the
+// application layer: the physics core neither draws nor writes pictures.
 #pragma once
 
 #include <cstdint>
