@@ -111,7 +111,7 @@ std::string compare_broadphases(const std::vector<std::size_t>& sizes) {
       std::snprintf(line, sizeof line, "| %s | %zu | %zu | %.0f | %.0f | %.1f |\n", name, n, pairs, g, w, w / g);
       md << line;
     }
-  md << "\nThe grid is kept (src/systems/broadphase.hpp says why): one sorted axis separates bodies along x only, "
+  md << "\nThe grid is kept (src/engine/broadphase.hpp says why): one sorted axis separates bodies along x only, "
         "so each box meets every box of its x range, a number that grows as sqrt(N) in a square world.\n";
   return md.str();
 }

@@ -1,4 +1,4 @@
-// The broadphase choice, measured: our uniform grid (src/systems/broadphase)
+// The broadphase choice, measured: our uniform grid (src/engine/broadphase)
 // against a sort-and-sweep with a persistent, incrementally sorted x axis,
 // both fed the same boxes taken from bench scenes in motion.
 #pragma once
