@@ -6,7 +6,7 @@
 
 #include "bench.hpp"
 #include "entities/block.hpp"
-#include "engine/world.hpp"
+#include "game.hpp"
 
 namespace bench {
 
