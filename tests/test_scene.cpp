@@ -139,8 +139,25 @@ BOOST_AUTO_TEST_CASE(many_is_the_question_9_scene_bit_for_bit) {
     BOOST_TEST(state(game) == state(ref));
     BOOST_TEST((scene.components.sum_forces == ref.components.sum_forces));
     BOOST_TEST((scene.components.color == ref.components.color));
+    BOOST_TEST((game.components.sum_forces == ref.components.sum_forces));
+    BOOST_TEST((game.components.color == ref.components.color));
     for (int i = 0; i < 200; ++i) Game::step(ref), Game::step(scene);
     BOOST_TEST(state(scene) == state(ref));
+  }
+}
+
+BOOST_AUTO_TEST_CASE(drift_and_impulse_are_the_game_s_red_blocks_of_questions_4_and_5) {
+  for (const char* name : {"drift", "impulse"}) {
+    const SceneSpec s = builtin(name);
+    World scene(s.systems, s.params);
+    populate(scene, s);
+    World game(s.systems, s.params);
+    Game::init_walls(game);
+    if (std::string(name) == "drift") Game::red_block_with_velocity(game);
+    else Game::red_block_with_force(game);
+    BOOST_TEST(state(game) == state(scene), name);
+    BOOST_TEST((game.components.sum_forces == scene.components.sum_forces), name);
+    BOOST_TEST((game.components.color == scene.components.color), name);
   }
 }
 
