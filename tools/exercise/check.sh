@@ -7,7 +7,7 @@
 #     n+1 fail (so each stub alone fails its suite, and no suite needs a
 #     later question). n = 9 is the whole tree, answers kept, built alone.
 #  3. the project's own test binary ($1) passes every q<n>_* suite.
-# usage: check.sh MAIN_TESTS_BINARY DIR
+# usage: [EXERCISE_OPT=-O0] check.sh MAIN_TESTS_BINARY DIR
 set -eu
 main_tests=$1
 dir=$2
@@ -20,7 +20,7 @@ log=$dir.log
 # prints the per-suite lines ("  ok   q6_mdiff: 2 passed" / "  FAIL ...").
 run() {
   python3 "$gen" --out "$dir" --force --keep "$1" >/dev/null
-  $MAKE --no-print-directory -s -C "$dir" build/tests
+  $MAKE --no-print-directory -s -C "$dir" build/tests ${EXERCISE_OPT:+OPT=$EXERCISE_OPT}
   # A stub must never hang a test: bounded.
   (cd "$dir" && BOOST_TEST_COLOR_OUTPUT=no timeout 300 ./build/tests) >"$log" 2>&1 || true
   grep -E '^  (ok  |FAIL) q[0-9]+_' "$log" || { echo "exercise-check: no suite ran (see $log)" >&2; tail -5 "$log" >&2; exit 1; }
