@@ -4,21 +4,27 @@
 
 namespace physics::Game {
 
-// Q1 begin
 void init_walls(World& w, int width, int height, double e) {
+  // Q1 begin
+  // Q1 stub: // TODO Q1: create four walls (Block::make), one on each edge of the width x height screen:
+  // Q1 stub: // the horizontal ones blue (wall_blue) and as long as the screen, the vertical ones black
+  // Q1 stub: // (wall_black) between them, all wall_thickness (40 px) thick, not overlapping, of mass
+  // Q1 stub: // `infinity` (Q2) and restitution e.
+  // Q1 stub: (void)w, (void)width, (void)height, (void)e;
   const int t = wall_thickness;
   Block::make(w, 0, 0, width, t, wall_blue, infinity, e);                    // top
   Block::make(w, 0, height - t, width, t, wall_blue, infinity, e);           // bottom
   Block::make(w, 0, t, t, height - 2 * t, wall_black, infinity, e);          // left
   Block::make(w, width - t, t, t, height - 2 * t, wall_black, infinity, e);  // right
+  // Q1 end
 }
-// Q1 end
 
 Block::t red_block(World& w) { return Block::make(w, 100, 100, 40, 40, red, 10.0); }
 
 Block::t red_block_with_velocity(World& w) {
   const Block::t b = red_block(w);
   // Q4 begin
+  // Q4 stub: // TODO Q4: give the red block b the velocity (0.25, 0.25) (component velocity).
   w.components.velocity[b.id] = {0.25, 0.25};
   // Q4 end
   return b;
@@ -27,6 +33,8 @@ Block::t red_block_with_velocity(World& w) {
 Block::t red_block_with_force(World& w) {
   const Block::t b = red_block(w);
   // Q5 begin
+  // Q5 stub: // TODO Q5: instead of a velocity, apply to the red block b the force (0.25, 0.25)
+  // Q5 stub: // (component sum_forces): Forces turns it into the same velocity on the first frame.
   w.components.sum_forces[b.id] = {0.25, 0.25};
   // Q5 end
   return b;
@@ -37,6 +45,11 @@ void init_scene(World& w, std::uint64_t seed) {
   init_walls(w);
   red_block_with_force(w);
   // Q9 begin
+  // Q9 stub: // TODO Q9: add other mobile blocks with different initial conditions: ten squares
+  // Q9 stub: // with a random side in [20, 40], a random mass in [1, 20) and a random first
+  // Q9 stub: // force in [0, 0.25) per axis (use Random rng(seed), utils/random.hpp), placed so
+  // Q9 stub: // that no two blocks overlap, and check that the collisions are right.
+  // Q9 stub: (void)seed;
   // Ten squares on a 5×2 grid of 110×150 px cells, each at a random place in
   // its cell, with a random side, mass, colour and first impulse J (the
   // force J/dt on the first frame changes the velocity by J/m).

@@ -44,6 +44,7 @@ BOOST_AUTO_TEST_CASE(a_block_hitting_a_wall_reverses_its_normal_velocity_exactly
     World w = test::physics_world();
     Game::init_walls(w);
     const auto b = Block::make(w, 725, 300, 40, 40, test::grey, m);  // 5 px into the right wall
+    BOOST_TEST_REQUIRE(b.id == 4u);  // after the four walls
     w.components.velocity[b.id] = {0.3, 0.7};
     test::collide(w);
     BOOST_TEST(w.components.velocity[b.id].x == -0.3);

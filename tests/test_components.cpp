@@ -41,6 +41,14 @@ BOOST_AUTO_TEST_CASE(block_make_sets_its_components) {
   BOOST_TEST((c.sum_forces[b.id] == Vector::zero()));
 }
 
+BOOST_AUTO_TEST_CASE(walls_have_an_infinite_mass) {
+  // The sheet's Q2 ends: "modifier Game.init_walls pour créer des murs de masse infinie".
+  World w;
+  Game::init_walls(w);
+  BOOST_TEST_REQUIRE(w.components.size() == 4u);
+  for (EntityId e = 0; e < 4; ++e) BOOST_TEST((w.components.mass[e] == infinity));
+}
+
 BOOST_AUTO_TEST_CASE(block_make_registers_only_with_declared_systems) {
   World w(SystemSet{true, false, true, false});
   Block::make(w, 0, 0, 10, 10, test::grey, 1.0);

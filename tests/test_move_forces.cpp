@@ -1,4 +1,4 @@
-// Q3-Q5: Move and Forces.
+// Q3-Q5: Move, the red block, Forces.
 #include "helpers.hpp"
 
 using namespace physics;
@@ -14,13 +14,23 @@ BOOST_AUTO_TEST_CASE(move_adds_dt_times_velocity) {
   BOOST_TEST(w.components.position[b.id].y == 100 + course_dt * -0.5);
 }
 
+BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(q4_red_block)
+
 BOOST_AUTO_TEST_CASE(the_red_block_drifts_through_the_walls_without_collision) {
-  // Q4: with Draw+Move only, the red block is not stopped by the walls.
+  // Q4: with Draw+Move only, the red block (mass 10, velocity (0.25, 0.25)) is
+  // not stopped by the walls.
   World w(SystemSet{false, false, true, false});
-  const auto red = Block::make(w, 100, 100, 40, 40, Color{255, 0, 0, 255}, 10.0);
-  w.components.velocity[red.id] = {0.25, 0.25};
+  Game::init_walls(w);
+  const auto red = Game::red_block_with_velocity(w);
+  BOOST_TEST(w.components.mass[red.id] == 10.0);
+  BOOST_TEST((w.components.color[red.id] == Game::red));
+  BOOST_TEST((w.components.velocity[red.id] == Vector{0.25, 0.25}));
+  BOOST_TEST(w.systems.move->size() == 5u);  // Block::make registers it with Move
   for (int i = 0; i < 600; ++i) Game::step(w);  // 10 s: 2500 px
   BOOST_TEST(w.components.position[red.id].x > 800.0);
+  BOOST_TEST(w.components.position[red.id].y > 600.0);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
@@ -62,6 +72,16 @@ BOOST_AUTO_TEST_CASE(an_initial_force_gives_a_constant_velocity) {
   for (int i = 0; i < 10; ++i) Game::step(w);
   BOOST_TEST((w.components.velocity[red.id] == v1));
   BOOST_TEST(w.components.position[red.id].x > p1.x + 9 * course_dt * v1.x);
+}
+
+BOOST_AUTO_TEST_CASE(the_red_block_set_going_by_a_force_moves_as_with_the_velocity) {
+  // Q5: Game::red_block_with_force applies (0.25, 0.25) instead of the velocity.
+  World w(SystemSet{false, true, true, false});
+  const auto red = Game::red_block_with_force(w);
+  BOOST_TEST((w.components.velocity[red.id] == Vector::zero()));
+  BOOST_TEST((w.components.sum_forces[red.id] == Vector{0.25, 0.25}));
+  Game::step(w);
+  BOOST_TEST((w.components.velocity[red.id] == Vector{course_dt * 0.025, course_dt * 0.025}));
 }
 
 BOOST_AUTO_TEST_CASE(gravity_is_an_acceleration_on_finite_masses) {

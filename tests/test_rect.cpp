@@ -19,7 +19,10 @@ BOOST_AUTO_TEST_CASE(mdiff_of_overlapping_boxes_contains_the_origin) {
   const auto [p, r] = Rect::mdiff({0, 0}, {40, 40}, {30, 10}, {20, 20});
   BOOST_TEST(p.x == -10.0);
   BOOST_TEST(p.y == -30.0);
-  BOOST_TEST(Rect::has_origin(p, r));
+  BOOST_TEST(p.x < 0.0);  // the origin is inside: x < 0 < x + w, y < 0 < y + h
+  BOOST_TEST(p.x + r.width > 0.0);
+  BOOST_TEST(p.y < 0.0);
+  BOOST_TEST(p.y + r.height > 0.0);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
@@ -38,6 +41,13 @@ BOOST_AUTO_TEST_CASE(inside_outside_and_border) {
   BOOST_TEST(!Rect::has_origin({-1, 0}, {2, 2}));
   BOOST_TEST(!Rect::has_origin({-1, -2}, {2, 2}));
   BOOST_TEST(!Rect::has_origin({0, 0}, {2, 2}));
+}
+
+BOOST_AUTO_TEST_CASE(the_difference_of_overlapping_boxes_has_the_origin) {
+  const auto [p, r] = Rect::mdiff({0, 0}, {40, 40}, {30, 10}, {20, 20});
+  BOOST_TEST(Rect::has_origin(p, r));
+  const auto [q, s] = Rect::mdiff({0, 0}, {40, 40}, {41, 10}, {20, 20});  // 1 px apart
+  BOOST_TEST(!Rect::has_origin(q, s));
 }
 
 BOOST_AUTO_TEST_CASE(touching_boxes_do_not_collide) {

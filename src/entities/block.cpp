@@ -26,7 +26,12 @@ t make(World& w, double x, double y, int width, int height, Color color, double 
   c.position[e.id] = {x, y};
   c.box[e.id] = {width, height};
   c.color[e.id] = color;
+  // Q2 begin
+  // Q2 stub: // TODO Q2: store the block's mass in its component `mass` (velocity and
+  // Q2 stub: // sum_forces keep their default: the zero vector).
+  // Q2 stub: (void)mass;
   c.mass[e.id] = mass;
+  // Q2 end
   c.restitution[e.id] = restitution;
   // velocity and sum_forces keep their defaults: zero (Q2).
 

@@ -6,6 +6,13 @@
 namespace physics {
 
 Vector Collision::penetration(Vector p, Rect s) {
+  // Q8 begin
+  // Q8 stub: // TODO Q8: s placed at p is the Minkowski difference b - c, which contains the
+  // Q8 stub: // origin. Of the four vectors from the origin to its edges, (p.x, 0),
+  // Q8 stub: // (p.x + s.width, 0), (0, p.y) and (0, p.y + s.height), return the shortest
+  // Q8 stub: // (on a tie, the first in that order): the penetration vector n.
+  // Q8 stub: (void)p, (void)s;
+  // Q8 stub: return {};
   const Vector candidates[4] = {
       {p.x, 0.0}, {p.x + s.width, 0.0}, {0.0, p.y}, {0.0, p.y + s.height}};
   Vector best = candidates[0];
@@ -18,9 +25,22 @@ Vector Collision::penetration(Vector p, Rect s) {
     }
   }
   return best;
+  // Q8 end
 }
 
 bool Collision::resolve(Components& k, EntityId c, EntityId b, Contact* out) {
+  // Q8 begin
+  // Q8 stub: // TODO Q8: the sheet's detailed algorithm for the pair (c, b). Return false (and
+  // Q8 stub: // change nothing) if both masses are infinite or if s = mdiff(c, b) does not have
+  // Q8 stub: // the origin. Otherwise: n = penetration(s); move c by N_c x n and b by -N_b x n
+  // Q8 stub: // (N_c, N_b: shares of the speeds; both at rest: the heavier ejects the lighter;
+  // Q8 stub: // a body of infinite mass never moves); normalise n; if v = v_c - v_b approaches
+  // Q8 stub: // (v . n < 0), apply j = -(1 + e)(v . n) / (1/M_c + 1/M_b) with
+  // Q8 stub: // e = min(restitution of c, of b): v_c += n j / M_c, v_b -= n j / M_b
+  // Q8 stub: // (engine/contact.hpp has change_normal_velocity and inverse_mass). If out is not
+  // Q8 stub: // null, fill it: Contact{c, b, penetration, normalised n, approaching}. Return true.
+  // Q8 stub: (void)k, (void)c, (void)b, (void)out;
+  // Q8 stub: return false;
   const double mc = k.mass[c];
   const double mb = k.mass[b];
   // Two walls never collide (sheet: "deux murs ne font pas de collision").
@@ -79,12 +99,16 @@ bool Collision::resolve(Components& k, EntityId c, EntityId b, Contact* out) {
   }
   if (out) *out = Contact{c, b, pen, n, approaching};
   return true;
+  // Q8 end
 }
 
 void Collision::update(Components& k, BroadPhase::CoursePairs pairs) {
   contacts_.clear();
   contact_count_ = 0;
   // Q8 begin
+  // Q8 stub: // TODO Q8: for each pair (p.c, p.b) of `pairs`, call resolve; count the collisions
+  // Q8 stub: // in contact_count_, and if record_contacts, push each Contact into contacts_.
+  // Q8 stub: (void)k, (void)pairs;
   for (const Pair p : pairs) {
     Contact contact;
     if (!resolve(k, p.c, p.b, record_contacts ? &contact : nullptr)) continue;

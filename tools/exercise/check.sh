@@ -1,0 +1,55 @@
+#!/bin/sh
+# `make exercise-check`: the exercise tree, built on its own, against the
+# per-question suites (q<n>_*), both ways.
+#  1. every answer stubbed: every question's suites fail;
+#  2. in the sheet's order, questions 1..n answered and the rest stubbed
+#     (n = 1..9, incremental rebuilds): the suites of 1..n pass, those of
+#     n+1 fail (so each stub alone fails its suite, and no suite needs a
+#     later question). n = 9 is the whole tree, answers kept, built alone.
+#  3. the project's own test binary ($1) passes every q<n>_* suite.
+# usage: [EXERCISE_OPT=-O0] check.sh MAIN_TESTS_BINARY DIR
+set -eu
+main_tests=$1
+dir=$2
+gen=tools/exercise/make_exercise.py
+MAKE=${MAKE:-make}
+fail=0
+log=$dir.log
+
+# Builds the tree with the answers of $1 (e.g. "1 2 3") kept, runs its tests,
+# prints the per-suite lines ("  ok   q6_mdiff: 2 passed" / "  FAIL ...").
+run() {
+  python3 "$gen" --out "$dir" --force --keep "$1" >/dev/null
+  $MAKE --no-print-directory -s -C "$dir" build/tests ${EXERCISE_OPT:+OPT=$EXERCISE_OPT}
+  # A stub must never hang a test: bounded.
+  (cd "$dir" && BOOST_TEST_COLOR_OUTPUT=no timeout 300 ./build/tests) >"$log" 2>&1 || true
+  grep -E '^  (ok  |FAIL) q[0-9]+_' "$log" || { echo "exercise-check: no suite ran (see $log)" >&2; tail -5 "$log" >&2; exit 1; }
+}
+# expect LINES q STATE: every suite of question q is in STATE (ok or FAIL), and there is one.
+expect() {
+  suites=$(printf '%s\n' "$1" | grep -E "^  (ok  |FAIL) q$2_" || true)
+  if [ -z "$suites" ]; then echo "  Q$2: no suite q$2_*"; fail=1; return; fi
+  bad=$(printf '%s\n' "$suites" | grep -v "^  $3" || true)
+  if [ -n "$bad" ]; then echo "  Q$2 [$4]: expected $3:"; printf '%s\n' "$bad"; fail=1; fi
+}
+
+echo "exercise-check: every answer stubbed"
+out=$(run "")
+for q in 1 2 3 4 5 6 7 8 9; do expect "$out" $q FAIL "all stubbed"; done
+printf '%s\n' "$out" | sed 's/^/    /'
+
+keep=""
+for n in 1 2 3 4 5 6 7 8 9; do
+  keep="$keep $n"
+  out=$(run "$keep")
+  for q in $keep; do expect "$out" $q ok "answers 1..$n"; done
+  [ $n -lt 9 ] && expect "$out" $((n + 1)) FAIL "answers 1..$n"
+  echo "exercise-check: answers 1..$n: $(tail -1 "$log")"
+done
+
+echo "exercise-check: the project's tests ($main_tests), suites q*"
+BOOST_TEST_COLOR_OUTPUT=no "$main_tests" --run_test='q*' >"$log" 2>&1 || { echo "  the project's q suites fail (see $log)"; fail=1; }
+tail -1 "$log"
+
+if [ $fail = 0 ]; then echo "exercise-check: ok"; else echo "exercise-check: FAILED"; fi
+exit $fail
