@@ -39,13 +39,15 @@ int main(int argc, char* argv[]) {
             [](const ut::test_suite* a, const ut::test_suite* b) { return a->p_name.get() < b->p_name.get(); });
   for (const ut::test_suite* suite : top.suites) {
     const ut::test_results& r = ut::results_collector.results(suite->p_id);
-    const auto failed = r.p_test_cases_failed + r.p_test_cases_aborted;
+    // An aborted case (an exception, a failed REQUIRE) is counted among the
+    // failed ones too: adding p_test_cases_aborted would count it twice.
+    const auto failed = r.p_test_cases_failed;
     if (r.p_test_cases_passed + failed == 0) continue;  // filtered out
     std::cout << "  " << (failed ? "FAIL " : "ok   ") << suite->p_name.get() << ": " << r.p_test_cases_passed
               << " passed" << (failed ? ", " + std::to_string(failed) + " failed" : "") << "\n";
   }
   const ut::test_results& r = ut::results_collector.results(master.p_id);
-  std::cout << r.p_test_cases_passed << " passed, " << r.p_test_cases_failed + r.p_test_cases_aborted << " failed"
+  std::cout << r.p_test_cases_passed << " passed, " << r.p_test_cases_failed << " failed"
             << std::endl;
   return rc;
 }
