@@ -501,7 +501,7 @@ TextPos line_column(std::string_view text, std::size_t position) {
   return p;
 }
 
-SceneSpec parse_scene(std::string_view text, const std::string& source) {
+SceneSpec read_scene(std::string_view text, const std::string& source) {
   StrictDom dom;
   // Comments (// and /* */) are allowed: scene files are written by hand.
   const bool ok = json::sax_parse(text, &dom, json::input_format_t::json, true, true);
@@ -527,12 +527,16 @@ SceneSpec parse_scene(std::string_view text, const std::string& source) {
     for (std::size_t i = 0; i < v->size(); ++i)
       s.blocks.push_back(read_entry(r, (*v)[i], "blocks[" + std::to_string(i) + "]", s));
   }
-  // The checks that need the whole scene (counts, placement against the walls).
-  expand(s, source);
   return s;
 }
 
-SceneSpec load_scene_file(const std::string& path) {
+SceneSpec parse_scene(std::string_view text, const std::string& source) {
+  SceneSpec s = read_scene(text, source);
+  expand(s, source);  // the validation (scene.hpp), placement included
+  return s;
+}
+
+SceneSpec read_scene_file(const std::string& path) {
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
   if (ec || !std::filesystem::exists(status))
@@ -546,7 +550,13 @@ SceneSpec load_scene_file(const std::string& path) {
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw SceneError(path + ": cannot read the scene file: read error");
-  return parse_scene(text.str(), path);
+  return read_scene(text.str(), path);
+}
+
+SceneSpec load_scene_file(const std::string& path) {
+  SceneSpec s = read_scene_file(path);
+  expand(s, path);  // the validation (scene.hpp), placement included
+  return s;
 }
 
 // ---------------------------------------------------------------------------

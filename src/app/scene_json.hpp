@@ -18,12 +18,19 @@
 
 namespace physics {
 
-// Parses and validates a scene file's text. `source` names it in messages
-// and gives the default scene name (its file name without directory and
-// extension). Throws SceneError.
+// Reads a scene file's text into a SceneSpec: JSON syntax, keys and the types
+// of values (what converting JSON needs), not the scene's meaning: that is
+// validate()/expand() in scene.hpp, run once by whoever builds the world (the
+// command line validates after applying its overrides). `source` names the
+// file in messages and gives the default scene name (its file name without
+// directory and extension). Throws SceneError.
+SceneSpec read_scene(std::string_view text, const std::string& source);
+// read_scene, then validated (expand: every check, placement included):
+// a SceneSpec it returns builds. Throws SceneError.
 SceneSpec parse_scene(std::string_view text, const std::string& source);
 
-// Reads and parses a file. Throws SceneError (also when it cannot be read).
+// The same from a file. Throw SceneError (also when it cannot be read).
+SceneSpec read_scene_file(const std::string& path);
 SceneSpec load_scene_file(const std::string& path);
 
 // The scene as a scene file that parse_scene reads back to the same scene.
