@@ -41,16 +41,24 @@ class StrictDom : public nlohmann::json_sax<json> {
     return false;
   }
   bool start_object(std::size_t) override { return open(json::object()); }
-  bool start_array(std::size_t) override { return open(json::array()); }
+  bool start_array(std::size_t) override {
+    // Most arrays of a scene are pairs ([x, y], [w, h]): one allocation, not two.
+    json a = json::array();
+    a.get_ref<json::array_t&>().reserve(2);
+    return open(std::move(a));
+  }
   bool end_object() override { return close(); }
   bool end_array() override { return close(); }
   bool key(string_t& k) override {
-    Open& top = stack_.back();
-    if (top.value->contains(k)) {
+    // One lookup: the member is made here (null until its value comes), so
+    // a second one with the same name is a duplicate.
+    auto [it, inserted] = stack_.back().value->emplace(k, nullptr);
+    if (!inserted) {
       error = path() + (path().empty() ? "" : ": ") + "duplicate key \"" + k + "\"";
       return false;
     }
-    pending_key_ = k;
+    slot_ = &it.value();
+    last_key_ = k;
     return true;
   }
   bool parse_error(std::size_t pos, const std::string&, const nlohmann::detail::exception& ex) override {
@@ -69,39 +77,41 @@ class StrictDom : public nlohmann::json_sax<json> {
   }
 
  private:
+  // An open array or object; where it sits in its parent (a key or an
+  // index) is kept to build the path of an error, and only then.
   struct Open {
     json* value;
-    std::string name;  // path segment: ".key" or "[i]"
+    std::string key;         // in an object
+    std::size_t index = 0;   // in an array
+    bool in_array = false;
   };
   std::vector<Open> stack_;
-  std::string pending_key_;
+  json* slot_ = nullptr;  // the member key() made, waiting for its value
+  std::string last_key_;  // its name
 
   std::string path() const {
     std::string p;
-    for (const Open& o : stack_) p += o.name;
+    for (std::size_t i = 1; i < stack_.size(); ++i)
+      p += stack_[i].in_array ? "[" + std::to_string(stack_[i].index) + "]" : "." + stack_[i].key;
     if (!p.empty() && p[0] == '.') p.erase(0, 1);
     return p;
   }
   // Places v in the open container (or as the root); returns where it went.
-  json* place(json&& v, std::string& name) {
+  json* place(json&& v) {
     if (stack_.empty()) {
       root = std::move(v);
       return &root;
     }
     json& top = *stack_.back().value;
     if (top.is_array()) {
-      name = "[" + std::to_string(top.size()) + "]";
       top.push_back(std::move(v));
       return &top.back();
     }
-    name = "." + pending_key_;
-    json& slot = top[pending_key_];
-    slot = std::move(v);
-    return &slot;
+    *slot_ = std::move(v);
+    return slot_;
   }
   bool add(json&& v) {
-    std::string name;
-    place(std::move(v), name);
+    place(std::move(v));
     return true;
   }
   bool open(json&& v) {
@@ -109,9 +119,15 @@ class StrictDom : public nlohmann::json_sax<json> {
       error = "nesting deeper than " + std::to_string(max_depth) + " levels";
       return false;
     }
-    std::string name;
-    json* where = place(std::move(v), name);
-    stack_.push_back({where, name});
+    Open o{nullptr, {}, 0, false};
+    if (!stack_.empty()) {
+      const json& top = *stack_.back().value;
+      o.in_array = top.is_array();
+      if (o.in_array) o.index = top.size();
+      else o.key = last_key_;
+    }
+    o.value = place(std::move(v));
+    stack_.push_back(std::move(o));
     return true;
   }
   bool close() {
@@ -153,11 +169,34 @@ std::string short_text(double v) {
   return o.str();
 }
 
+// A key path ("blocks[3].size[0]"), built only for a message: a scene's
+// thousands of blocks pass their checks without a string being made. A Path
+// points to its parent, so it lives no longer than it: name only Paths made
+// from named ones.
+class Path {
+ public:
+  Path(const char* text) : text_(text) {}  // NOLINT: a literal path
+  Path(const Path& parent, const char* suffix) : parent_(&parent), text_(suffix) {}
+  Path(const Path& parent, std::size_t index) : parent_(&parent), index_(index), indexed_(true) {}
+  std::string str() const {
+    std::string p = parent_ ? parent_->str() : std::string();
+    return indexed_ ? p + "[" + std::to_string(index_) + "]" : p + text_;
+  }
+  friend Path operator+(const Path& parent, const char* suffix) { return Path(parent, suffix); }
+
+ private:
+  const Path* parent_ = nullptr;
+  const char* text_ = "";
+  std::size_t index_ = 0;
+  bool indexed_ = false;
+};
+
 class Reader {
  public:
   explicit Reader(const std::string& source) : source_(source) {}
 
-  [[noreturn]] void fail(const std::string& path, const std::string& problem) const {
+  [[noreturn]] void fail(const Path& at, const std::string& problem) const {
+    const std::string path = at.str();
     throw SceneError(source_ + ": " + (path.empty() ? "" : path + ": ") + problem);
   }
 
@@ -168,12 +207,12 @@ class Reader {
     return std::string(v.is_null() ? "null" : v.is_array() ? "an array" : "an object");
   }
 
-  void object(const json& v, const std::string& path) const {
+  void object(const json& v, const Path& path) const {
     if (!v.is_object()) fail(path, "must be an object {...} (got " + got(v) + ")");
   }
 
   // Unknown keys are errors, with the nearest known key as a hint.
-  void keys(const json& v, const std::string& path, std::initializer_list<std::string_view> allowed) const {
+  void keys(const json& v, const Path& path, std::initializer_list<std::string_view> allowed) const {
     object(v, path);
     for (const auto& item : v.items()) {
       const std::string& k = item.key();
@@ -184,19 +223,20 @@ class Reader {
         list += (list.empty() ? "" : ", ") + std::string(a);
         if (const std::size_t d = edit_distance(k, a); d < best) best = d, hint = std::string(a);
       }
-      fail(path.empty() ? quote(k) : path + "." + k,
+      const std::string p = path.str();
+      fail((p.empty() ? quote(k) : p + "." + k).c_str(),
            "unknown key" + (hint.empty() ? "" : " (did you mean \"" + hint + "\"?)") + "; expected one of: " + list);
     }
   }
 
-  double number(const json& v, const std::string& path) const {
+  double number(const json& v, const Path& path) const {
     if (!v.is_number()) fail(path, "must be a number (got " + got(v) + ")");
     const double d = v.get<double>();
     if (!std::isfinite(d)) fail(path, "must be a finite number (got " + short_text(d) + ")");
     return d;
   }
 
-  std::int64_t integer(const json& v, const std::string& path, std::int64_t lo, std::int64_t hi) const {
+  std::int64_t integer(const json& v, const Path& path, std::int64_t lo, std::int64_t hi) const {
     if (!v.is_number()) fail(path, "must be an integer (got " + got(v) + ")");
     std::int64_t i;
     if (v.is_number_unsigned()) {
@@ -215,37 +255,37 @@ class Reader {
     return i;
   }
 
-  std::uint64_t seed(const json& v, const std::string& path) const {
+  std::uint64_t seed(const json& v, const Path& path) const {
     if (v.is_number_unsigned()) return v.get<std::uint64_t>();
     return static_cast<std::uint64_t>(integer(v, path, 0, std::int64_t{1} << 53));
   }
 
-  bool boolean(const json& v, const std::string& path) const {
+  bool boolean(const json& v, const Path& path) const {
     if (!v.is_boolean()) fail(path, "must be true or false (got " + got(v) + ")");
     return v.get<bool>();
   }
 
-  std::string text(const json& v, const std::string& path) const {
+  std::string text(const json& v, const Path& path) const {
     if (!v.is_string()) fail(path, "must be a string (got " + got(v) + ")");
     return v.get<std::string>();
   }
 
-  const json& pair(const json& v, const std::string& path, const char* what) const {
+  const json& pair(const json& v, const Path& path, const char* what) const {
     if (!v.is_array() || v.size() != 2) fail(path, std::string("must be ") + what + " (got " + got(v) + ")");
     return v;
   }
 
-  Vector vec(const json& v, const std::string& path) const {
+  Vector vec(const json& v, const Path& path) const {
     pair(v, path, "an array of two numbers [x, y]");
     return {number(v[0], path + "[0]"), number(v[1], path + "[1]")};
   }
 
-  int size_value(const json& v, const std::string& path) const {
+  int size_value(const json& v, const Path& path) const {
     if (v.is_number() && v.get<double>() <= 0) fail(path, "must be > 0 (got " + got(v) + ")");
     return static_cast<int>(integer(v, path, 1, max_block_size));
   }
 
-  double mass(const json& v, const std::string& path) const {
+  double mass(const json& v, const Path& path) const {
     if (v.is_string()) {
       if (v.get_ref<const std::string&>() == "inf") return infinity;
       fail(path, "must be a number > 0 or \"inf\" (got " + got(v) + ")");
@@ -257,13 +297,13 @@ class Reader {
     return m;
   }
 
-  double restitution(const json& v, const std::string& path) const {
+  double restitution(const json& v, const Path& path) const {
     const double e = number(v, path);
     if (e < 0.0 || e > 1.0) fail(path, "must be in [0, 1] (got " + got(v) + ")");
     return e;
   }
 
-  Color color(const json& v, const std::string& path) const {
+  Color color(const json& v, const Path& path) const {
     if (v.is_string()) {
       const std::string& s = v.get_ref<const std::string&>();
       const bool hex = s.size() == 7 && s[0] == '#' &&
@@ -277,7 +317,7 @@ class Reader {
   }
 
   // A number, or a range [min, max] a generator draws from.
-  RealSpec real_spec(const json& v, const std::string& path) const {
+  RealSpec real_spec(const json& v, const Path& path) const {
     if (v.is_array()) {
       pair(v, path, "a number or a range [min, max]");
       const double lo = number(v[0], path + "[0]"), hi = number(v[1], path + "[1]");
@@ -286,7 +326,7 @@ class Reader {
     }
     return RealSpec::fixed(number(v, path));
   }
-  IntSpec size_spec(const json& v, const std::string& path) const {
+  IntSpec size_spec(const json& v, const Path& path) const {
     if (v.is_array()) {
       pair(v, path, "an integer or a range [min, max]");
       const int lo = size_value(v[0], path + "[0]"), hi = size_value(v[1], path + "[1]");
@@ -296,13 +336,13 @@ class Reader {
     }
     return IntSpec::fixed(size_value(v, path));
   }
-  VecSpec vec_spec(const json& v, const std::string& path) const {
+  VecSpec vec_spec(const json& v, const Path& path) const {
     pair(v, path, "an array [x, y] of numbers or ranges [min, max]");
     return {real_spec(v[0], path + "[0]"), real_spec(v[1], path + "[1]")};
   }
 
  private:
-  [[noreturn]] void range_fail(const std::string& path, std::int64_t lo, std::int64_t hi, const std::string& v) const {
+  [[noreturn]] void range_fail(const Path& path, std::int64_t lo, std::int64_t hi, const std::string& v) const {
     fail(path, "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] (got " + v + ")");
   }
   const std::string& source_;
@@ -341,7 +381,7 @@ void read_world(const Reader& r, const json& w, SceneSpec& s) {
     if (!v->is_array()) r.fail("world.systems", "must be an array of system names (got " + r.got(*v) + ")");
     SystemSet set{false, false, false, false};
     for (std::size_t i = 0; i < v->size(); ++i) {
-      const std::string path = "world.systems[" + std::to_string(i) + "]";
+      const Path systems = "world.systems", path(systems, i);
       const std::string name = r.text((*v)[i], path);
       const auto id = system_from_name(name);
       if (!id) r.fail(path, "unknown system " + quote(name) + "; expected draw, move, forces or collision");
@@ -353,7 +393,7 @@ void read_world(const Reader& r, const json& w, SceneSpec& s) {
 }
 
 // The keys a block and a grid share: everything but the placement.
-void read_block_keys(const Reader& r, const json& b, const std::string& p, BlockSpec& out) {
+void read_block_keys(const Reader& r, const json& b, const Path& p, BlockSpec& out) {
   const json* pos = find(b, "pos");
   const json* size = find(b, "size");
   const json* mass = find(b, "mass");
@@ -372,14 +412,14 @@ void read_block_keys(const Reader& r, const json& b, const std::string& p, Block
   if (const json* v = find(b, "restitution")) out.restitution = r.restitution(*v, p + ".restitution");
 }
 
-BlockSpec read_block(const Reader& r, const json& b, const std::string& p) {
+BlockSpec read_block(const Reader& r, const json& b, const Path& p) {
   r.keys(b, p, {"pos", "size", "mass", "velocity", "force", "impulse", "color", "restitution"});
   BlockSpec out;
   read_block_keys(r, b, p, out);
   return out;
 }
 
-GridSpec read_grid(const Reader& r, const json& g, const std::string& p) {
+GridSpec read_grid(const Reader& r, const json& g, const Path& p) {
   r.keys(g, p, {"pos", "size", "mass", "velocity", "force", "impulse", "color", "restitution", "count", "step"});
   GridSpec out;
   read_block_keys(r, g, p, out.first);
@@ -394,7 +434,7 @@ GridSpec read_grid(const Reader& r, const json& g, const std::string& p) {
   return out;
 }
 
-RandomSpec read_random(const Reader& r, const json& g, const std::string& p, const SceneSpec& s) {
+RandomSpec read_random(const Reader& r, const json& g, const Path& p, const SceneSpec& s) {
   r.keys(g, p,
          {"count", "side", "size", "mass", "velocity", "force", "impulse", "restitution", "color", "cells", "area"});
   RandomSpec out;
@@ -434,7 +474,7 @@ RandomSpec read_random(const Reader& r, const json& g, const std::string& p, con
   const json* area = find(g, "area");
   if (cells && area) r.fail(p, "give \"cells\" or \"area\", not both");
   if (cells) {
-    const std::string c = p + ".cells";
+    const Path c = p + ".cells";
     r.keys(*cells, c, {"pos", "columns", "step", "jitter"});
     out.use_cells = true;
     for (const char* k : {"pos", "columns", "step"})
@@ -453,7 +493,7 @@ RandomSpec read_random(const Reader& r, const json& g, const std::string& p, con
     out.origin = {t, t};
     out.extent = {s.width - 2 * t, s.height - 2 * t};
     if (area) {
-      const std::string a = p + ".area";
+      const Path a = p + ".area";
       r.keys(*area, a, {"pos", "size"});
       if (const json* v = find(*area, "pos")) out.origin = r.vec(*v, a + ".pos");
       if (const json* v = find(*area, "size")) out.extent = r.vec(*v, a + ".size");
@@ -462,7 +502,7 @@ RandomSpec read_random(const Reader& r, const json& g, const std::string& p, con
   return out;
 }
 
-BlockEntry read_entry(const Reader& r, const json& e, const std::string& p, const SceneSpec& s) {
+BlockEntry read_entry(const Reader& r, const json& e, const Path& p, const SceneSpec& s) {
   r.object(e, p);
   const bool grid = e.contains("grid"), random = e.contains("random");
   if (grid && random) r.fail(p, "an entry is a \"grid\" or a \"random\" generator, not both");
@@ -524,8 +564,9 @@ SceneSpec read_scene(std::string_view text, const std::string& source) {
   if (const json* v = find(doc, "world")) read_world(r, *v, s);
   if (const json* v = find(doc, "blocks")) {
     if (!v->is_array()) r.fail("blocks", "must be an array of blocks (got " + r.got(*v) + ")");
-    for (std::size_t i = 0; i < v->size(); ++i)
-      s.blocks.push_back(read_entry(r, (*v)[i], "blocks[" + std::to_string(i) + "]", s));
+    s.blocks.reserve(v->size());
+    const Path blocks = "blocks";
+    for (std::size_t i = 0; i < v->size(); ++i) s.blocks.push_back(read_entry(r, (*v)[i], Path(blocks, i), s));
   }
   return s;
 }
