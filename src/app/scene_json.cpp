@@ -6,8 +6,10 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 namespace physics {
@@ -76,14 +78,21 @@ class StrictDom : public nlohmann::json_sax<json> {
     return false;
   }
 
+ // Called with each element of the top-level "blocks" array as soon as it is
+  // complete (its index in the array); the element is dropped after, so a
+  // large scene is never held whole as a document. Unset: nothing streamed.
+  std::function<void(const json&, std::size_t)> on_block;
+
  private:
   // An open array or object; where it sits in its parent (a key or an
   // index) is kept to build the path of an error, and only then.
   struct Open {
     json* value;
-    std::string key;         // in an object
-    std::size_t index = 0;   // in an array
+    std::string key;          // in an object
+    std::size_t index = 0;    // in an array
     bool in_array = false;
+    std::size_t children = 0; // values placed in it so far (an array's next index)
+    bool blocks = false;      // the root's "blocks" array, streamed to on_block
   };
   std::vector<Open> stack_;
   json* slot_ = nullptr;  // the member key() made, waiting for its value
@@ -102,15 +111,20 @@ class StrictDom : public nlohmann::json_sax<json> {
       root = std::move(v);
       return &root;
     }
-    json& top = *stack_.back().value;
-    if (top.is_array()) {
-      top.push_back(std::move(v));
-      return &top.back();
+    Open& top = stack_.back();
+    ++top.children;
+    if (top.value->is_array()) {
+      top.value->push_back(std::move(v));
+      return &top.value->back();
     }
     *slot_ = std::move(v);
     return slot_;
   }
   bool add(json&& v) {
+    if (!stack_.empty() && stack_.back().blocks) {
+      on_block(v, stack_.back().children++);  // a block that is not an object: on_block says so
+      return true;
+    }
     place(std::move(v));
     return true;
   }
@@ -119,12 +133,13 @@ class StrictDom : public nlohmann::json_sax<json> {
       error = "nesting deeper than " + std::to_string(max_depth) + " levels";
       return false;
     }
-    Open o{nullptr, {}, 0, false};
+    Open o{nullptr, {}, 0, false, 0, false};
     if (!stack_.empty()) {
-      const json& top = *stack_.back().value;
-      o.in_array = top.is_array();
-      if (o.in_array) o.index = top.size();
+      const Open& top = stack_.back();
+      o.in_array = top.value->is_array();
+      if (o.in_array) o.index = top.children;
       else o.key = last_key_;
+      o.blocks = on_block && stack_.size() == 1 && !o.in_array && o.key == "blocks" && v.is_array();
     }
     o.value = place(std::move(v));
     stack_.push_back(std::move(o));
@@ -132,6 +147,11 @@ class StrictDom : public nlohmann::json_sax<json> {
   }
   bool close() {
     stack_.pop_back();
+    if (!stack_.empty() && stack_.back().blocks) {
+      json& blocks = *stack_.back().value;
+      on_block(blocks.back(), stack_.back().children - 1);
+      blocks.get_ref<json::array_t&>().pop_back();
+    }
     return true;
   }
 };
@@ -434,7 +454,7 @@ GridSpec read_grid(const Reader& r, const json& g, const Path& p) {
   return out;
 }
 
-RandomSpec read_random(const Reader& r, const json& g, const Path& p, const SceneSpec& s) {
+RandomSpec read_random(const Reader& r, const json& g, const Path& p) {
   r.keys(g, p,
          {"count", "side", "size", "mass", "velocity", "force", "impulse", "restitution", "color", "cells", "area"});
   RandomSpec out;
@@ -487,11 +507,10 @@ RandomSpec read_random(const Reader& r, const json& g, const Path& p, const Scen
       if (out.jitter.x < 0 || out.jitter.y < 0) r.fail(c + ".jitter", "must be >= 0");
     }
   } else {
-    // Default area: the inside of the walls, or the whole world.
+    // Default area: the inside of the walls, or the whole world, set by
+    // read_scene once the world is read (NaN here: a file's numbers are finite).
     out.use_cells = false;
-    const double t = s.walls ? wall_thickness : 0;
-    out.origin = {t, t};
-    out.extent = {s.width - 2 * t, s.height - 2 * t};
+    out.origin = out.extent = Vector{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
     if (area) {
       const Path a = p + ".area";
       r.keys(*area, a, {"pos", "size"});
@@ -502,7 +521,7 @@ RandomSpec read_random(const Reader& r, const json& g, const Path& p, const Scen
   return out;
 }
 
-BlockEntry read_entry(const Reader& r, const json& e, const Path& p, const SceneSpec& s) {
+BlockEntry read_entry(const Reader& r, const json& e, const Path& p) {
   r.object(e, p);
   const bool grid = e.contains("grid"), random = e.contains("random");
   if (grid && random) r.fail(p, "an entry is a \"grid\" or a \"random\" generator, not both");
@@ -512,7 +531,7 @@ BlockEntry read_entry(const Reader& r, const json& e, const Path& p, const Scene
   }
   if (random) {
     r.keys(e, p, {"random", "seed"});
-    RandomSpec out = read_random(r, e["random"], p + ".random", s);
+    RandomSpec out = read_random(r, e["random"], p + ".random");
     if (const json* v = find(e, "seed")) out.seed = r.seed(*v, p + ".seed");
     return out;
   }
@@ -542,7 +561,31 @@ TextPos line_column(std::string_view text, std::size_t position) {
 }
 
 SceneSpec read_scene(std::string_view text, const std::string& source) {
+  const Reader r(source);
+  SceneSpec s;
+  // The blocks are read as the parser completes each one. Their first error
+  // is kept and raised after the checks that come before the blocks (syntax
+  // anywhere in the file, top-level keys, world), as if the file were read
+  // whole first.
+  std::optional<SceneError> block_error;
+  // Room for the blocks up front: an entry is large (a variant of the three
+  // kinds), and growing the vector moves each one again. Every block and
+  // grid has a "pos" key, so their count bounds the entries of a plain file;
+  // capped, so a file of nothing but "pos" reserves little.
+  std::size_t entries = 0;
+  for (auto at = text.find("\"pos\""); at != std::string_view::npos && entries < (1u << 17); at = text.find("\"pos\"", at + 5))
+    ++entries;
+  s.blocks.reserve(entries);
   StrictDom dom;
+  const Path blocks = "blocks";
+  dom.on_block = [&](const json& e, std::size_t i) {
+    if (block_error) return;
+    try {
+      s.blocks.push_back(read_entry(r, e, Path(blocks, i)));
+    } catch (const SceneError& err) {
+      block_error = err;
+    }
+  };
   // Comments (// and /* */) are allowed: scene files are written by hand.
   const bool ok = json::sax_parse(text, &dom, json::input_format_t::json, true, true);
   if (!ok || !dom.error.empty()) {
@@ -554,20 +597,22 @@ SceneSpec read_scene(std::string_view text, const std::string& source) {
     throw SceneError(source + ": " + (dom.error.empty() ? std::string("invalid JSON") : dom.error));
   }
   const json& doc = dom.root;
-  const Reader r(source);
   if (!doc.is_object()) r.fail("", "a scene file must hold one JSON object {...} (got " + r.got(doc) + ")");
   r.keys(doc, "", {"name", "description", "world", "blocks"});
-  SceneSpec s;
   s.name = stem(source);
   if (const json* v = find(doc, "name")) s.name = r.text(*v, "name");
   if (const json* v = find(doc, "description")) s.description = r.text(*v, "description");
   if (const json* v = find(doc, "world")) read_world(r, *v, s);
-  if (const json* v = find(doc, "blocks")) {
-    if (!v->is_array()) r.fail("blocks", "must be an array of blocks (got " + r.got(*v) + ")");
-    s.blocks.reserve(v->size());
-    const Path blocks = "blocks";
-    for (std::size_t i = 0; i < v->size(); ++i) s.blocks.push_back(read_entry(r, (*v)[i], Path(blocks, i), s));
-  }
+  if (const json* v = find(doc, "blocks"); v && !v->is_array())
+    r.fail("blocks", "must be an array of blocks (got " + r.got(*v) + ")");
+  if (block_error) throw *block_error;
+  // Random generators without an area take the inside of the walls, or the whole world.
+  const double t = s.walls ? wall_thickness : 0;
+  for (BlockEntry& e : s.blocks)
+    if (auto* g = std::get_if<RandomSpec>(&e); g && !g->use_cells) {
+      if (std::isnan(g->origin.x)) g->origin = {t, t};
+      if (std::isnan(g->extent.x)) g->extent = {s.width - 2 * t, s.height - 2 * t};
+    }
   return s;
 }
 
@@ -588,10 +633,17 @@ SceneSpec read_scene_file(const std::string& path) {
   const auto size = std::filesystem::file_size(path, ec);
   if (!ec && size > max_file_size)
     throw SceneError(path + ": cannot read the scene file: larger than " + std::to_string(max_file_size >> 20) + " MB");
-  std::ostringstream text;
-  text << in.rdbuf();
+  // Read at once into a string of the file's size (a stream, then a copy,
+  // doubled the work on a large scene); grown by the loop if it was not known.
+  std::string text(ec ? 0 : static_cast<std::size_t>(size), '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  for (char buf[65536]; in && !in.eof();) {
+    in.read(buf, sizeof buf);
+    text.append(buf, static_cast<std::size_t>(in.gcount()));
+  }
   if (in.bad()) throw SceneError(path + ": cannot read the scene file: read error");
-  return read_scene(text.str(), path);
+  return read_scene(text, path);
 }
 
 SceneSpec load_scene_file(const std::string& path) {
