@@ -260,7 +260,8 @@ void validate(const SceneSpec& s, const std::string& source) {
     k.fail("world.walls", "the world must be larger than " + std::to_string(2 * wall_thickness) + "x" +
                               std::to_string(2 * wall_thickness) + " px to hold its walls");
   const Params& p = s.params;
-  if (!std::isfinite(p.dt) || p.dt <= 0.0) k.fail("world.dt", "must be a finite number > 0 (got " + num(p.dt) + ")");
+  if (!std::isfinite(p.dt)) k.fail("world.dt", "must be a finite number (got " + num(p.dt) + ")");
+  if (p.dt <= 0.0) k.fail("world.dt", "must be > 0 (got " + num(p.dt) + ")");
   if (p.substeps < 1 || p.substeps > max_substeps)
     k.fail("world.substeps",
            "must be in [1, " + std::to_string(max_substeps) + "] (got " + std::to_string(p.substeps) + ")");

@@ -312,15 +312,11 @@ class Reader {
     }
     if (v.is_number() && !std::isfinite(v.get<double>()))
       fail(path, "must be a finite number > 0, or the string \"inf\" for a fixed body (got " + got(v) + ")");
-    const double m = number(v, path);
-    if (m <= 0.0) fail(path, "must be > 0 or \"inf\" (got " + got(v) + ")");
-    return m;
+    return number(v, path);  // > 0: validate() (scene.hpp)
   }
 
   double restitution(const json& v, const Path& path) const {
-    const double e = number(v, path);
-    if (e < 0.0 || e > 1.0) fail(path, "must be in [0, 1] (got " + got(v) + ")");
-    return e;
+    return number(v, path);  // in [0, 1]: validate() (scene.hpp)
   }
 
   Color color(const json& v, const Path& path) const {
@@ -380,8 +376,7 @@ void read_world(const Reader& r, const json& w, SceneSpec& s) {
   if (const json* v = find(w, "width")) s.width = static_cast<int>(r.integer(*v, "world.width", 1, max_world_size));
   if (const json* v = find(w, "height")) s.height = static_cast<int>(r.integer(*v, "world.height", 1, max_world_size));
   if (const json* v = find(w, "dt")) {
-    s.params.dt = r.number(*v, "world.dt");
-    if (s.params.dt <= 0) r.fail("world.dt", "must be > 0 (got " + r.got(*v) + ")");
+    s.params.dt = r.number(*v, "world.dt");  // > 0, <= max_dt: validate()
   }
   if (const json* v = find(w, "substeps"))
     s.params.substeps = static_cast<int>(r.integer(*v, "world.substeps", 1, max_substeps));
@@ -476,7 +471,6 @@ RandomSpec read_random(const Reader& r, const json& g, const Path& p) {
   if (!mass) r.fail(p, "missing key \"mass\" (a number > 0, a range [min, max], or \"inf\")");
   if (mass->is_array()) {
     out.mass = r.real_spec(*mass, p + ".mass");
-    if (out.mass.lo <= 0) r.fail(p + ".mass", "range must be > 0 (got min " + short_text(out.mass.lo) + ")");
   } else {
     out.mass = RealSpec::fixed(r.mass(*mass, p + ".mass"));
   }
@@ -484,9 +478,7 @@ RandomSpec read_random(const Reader& r, const json& g, const Path& p) {
   if (const json* v = find(g, "force")) out.force = r.vec_spec(*v, p + ".force");
   if (const json* v = find(g, "impulse")) out.impulse = r.vec_spec(*v, p + ".impulse");
   if (const json* v = find(g, "restitution")) {
-    out.restitution = r.real_spec(*v, p + ".restitution");
-    for (const double e : {out.restitution->lo, out.restitution->hi})
-      if (e < 0 || e > 1) r.fail(p + ".restitution", "must be in [0, 1] (got " + short_text(e) + ")");
+    out.restitution = r.real_spec(*v, p + ".restitution");  // in [0, 1]: validate()
   }
   if (const json* v = find(g, "color"); v && !(v->is_string() && v->get<std::string>() == "random"))
     out.color = r.color(*v, p + ".color");
@@ -503,8 +495,7 @@ RandomSpec read_random(const Reader& r, const json& g, const Path& p) {
     out.columns = static_cast<int>(r.integer(cells->at("columns"), c + ".columns", 1, max_bodies));
     out.step = r.vec(cells->at("step"), c + ".step");
     if (const json* v = find(*cells, "jitter")) {
-      out.jitter = r.vec(*v, c + ".jitter");
-      if (out.jitter.x < 0 || out.jitter.y < 0) r.fail(c + ".jitter", "must be >= 0");
+      out.jitter = r.vec(*v, c + ".jitter");  // >= 0: validate()
     }
   } else {
     // Default area: the inside of the walls, or the whole world, set by

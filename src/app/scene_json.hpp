@@ -2,13 +2,15 @@
 //
 // The format is documented in docs/scenes.md. The reader is strict, since a
 // typo must not pass silently: unknown and duplicate keys are errors, every
-// value is type- and range-checked, and each error is one line naming the
+// value is type-checked here (and an integer must fit its field), its meaning
+// (mass > 0, restitution in [0, 1], placement, ...) by the scene validator,
+// validate()/expand() in scene.hpp; each error is one line naming the
 // file and either the line:column (syntax) or the key path (meaning):
 //   scenes/x.json:4:17: invalid JSON: syntax error while parsing object ...
 //   scenes/x.json: blocks[3].mass: must be > 0 or "inf" (got -1)
 // Part of the physics library (no SDL), so it can be fuzzed on its own: any
 // input either gives a valid SceneSpec or throws SceneError, within bounded
-// time and memory (see the limits in scene.hpp).
+// time and memory (see the limits in engine/limits.hpp).
 #pragma once
 
 #include <string>
