@@ -13,11 +13,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   using namespace physics;
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   try {
-    const SceneSpec spec = parse_scene(text, "fuzz");
-    // A scene that parsed must also build and step: small ones only, to keep
+    // Read, then validate once (expand), as the command line loads a file.
+    const SceneSpec spec = read_scene(text, "fuzz");
+    const std::vector<Body> bodies = expand(spec, "fuzz");
+    // A scene that passed must also build and step: small ones only, to keep
     // each input fast.
-    if (body_count(spec) <= 200) {
-      World w = make_world(spec, false, "fuzz");
+    if (bodies.size() <= 200) {
+      World w = make_world(spec, bodies, false);
       for (int i = 0; i < 3; ++i) Game::step(w);
     }
   } catch (const SceneError&) {

@@ -291,6 +291,22 @@ BOOST_AUTO_TEST_CASE(unknown_flags_and_missing_values) {
   expect_bad({"--dt", "1", "--dt", "2"}, "--dt");
 }
 
+// A load validates the scene once: after the flags are applied, and the
+// world is built from the bodies of that validation (no second check in
+// the reader, none in make_world).
+BOOST_AUTO_TEST_CASE(a_scene_file_is_validated_once) {
+  TempDir dir;
+  const auto file = dir.file("ok.json", R"({"blocks": [{"pos": [100, 100], "size": [4, 4], "mass": 1},
+                                                     {"grid": {"pos": [200, 200], "size": [4, 4], "mass": 1,
+                                                               "count": [3, 2]}}]})");
+  for (const std::string& scene : {file, std::string("many")}) {
+    const std::int64_t before = validation_count();
+    const Ran r = cli({"--scene", scene, "--headless", "--frames", "0", "--restitution", "0.5"});
+    BOOST_TEST(r.code == 0, r.err);
+    BOOST_TEST(validation_count() - before == 1, scene);
+  }
+}
+
 BOOST_AUTO_TEST_CASE(unknown_scene) {
   expect_bad({"--scene", "nope"}, "unknown scene 'nope' (built-in scenes: walls, drift, impulse, bounce, many,");
 }

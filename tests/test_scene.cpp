@@ -407,6 +407,53 @@ BOOST_AUTO_TEST_CASE(too_many_bodies_is_an_error_before_anything_is_allocated) {
 
 BOOST_AUTO_TEST_SUITE_END()
 
+// What Block::make used to throw on is the validator's now: each bad block
+// is a SceneError naming the key, before any body is made.
+BOOST_AUTO_TEST_SUITE(scene_validation)
+
+BOOST_AUTO_TEST_CASE(bad_blocks_are_rejected_by_the_validator) {
+  const auto with = [](auto change) {
+    SceneSpec s;
+    BlockSpec b;
+    b.pos = {100, 100};
+    b.width = b.height = 10;
+    b.mass = 1.0;
+    change(b);
+    s.blocks.push_back(b);
+    return s;
+  };
+  const auto rejects = [](const SceneSpec& s, std::initializer_list<std::string> parts) {
+    expect_error([&] { make_world(s, false, "v"); }, parts);
+    expect_error([&] { expand(s, "v"); }, parts);
+  };
+  rejects(with([](BlockSpec& b) { b.width = 0; }), {"v: blocks[0].size: must be > 0 (got 0)"});
+  rejects(with([](BlockSpec& b) { b.height = -1; }), {"v: blocks[0].size: must be > 0 (got -1)"});
+  rejects(with([](BlockSpec& b) { b.width = max_block_size + 1; }), {"blocks[0].size: must be <= 1048576"});
+  rejects(with([](BlockSpec& b) { b.mass = 0.0; }), {"v: blocks[0].mass: must be > 0 or \"inf\" (got 0)"});
+  rejects(with([](BlockSpec& b) { b.mass = -2.0; }), {"blocks[0].mass: must be > 0 or \"inf\" (got -2)"});
+  rejects(with([](BlockSpec& b) { b.mass = std::nan(""); }), {"blocks[0].mass: must be > 0"});
+  rejects(with([](BlockSpec& b) { b.pos.x = std::nan(""); }), {"blocks[0].pos: must be finite"});
+  rejects(with([](BlockSpec& b) { b.restitution = 1.5; }), {"blocks[0].restitution: must be in [0, 1] (got 1.5)"});
+  const World w = make_world(with([](BlockSpec& b) { b.mass = infinity; }), false);
+  BOOST_TEST(w.components.mass.back() == infinity);
+}
+
+// A load validates once: make_world expands (validates) the scene once, and
+// building from the bodies of an expand does not validate again.
+BOOST_AUTO_TEST_CASE(a_scene_is_validated_once_per_build) {
+  const SceneSpec s = builtin("many");
+  std::int64_t before = validation_count();
+  const World a = make_world(s, false);
+  BOOST_TEST(validation_count() - before == 1);
+  before = validation_count();
+  const std::vector<Body> bodies = expand(s, "many");
+  const World b = make_world(s, bodies, false);
+  BOOST_TEST(validation_count() - before == 1);
+  BOOST_TEST(a.components.position == b.components.position);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
 BOOST_AUTO_TEST_SUITE(scene_offscreen)
 
 BOOST_AUTO_TEST_CASE(the_offscreen_picture_paints_the_drawn_blocks) {

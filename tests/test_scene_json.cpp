@@ -324,4 +324,27 @@ BOOST_AUTO_TEST_CASE(deep_nesting_is_refused_without_recursion) {
   BOOST_TEST(has(error_of(deep), "nesting deeper than 64 levels"));
 }
 
+// One place validates: the reader converts (types, keys, fits), validate()
+// judges. A file's out-of-range values read fine and are refused by the
+// validation parse_scene (and the command line) runs once, with the same
+// message as a built-in scene would get.
+BOOST_AUTO_TEST_CASE(the_reader_converts_the_validator_judges) {
+  const std::string text = R"({"world": {"dt": -1, "restitution": 2},
+    "blocks": [{"pos": [100, 100], "size": [4, 4], "mass": -1, "restitution": 3}]})";
+  const SceneSpec s = read_scene(text, "r.json");
+  BOOST_TEST(s.params.dt == -1.0);
+  BOOST_TEST(std::get<BlockSpec>(s.blocks[0]).mass == -1.0);
+  const std::int64_t before = validation_count();
+  BOOST_TEST(error_of(text) == "bad.json: world.dt: must be > 0 (got -1)");
+  BOOST_TEST(validation_count() - before == 1);
+  // The blocks are read as the parser completes them, but a block's error
+  // still comes after the world's, as if the file were read whole first.
+  BOOST_TEST(has(error_of(R"({"blocks": [{"pos": [1, 1], "size": [4, 4], "mass": 1, "x": 1}],
+                              "world": {"walls": 3}})"), "world.walls: must be true or false"));
+  // Default random area: the world's, even when "world" comes after "blocks".
+  const SceneSpec late = parse_scene(R"({"blocks": [{"random": {"count": 3, "side": 4, "mass": 1}}],
+                                         "world": {"width": 2000, "walls": false}})", "late.json");
+  BOOST_TEST(std::get<RandomSpec>(late.blocks[0]).extent.x == 2000.0);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

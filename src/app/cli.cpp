@@ -100,10 +100,11 @@ std::string scene_source(const std::string& name_or_file) {
   return find_builtin(name_or_file) ? "scene " + name_or_file : name_or_file;
 }
 
-int headless_run(const SceneSpec& spec, const Options& o, Recorder& rec, const std::string& why, std::ostream& out,
-                 std::ostream& err) {
+// `bodies`: the scene's, from the one expand() (validation) of this load.
+int headless_run(const SceneSpec& spec, const std::vector<Body>& bodies, const Options& o, Recorder& rec,
+                 const std::string& why, std::ostream& out, std::ostream& err) {
   const bool picture = !o.screenshot.empty();
-  World w = make_world(spec, picture && spec.systems.draw, scene_source(o.scene));
+  World w = make_world(spec, bodies, picture && spec.systems.draw);
   rec.start(w);
   const std::int64_t frames = o.frames.value_or(picture ? screenshot_frames : headless_frames);
   const auto summary = Headless::run(w, frames, [&](const World& world) { rec.after_step(world); });
@@ -218,7 +219,7 @@ SceneSpec resolve_scene(const std::string& name) {
     for (const SceneSpec& s : builtin_scenes()) list += (list.empty() ? "" : ", ") + s.name;
     throw SceneError("unknown scene '" + name + "' (built-in scenes: " + list + "; or give a .json file)");
   }
-  return load_scene_file(name);
+  return read_scene_file(name);
 }
 
 Recorder::Recorder(const std::string& dump, const std::string& trace) : dump_path_(dump), trace_path_(trace) {
@@ -277,10 +278,13 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err,
     return 0;
   }
   SceneSpec spec;
+  std::vector<Body> bodies;
   try {
+    // Read (a file: JSON, keys, types), apply the flags, then validate once:
+    // the scene that runs is the one checked, and its bodies build the world.
     spec = resolve_scene(o.scene);
     apply(spec, o.overrides);
-    validate(spec, scene_source(o.scene));
+    bodies = expand(spec, scene_source(o.scene));
   } catch (const SceneError& e) {
     err << "game: " << e.what() << "\n";
     return 2;
@@ -327,7 +331,7 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err,
         }
       }
     }
-    return headless_run(spec, o, rec, why, out, err);
+    return headless_run(spec, bodies, o, rec, why, out, err);
   } catch (const UsageError& e) {
     err << "game: " << e.what() << "\n";
     return 2;

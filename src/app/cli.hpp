@@ -44,7 +44,9 @@ Options parse(std::span<const std::string> args);  // throws UsageError
 std::string usage();
 
 // A built-in name, else a file (a name that is neither is an error listing
-// the built-in scenes). Throws SceneError.
+// the built-in scenes). A file is read (read_scene_file), not yet validated:
+// the caller applies its overrides, then expands (validates) once. Throws
+// SceneError.
 SceneSpec resolve_scene(const std::string& name_or_file);
 
 // --dump and --trace files, opened before the run so that a bad path is bad

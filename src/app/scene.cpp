@@ -2,6 +2,7 @@
 
 #include "game.hpp"
 
+#include <atomic>
 #include <cmath>
 #include <sstream>
 
@@ -20,104 +21,112 @@ std::string num(double v) {
 
 std::string entry_path(std::size_t i) { return "blocks[" + std::to_string(i) + "]"; }
 
+// A key path, built only when a check fails: `base` + `key`
+// ("blocks[3]" + ".mass"). Checks run for every body of a large scene, so
+// the strings of messages are never built on the way to a pass.
+struct At {
+  const std::string& base;
+  const char* key = "";
+  std::string str() const { return base + key; }
+};
+
 // Raises the error for one scene; every message starts with "source: path: ".
 struct Checker {
   const std::string& source;
   [[noreturn]] void fail(const std::string& path, const std::string& problem) const {
     throw SceneError(source + ": " + path + ": " + problem);
   }
-  void finite(double v, const std::string& path) const {
-    if (!std::isfinite(v)) fail(path, "must be a finite number (got " + num(v) + ")");
+  [[noreturn]] void fail(At at, const std::string& problem) const { fail(at.str(), problem); }
+  void finite(double v, At at) const {
+    if (!std::isfinite(v)) fail(at, "must be a finite number (got " + num(v) + ")");
   }
-  void finite(Vector v, const std::string& path) const {
-    if (!std::isfinite(v.x) || !std::isfinite(v.y))
-      fail(path, "must be finite (got [" + num(v.x) + ", " + num(v.y) + "])");
+  void finite(Vector v, At at) const {
+    if (!std::isfinite(v.x) || !std::isfinite(v.y)) fail(at, "must be finite (got [" + num(v.x) + ", " + num(v.y) + "])");
   }
   // Velocities, forces, impulses and gravity: finite is not enough, since a
   // finite 1e308 px/ms overflows to infinity on the first Move. 1e6 px/ms
   // (a world crossed in one microsecond) is far beyond any sensible scene.
-  void motion(Vector v, const std::string& path) const {
-    finite(v, path);
+  void motion(Vector v, At at) const {
+    finite(v, at);
     if (std::abs(v.x) > max_motion || std::abs(v.y) > max_motion)
-      fail(path, "must be within ±" + num(max_motion) + " (got [" + num(v.x) + ", " + num(v.y) + "])");
+      fail(at, "must be within ±" + num(max_motion) + " (got [" + num(v.x) + ", " + num(v.y) + "])");
   }
-  void motion(const VecSpec& v, const std::string& path) const {
-    range(v, path);
-    motion(Vector{v.x.lo, v.y.lo}, path);
-    motion(Vector{v.x.hi, v.y.hi}, path);
+  void motion(const VecSpec& v, At at) const {
+    range(v, at);
+    motion(Vector{v.x.lo, v.y.lo}, at);
+    motion(Vector{v.x.hi, v.y.hi}, at);
   }
-  void size(int v, const std::string& path) const {
-    if (v <= 0) fail(path, "must be > 0 (got " + std::to_string(v) + ")");
-    if (v > max_block_size) fail(path, "must be <= " + std::to_string(max_block_size) + " (got " + std::to_string(v) + ")");
+  void size(int v, At at) const {
+    if (v <= 0) fail(at, "must be > 0 (got " + std::to_string(v) + ")");
+    if (v > max_block_size) fail(at, "must be <= " + std::to_string(max_block_size) + " (got " + std::to_string(v) + ")");
   }
-  void mass(double m, const std::string& path) const {
-    if (std::isnan(m) || m <= 0.0 || m == -infinity)
-      fail(path, "must be > 0 or \"inf\" (got " + num(m) + ")");
+  void mass(double m, At at) const {
+    if (std::isnan(m) || m <= 0.0 || m == -infinity) fail(at, "must be > 0 or \"inf\" (got " + num(m) + ")");
   }
-  void restitution(double e, const std::string& path) const {
-    if (!(e >= 0.0 && e <= 1.0)) fail(path, "must be in [0, 1] (got " + num(e) + ")");
+  void restitution(double e, At at) const {
+    if (!(e >= 0.0 && e <= 1.0)) fail(at, "must be in [0, 1] (got " + num(e) + ")");
   }
-  void range(const RealSpec& r, const std::string& path) const {
-    finite(r.lo, path);
-    finite(r.hi, path);
-    if (r.drawn && r.lo > r.hi) fail(path, "range [" + num(r.lo) + ", " + num(r.hi) + "] is empty (min > max)");
+  void range(const RealSpec& r, At at) const {
+    finite(r.lo, at);
+    finite(r.hi, at);
+    if (r.drawn && r.lo > r.hi) fail(at, "range [" + num(r.lo) + ", " + num(r.hi) + "] is empty (min > max)");
   }
-  void range(const VecSpec& v, const std::string& path) const {
-    range(v.x, path);
-    range(v.y, path);
+  void range(const VecSpec& v, At at) const {
+    range(v.x, at);
+    range(v.y, at);
   }
-  void size_range(const IntSpec& r, const std::string& path) const {
-    size(r.lo, path);
-    size(r.hi, path);
+  void size_range(const IntSpec& r, At at) const {
+    size(r.lo, at);
+    size(r.hi, at);
     if (r.drawn && r.lo > r.hi)
-      fail(path, "range [" + std::to_string(r.lo) + ", " + std::to_string(r.hi) + "] is empty (min > max)");
+      fail(at, "range [" + std::to_string(r.lo) + ", " + std::to_string(r.hi) + "] is empty (min > max)");
   }
 };
 
 void check_block(const Checker& k, const BlockSpec& b, const std::string& p) {
-  k.finite(b.pos, p + ".pos");
-  k.size(b.width, p + ".size");
-  k.size(b.height, p + ".size");
-  k.mass(b.mass, p + ".mass");
-  k.motion(b.velocity, p + ".velocity");
-  k.motion(b.force, p + ".force");
-  k.motion(b.impulse, p + ".impulse");
-  if (b.restitution) k.restitution(*b.restitution, p + ".restitution");
+  k.finite(b.pos, At{p, ".pos"});
+  k.size(b.width, At{p, ".size"});
+  k.size(b.height, At{p, ".size"});
+  k.mass(b.mass, At{p, ".mass"});
+  k.motion(b.velocity, At{p, ".velocity"});
+  k.motion(b.force, At{p, ".force"});
+  k.motion(b.impulse, At{p, ".impulse"});
+  if (b.restitution) k.restitution(*b.restitution, At{p, ".restitution"});
 }
 
 void check_random(const Checker& k, const RandomSpec& r, const std::string& p) {
-  if (r.count < 1) k.fail(p + ".count", "must be >= 1 (got " + std::to_string(r.count) + ")");
+  if (r.count < 1) k.fail(At{p, ".count"}, "must be >= 1 (got " + std::to_string(r.count) + ")");
   if (r.side) {
-    k.size_range(*r.side, p + ".side");
+    k.size_range(*r.side, At{p, ".side"});
   } else {
-    k.size_range(r.width, p + ".size");
-    k.size_range(r.height, p + ".size");
+    k.size_range(r.width, At{p, ".size"});
+    k.size_range(r.height, At{p, ".size"});
   }
-  k.range(r.mass, p + ".mass");
+  k.range(r.mass, At{p, ".mass"});
   if (r.mass.drawn) {
-    if (!(r.mass.lo > 0.0)) k.fail(p + ".mass", "range must be > 0 (got min " + num(r.mass.lo) + ")");
+    if (!(r.mass.lo > 0.0)) k.fail(At{p, ".mass"}, "range must be > 0 (got min " + num(r.mass.lo) + ")");
   } else if (r.mass.lo != infinity) {
-    k.mass(r.mass.lo, p + ".mass");
+    k.mass(r.mass.lo, At{p, ".mass"});
   }
-  k.motion(r.velocity, p + ".velocity");
-  k.motion(r.force, p + ".force");
-  k.motion(r.impulse, p + ".impulse");
+  k.motion(r.velocity, At{p, ".velocity"});
+  k.motion(r.force, At{p, ".force"});
+  k.motion(r.impulse, At{p, ".impulse"});
   if (r.restitution) {
-    k.range(*r.restitution, p + ".restitution");
-    k.restitution(r.restitution->lo, p + ".restitution");
-    k.restitution(r.restitution->hi, p + ".restitution");
+    k.range(*r.restitution, At{p, ".restitution"});
+    k.restitution(r.restitution->lo, At{p, ".restitution"});
+    k.restitution(r.restitution->hi, At{p, ".restitution"});
   }
-  k.finite(r.origin, p + (r.use_cells ? ".cells.pos" : ".area.pos"));
+  k.finite(r.origin, At{p, (r.use_cells ? ".cells.pos" : ".area.pos")});
   const int max_w = r.side ? r.side->hi : r.width.hi, max_h = r.side ? r.side->hi : r.height.hi;
   if (r.use_cells) {
-    if (r.columns < 1) k.fail(p + ".cells.columns", "must be >= 1 (got " + std::to_string(r.columns) + ")");
-    k.finite(r.step, p + ".cells.step");
-    k.finite(r.jitter, p + ".cells.jitter");
-    if (r.jitter.x < 0 || r.jitter.y < 0) k.fail(p + ".cells.jitter", "must be >= 0");
+    if (r.columns < 1) k.fail(At{p, ".cells.columns"}, "must be >= 1 (got " + std::to_string(r.columns) + ")");
+    k.finite(r.step, At{p, ".cells.step"});
+    k.finite(r.jitter, At{p, ".cells.jitter"});
+    if (r.jitter.x < 0 || r.jitter.y < 0) k.fail(At{p, ".cells.jitter"}, "must be >= 0");
   } else {
-    k.finite(r.extent, p + ".area.size");
+    k.finite(r.extent, At{p, ".area.size"});
     if (r.extent.x < max_w || r.extent.y < max_h)
-      k.fail(p + ".area.size", "[" + num(r.extent.x) + ", " + num(r.extent.y) + "] is smaller than the largest body (" +
+      k.fail(At{p, ".area.size"}, "[" + num(r.extent.x) + ", " + num(r.extent.y) + "] is smaller than the largest body (" +
                                     std::to_string(max_w) + "x" + std::to_string(max_h) + ")");
   }
 }
@@ -132,27 +141,27 @@ std::string body_path(const SceneSpec& s, const Body& b) {
 }
 
 // Every block inside the world; with walls, inside the space they enclose
-// (touching a wall is fine: touching boxes do not collide).
+// (touching a wall is fine: touching boxes do not collide). A position far
+// outside can come from a finite but huge step or origin, or be NaN (an
+// overflow): both fail here. The message is built only for the failing body.
 void check_placement(const Checker& k, const SceneSpec& s, const std::vector<Body>& bodies) {
   const double t = s.walls ? wall_thickness : 0.0;
   const double x0 = t, y0 = t, x1 = s.width - t, y1 = s.height - t;
+  for (const Body& b : bodies)
+    if (!std::isfinite(b.pos.x) || !std::isfinite(b.pos.y)) k.finite(b.pos, At{body_path(s, b) + " position"});
   for (const Body& b : bodies) {
     const double l = b.pos.x, top = b.pos.y, r = b.pos.x + b.width, bot = b.pos.y + b.height;
-    std::string where;
-    if (s.walls) {
-      if (l < x0) where = "left wall";
-      else if (r > x1) where = "right wall";
-      else if (top < y0) where = "top wall";
-      else if (bot > y1) where = "bottom wall";
-    }
+    const bool outside = l < 0 || top < 0 || r > s.width || bot > s.height;
+    const bool on_wall = s.walls && (l < x0 || r > x1 || top < y0 || bot > y1);
+    if (!outside && !on_wall) continue;
     const std::string at = "block at (" + num(b.pos.x) + ", " + num(b.pos.y) + ") of size " + std::to_string(b.width) +
                            "x" + std::to_string(b.height);
-    if (l < 0 || top < 0 || r > s.width || bot > s.height)
+    if (outside)
       k.fail(body_path(s, b), at + " lies outside the " + std::to_string(s.width) + "x" + std::to_string(s.height) +
                                   " world");
-    if (!where.empty())
-      k.fail(body_path(s, b), at + " overlaps the " + where + " (the walls are " + std::to_string(wall_thickness) +
-                                  " px thick)");
+    const char* where = l < x0 ? "left wall" : r > x1 ? "right wall" : top < y0 ? "top wall" : "bottom wall";
+    k.fail(body_path(s, b), at + " overlaps the " + where + " (the walls are " + std::to_string(wall_thickness) +
+                                " px thick)");
   }
 }
 
@@ -233,7 +242,14 @@ std::int64_t body_count(const SceneSpec& s) {
   return n;
 }
 
+namespace {
+std::atomic<std::int64_t> validations{0};
+}  // namespace
+
+std::int64_t validation_count() { return validations.load(std::memory_order_relaxed); }
+
 void validate(const SceneSpec& s, const std::string& source) {
+  validations.fetch_add(1, std::memory_order_relaxed);
   const Checker k{source};
   if (s.width < 1 || s.width > max_world_size)
     k.fail("world.width", "must be in [1, " + std::to_string(max_world_size) + "] (got " + std::to_string(s.width) + ")");
@@ -244,16 +260,17 @@ void validate(const SceneSpec& s, const std::string& source) {
     k.fail("world.walls", "the world must be larger than " + std::to_string(2 * wall_thickness) + "x" +
                               std::to_string(2 * wall_thickness) + " px to hold its walls");
   const Params& p = s.params;
-  if (!std::isfinite(p.dt) || p.dt <= 0.0) k.fail("world.dt", "must be a finite number > 0 (got " + num(p.dt) + ")");
+  if (!std::isfinite(p.dt)) k.fail("world.dt", "must be a finite number (got " + num(p.dt) + ")");
+  if (p.dt <= 0.0) k.fail("world.dt", "must be > 0 (got " + num(p.dt) + ")");
   if (p.substeps < 1 || p.substeps > max_substeps)
     k.fail("world.substeps",
            "must be in [1, " + std::to_string(max_substeps) + "] (got " + std::to_string(p.substeps) + ")");
   if (p.iterations < 1 || p.iterations > max_iterations)
     k.fail("world.iterations",
            "must be in [1, " + std::to_string(max_iterations) + "] (got " + std::to_string(p.iterations) + ")");
-  k.motion(p.gravity, "world.gravity");
+  k.motion(p.gravity, At{std::string("world.gravity")});
   if (p.dt > max_dt) k.fail("world.dt", "must be <= " + num(max_dt) + " ms (got " + num(p.dt) + ")");
-  k.restitution(s.restitution, "world.restitution");
+  k.restitution(s.restitution, At{std::string("world.restitution")});
   if (body_count(s) > max_bodies)
     k.fail("blocks", "too many bodies (more than " + std::to_string(max_bodies) + ")");
   for (std::size_t i = 0; i < s.blocks.size(); ++i) {
@@ -265,7 +282,7 @@ void validate(const SceneSpec& s, const std::string& source) {
       if (g->columns < 1 || g->rows < 1)
         k.fail(path + ".grid.count", "must be >= 1 each (got [" + std::to_string(g->columns) + ", " +
                                          std::to_string(g->rows) + "])");
-      k.finite(g->step, path + ".grid.step");
+      k.finite(g->step, At{path, ".grid.step"});
     }
     if (const auto* r = std::get_if<RandomSpec>(&e)) check_random(k, *r, path + ".random");
   }
@@ -289,14 +306,11 @@ std::vector<Body> expand(const SceneSpec& s, const std::string& source) {
     }
     if (const auto* r = std::get_if<RandomSpec>(&e)) expand_random(*r, s.restitution, i, out);
   }
-  // A body far outside can come from a finite but huge step or origin.
-  for (const Body& b : out) Checker{source}.finite(b.pos, body_path(s, b) + " position");
   check_placement(Checker{source}, s, out);
   return out;
 }
 
-void populate(World& w, const SceneSpec& s, const std::string& source) {
-  const std::vector<Body> bodies = expand(s, source);
+void populate(World& w, const SceneSpec& s, const std::vector<Body>& bodies) {
   w.components.reserve(w.components.size() + bodies.size() + (s.walls ? 4 : 0));
   if (s.walls) Game::init_walls(w, s.width, s.height, s.restitution);
   for (const Body& b : bodies) {
@@ -308,13 +322,18 @@ void populate(World& w, const SceneSpec& s, const std::string& source) {
   }
 }
 
-World make_world(const SceneSpec& s, bool with_draw, const std::string& source) {
-  validate(s, source);
+void populate(World& w, const SceneSpec& s, const std::string& source) { populate(w, s, expand(s, source)); }
+
+World make_world(const SceneSpec& s, const std::vector<Body>& bodies, bool with_draw) {
   SystemSet set = s.systems;
   set.draw = set.draw && with_draw;
   World w(set, s.params);
-  populate(w, s, source);
+  populate(w, s, bodies);
   return w;
+}
+
+World make_world(const SceneSpec& s, bool with_draw, const std::string& source) {
+  return make_world(s, expand(s, source), with_draw);
 }
 
 }  // namespace physics

@@ -13,6 +13,7 @@
 #include <variant>
 #include <vector>
 
+#include "engine/limits.hpp"
 #include "game.hpp"
 #include "utils/random.hpp"
 
@@ -24,14 +25,8 @@ inline constexpr int default_height = Game::height;
 inline constexpr int wall_thickness = Game::wall_thickness;
 inline constexpr Color default_block_color{128, 128, 128, 255};
 
-// Limits that keep any input from exhausting memory or hanging the loader.
-inline constexpr int max_world_size = 1 << 20;  // px, per side
-inline constexpr int max_block_size = 1 << 20;  // px, per side
-inline constexpr std::int64_t max_bodies = 1'000'000;
-inline constexpr int max_substeps = 1000;
-inline constexpr int max_iterations = 1000;
-inline constexpr double max_motion = 1e6;  // |velocity|, |force|, |impulse|, |gravity| per axis
-inline constexpr double max_dt = 1e6;      // ms
+// The limits (max_world_size, max_block_size, max_bodies, ...) are in
+// engine/limits.hpp: one set for the validator and the engine.
 
 // Every error in a scene (file or built-in): the message names the source,
 // the key path or line, and the problem, e.g.
@@ -158,22 +153,35 @@ struct Body {
 // Number of bodies the entries make (walls excluded), without expanding them.
 std::int64_t body_count(const SceneSpec& s);
 
-// The scene's blocks in creation order. Throws SceneError (prefixed with
-// `source`) when the scene is invalid: see validate().
-std::vector<Body> expand(const SceneSpec& s, const std::string& source);
-
-// Checks everything about a scene that a file could get wrong: parameters,
-// sizes, masses, restitutions, counts, and that every block lies inside the
-// world and overlaps no wall. Throws SceneError naming `source` and the key
-// path (blocks[3], blocks[2] body 17, world.dt, ...).
+// Validation: the one place that checks a scene. `validate` checks the spec
+// (parameters, sizes, masses, restitutions, motions, counts, generators),
+// with the limits of engine/limits.hpp; `expand` runs it, makes the bodies
+// and checks that every one lies inside the world and overlaps no wall. A
+// load validates once: the command line expands the scene (after its
+// overrides) and builds the world from those bodies; make_world(spec, ...)
+// expands once too. The scene file reader only checks what it must to
+// convert JSON (types, keys, integers that fit). Errors are SceneError naming
+// `source` and the key path (blocks[3], blocks[2] (grid body 17), world.dt).
 void validate(const SceneSpec& s, const std::string& source);
 
-// Adds the walls (if any) and the blocks to `w`, using w.params.dt to turn
-// impulses into initial forces. Throws SceneError if the scene is invalid.
+// The scene's blocks in creation order, validated (see above).
+std::vector<Body> expand(const SceneSpec& s, const std::string& source);
+
+// How many times validate() has run in this process (tests check that a load
+// validates once).
+std::int64_t validation_count();
+
+// Adds the walls (if any) and `bodies` (from expand(s, ...)) to `w`, using
+// w.params.dt to turn impulses into initial forces. No checks: Block::make
+// asserts what expand guarantees.
+void populate(World& w, const SceneSpec& s, const std::vector<Body>& bodies);
+// Same, expanding (so validating) the scene first.
 void populate(World& w, const SceneSpec& s, const std::string& source = "scene");
 
 // A world with the scene's parameters and systems (Draw only if `with_draw`:
-// a headless run has nothing to draw), populated.
+// a headless run has nothing to draw), holding `bodies` (from expand).
+World make_world(const SceneSpec& s, const std::vector<Body>& bodies, bool with_draw);
+// Same, expanding (so validating) the scene once. Throws SceneError.
 World make_world(const SceneSpec& s, bool with_draw, const std::string& source = "scene");
 
 }  // namespace physics

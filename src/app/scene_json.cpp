@@ -6,8 +6,10 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 namespace physics {
@@ -41,16 +43,24 @@ class StrictDom : public nlohmann::json_sax<json> {
     return false;
   }
   bool start_object(std::size_t) override { return open(json::object()); }
-  bool start_array(std::size_t) override { return open(json::array()); }
+  bool start_array(std::size_t) override {
+    // Most arrays of a scene are pairs ([x, y], [w, h]): one allocation, not two.
+    json a = json::array();
+    a.get_ref<json::array_t&>().reserve(2);
+    return open(std::move(a));
+  }
   bool end_object() override { return close(); }
   bool end_array() override { return close(); }
   bool key(string_t& k) override {
-    Open& top = stack_.back();
-    if (top.value->contains(k)) {
+    // One lookup: the member is made here (null until its value comes), so
+    // a second one with the same name is a duplicate.
+    auto [it, inserted] = stack_.back().value->emplace(k, nullptr);
+    if (!inserted) {
       error = path() + (path().empty() ? "" : ": ") + "duplicate key \"" + k + "\"";
       return false;
     }
-    pending_key_ = k;
+    slot_ = &it.value();
+    last_key_ = k;
     return true;
   }
   bool parse_error(std::size_t pos, const std::string&, const nlohmann::detail::exception& ex) override {
@@ -68,40 +78,54 @@ class StrictDom : public nlohmann::json_sax<json> {
     return false;
   }
 
+ // Called with each element of the top-level "blocks" array as soon as it is
+  // complete (its index in the array); the element is dropped after, so a
+  // large scene is never held whole as a document. Unset: nothing streamed.
+  std::function<void(const json&, std::size_t)> on_block;
+
  private:
+  // An open array or object; where it sits in its parent (a key or an
+  // index) is kept to build the path of an error, and only then.
   struct Open {
     json* value;
-    std::string name;  // path segment: ".key" or "[i]"
+    std::string key;          // in an object
+    std::size_t index = 0;    // in an array
+    bool in_array = false;
+    std::size_t children = 0; // values placed in it so far (an array's next index)
+    bool blocks = false;      // the root's "blocks" array, streamed to on_block
   };
   std::vector<Open> stack_;
-  std::string pending_key_;
+  json* slot_ = nullptr;  // the member key() made, waiting for its value
+  std::string last_key_;  // its name
 
   std::string path() const {
     std::string p;
-    for (const Open& o : stack_) p += o.name;
+    for (std::size_t i = 1; i < stack_.size(); ++i)
+      p += stack_[i].in_array ? "[" + std::to_string(stack_[i].index) + "]" : "." + stack_[i].key;
     if (!p.empty() && p[0] == '.') p.erase(0, 1);
     return p;
   }
   // Places v in the open container (or as the root); returns where it went.
-  json* place(json&& v, std::string& name) {
+  json* place(json&& v) {
     if (stack_.empty()) {
       root = std::move(v);
       return &root;
     }
-    json& top = *stack_.back().value;
-    if (top.is_array()) {
-      name = "[" + std::to_string(top.size()) + "]";
-      top.push_back(std::move(v));
-      return &top.back();
+    Open& top = stack_.back();
+    ++top.children;
+    if (top.value->is_array()) {
+      top.value->push_back(std::move(v));
+      return &top.value->back();
     }
-    name = "." + pending_key_;
-    json& slot = top[pending_key_];
-    slot = std::move(v);
-    return &slot;
+    *slot_ = std::move(v);
+    return slot_;
   }
   bool add(json&& v) {
-    std::string name;
-    place(std::move(v), name);
+    if (!stack_.empty() && stack_.back().blocks) {
+      on_block(v, stack_.back().children++);  // a block that is not an object: on_block says so
+      return true;
+    }
+    place(std::move(v));
     return true;
   }
   bool open(json&& v) {
@@ -109,13 +133,25 @@ class StrictDom : public nlohmann::json_sax<json> {
       error = "nesting deeper than " + std::to_string(max_depth) + " levels";
       return false;
     }
-    std::string name;
-    json* where = place(std::move(v), name);
-    stack_.push_back({where, name});
+    Open o{nullptr, {}, 0, false, 0, false};
+    if (!stack_.empty()) {
+      const Open& top = stack_.back();
+      o.in_array = top.value->is_array();
+      if (o.in_array) o.index = top.children;
+      else o.key = last_key_;
+      o.blocks = on_block && stack_.size() == 1 && !o.in_array && o.key == "blocks" && v.is_array();
+    }
+    o.value = place(std::move(v));
+    stack_.push_back(std::move(o));
     return true;
   }
   bool close() {
     stack_.pop_back();
+    if (!stack_.empty() && stack_.back().blocks) {
+      json& blocks = *stack_.back().value;
+      on_block(blocks.back(), stack_.back().children - 1);
+      blocks.get_ref<json::array_t&>().pop_back();
+    }
     return true;
   }
 };
@@ -153,11 +189,34 @@ std::string short_text(double v) {
   return o.str();
 }
 
+// A key path ("blocks[3].size[0]"), built only for a message: a scene's
+// thousands of blocks pass their checks without a string being made. A Path
+// points to its parent, so it lives no longer than it: name only Paths made
+// from named ones.
+class Path {
+ public:
+  Path(const char* text) : text_(text) {}  // NOLINT: a literal path
+  Path(const Path& parent, const char* suffix) : parent_(&parent), text_(suffix) {}
+  Path(const Path& parent, std::size_t index) : parent_(&parent), index_(index), indexed_(true) {}
+  std::string str() const {
+    std::string p = parent_ ? parent_->str() : std::string();
+    return indexed_ ? p + "[" + std::to_string(index_) + "]" : p + text_;
+  }
+  friend Path operator+(const Path& parent, const char* suffix) { return Path(parent, suffix); }
+
+ private:
+  const Path* parent_ = nullptr;
+  const char* text_ = "";
+  std::size_t index_ = 0;
+  bool indexed_ = false;
+};
+
 class Reader {
  public:
   explicit Reader(const std::string& source) : source_(source) {}
 
-  [[noreturn]] void fail(const std::string& path, const std::string& problem) const {
+  [[noreturn]] void fail(const Path& at, const std::string& problem) const {
+    const std::string path = at.str();
     throw SceneError(source_ + ": " + (path.empty() ? "" : path + ": ") + problem);
   }
 
@@ -168,12 +227,12 @@ class Reader {
     return std::string(v.is_null() ? "null" : v.is_array() ? "an array" : "an object");
   }
 
-  void object(const json& v, const std::string& path) const {
+  void object(const json& v, const Path& path) const {
     if (!v.is_object()) fail(path, "must be an object {...} (got " + got(v) + ")");
   }
 
   // Unknown keys are errors, with the nearest known key as a hint.
-  void keys(const json& v, const std::string& path, std::initializer_list<std::string_view> allowed) const {
+  void keys(const json& v, const Path& path, std::initializer_list<std::string_view> allowed) const {
     object(v, path);
     for (const auto& item : v.items()) {
       const std::string& k = item.key();
@@ -184,19 +243,20 @@ class Reader {
         list += (list.empty() ? "" : ", ") + std::string(a);
         if (const std::size_t d = edit_distance(k, a); d < best) best = d, hint = std::string(a);
       }
-      fail(path.empty() ? quote(k) : path + "." + k,
+      const std::string p = path.str();
+      fail((p.empty() ? quote(k) : p + "." + k).c_str(),
            "unknown key" + (hint.empty() ? "" : " (did you mean \"" + hint + "\"?)") + "; expected one of: " + list);
     }
   }
 
-  double number(const json& v, const std::string& path) const {
+  double number(const json& v, const Path& path) const {
     if (!v.is_number()) fail(path, "must be a number (got " + got(v) + ")");
     const double d = v.get<double>();
     if (!std::isfinite(d)) fail(path, "must be a finite number (got " + short_text(d) + ")");
     return d;
   }
 
-  std::int64_t integer(const json& v, const std::string& path, std::int64_t lo, std::int64_t hi) const {
+  std::int64_t integer(const json& v, const Path& path, std::int64_t lo, std::int64_t hi) const {
     if (!v.is_number()) fail(path, "must be an integer (got " + got(v) + ")");
     std::int64_t i;
     if (v.is_number_unsigned()) {
@@ -215,55 +275,51 @@ class Reader {
     return i;
   }
 
-  std::uint64_t seed(const json& v, const std::string& path) const {
+  std::uint64_t seed(const json& v, const Path& path) const {
     if (v.is_number_unsigned()) return v.get<std::uint64_t>();
     return static_cast<std::uint64_t>(integer(v, path, 0, std::int64_t{1} << 53));
   }
 
-  bool boolean(const json& v, const std::string& path) const {
+  bool boolean(const json& v, const Path& path) const {
     if (!v.is_boolean()) fail(path, "must be true or false (got " + got(v) + ")");
     return v.get<bool>();
   }
 
-  std::string text(const json& v, const std::string& path) const {
+  std::string text(const json& v, const Path& path) const {
     if (!v.is_string()) fail(path, "must be a string (got " + got(v) + ")");
     return v.get<std::string>();
   }
 
-  const json& pair(const json& v, const std::string& path, const char* what) const {
+  const json& pair(const json& v, const Path& path, const char* what) const {
     if (!v.is_array() || v.size() != 2) fail(path, std::string("must be ") + what + " (got " + got(v) + ")");
     return v;
   }
 
-  Vector vec(const json& v, const std::string& path) const {
+  Vector vec(const json& v, const Path& path) const {
     pair(v, path, "an array of two numbers [x, y]");
     return {number(v[0], path + "[0]"), number(v[1], path + "[1]")};
   }
 
-  int size_value(const json& v, const std::string& path) const {
+  int size_value(const json& v, const Path& path) const {
     if (v.is_number() && v.get<double>() <= 0) fail(path, "must be > 0 (got " + got(v) + ")");
     return static_cast<int>(integer(v, path, 1, max_block_size));
   }
 
-  double mass(const json& v, const std::string& path) const {
+  double mass(const json& v, const Path& path) const {
     if (v.is_string()) {
       if (v.get_ref<const std::string&>() == "inf") return infinity;
       fail(path, "must be a number > 0 or \"inf\" (got " + got(v) + ")");
     }
     if (v.is_number() && !std::isfinite(v.get<double>()))
       fail(path, "must be a finite number > 0, or the string \"inf\" for a fixed body (got " + got(v) + ")");
-    const double m = number(v, path);
-    if (m <= 0.0) fail(path, "must be > 0 or \"inf\" (got " + got(v) + ")");
-    return m;
+    return number(v, path);  // > 0: validate() (scene.hpp)
   }
 
-  double restitution(const json& v, const std::string& path) const {
-    const double e = number(v, path);
-    if (e < 0.0 || e > 1.0) fail(path, "must be in [0, 1] (got " + got(v) + ")");
-    return e;
+  double restitution(const json& v, const Path& path) const {
+    return number(v, path);  // in [0, 1]: validate() (scene.hpp)
   }
 
-  Color color(const json& v, const std::string& path) const {
+  Color color(const json& v, const Path& path) const {
     if (v.is_string()) {
       const std::string& s = v.get_ref<const std::string&>();
       const bool hex = s.size() == 7 && s[0] == '#' &&
@@ -277,7 +333,7 @@ class Reader {
   }
 
   // A number, or a range [min, max] a generator draws from.
-  RealSpec real_spec(const json& v, const std::string& path) const {
+  RealSpec real_spec(const json& v, const Path& path) const {
     if (v.is_array()) {
       pair(v, path, "a number or a range [min, max]");
       const double lo = number(v[0], path + "[0]"), hi = number(v[1], path + "[1]");
@@ -286,7 +342,7 @@ class Reader {
     }
     return RealSpec::fixed(number(v, path));
   }
-  IntSpec size_spec(const json& v, const std::string& path) const {
+  IntSpec size_spec(const json& v, const Path& path) const {
     if (v.is_array()) {
       pair(v, path, "an integer or a range [min, max]");
       const int lo = size_value(v[0], path + "[0]"), hi = size_value(v[1], path + "[1]");
@@ -296,13 +352,13 @@ class Reader {
     }
     return IntSpec::fixed(size_value(v, path));
   }
-  VecSpec vec_spec(const json& v, const std::string& path) const {
+  VecSpec vec_spec(const json& v, const Path& path) const {
     pair(v, path, "an array [x, y] of numbers or ranges [min, max]");
     return {real_spec(v[0], path + "[0]"), real_spec(v[1], path + "[1]")};
   }
 
  private:
-  [[noreturn]] void range_fail(const std::string& path, std::int64_t lo, std::int64_t hi, const std::string& v) const {
+  [[noreturn]] void range_fail(const Path& path, std::int64_t lo, std::int64_t hi, const std::string& v) const {
     fail(path, "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] (got " + v + ")");
   }
   const std::string& source_;
@@ -320,8 +376,7 @@ void read_world(const Reader& r, const json& w, SceneSpec& s) {
   if (const json* v = find(w, "width")) s.width = static_cast<int>(r.integer(*v, "world.width", 1, max_world_size));
   if (const json* v = find(w, "height")) s.height = static_cast<int>(r.integer(*v, "world.height", 1, max_world_size));
   if (const json* v = find(w, "dt")) {
-    s.params.dt = r.number(*v, "world.dt");
-    if (s.params.dt <= 0) r.fail("world.dt", "must be > 0 (got " + r.got(*v) + ")");
+    s.params.dt = r.number(*v, "world.dt");  // > 0, <= max_dt: validate()
   }
   if (const json* v = find(w, "substeps"))
     s.params.substeps = static_cast<int>(r.integer(*v, "world.substeps", 1, max_substeps));
@@ -341,7 +396,7 @@ void read_world(const Reader& r, const json& w, SceneSpec& s) {
     if (!v->is_array()) r.fail("world.systems", "must be an array of system names (got " + r.got(*v) + ")");
     SystemSet set{false, false, false, false};
     for (std::size_t i = 0; i < v->size(); ++i) {
-      const std::string path = "world.systems[" + std::to_string(i) + "]";
+      const Path systems = "world.systems", path(systems, i);
       const std::string name = r.text((*v)[i], path);
       const auto id = system_from_name(name);
       if (!id) r.fail(path, "unknown system " + quote(name) + "; expected draw, move, forces or collision");
@@ -353,7 +408,7 @@ void read_world(const Reader& r, const json& w, SceneSpec& s) {
 }
 
 // The keys a block and a grid share: everything but the placement.
-void read_block_keys(const Reader& r, const json& b, const std::string& p, BlockSpec& out) {
+void read_block_keys(const Reader& r, const json& b, const Path& p, BlockSpec& out) {
   const json* pos = find(b, "pos");
   const json* size = find(b, "size");
   const json* mass = find(b, "mass");
@@ -372,14 +427,14 @@ void read_block_keys(const Reader& r, const json& b, const std::string& p, Block
   if (const json* v = find(b, "restitution")) out.restitution = r.restitution(*v, p + ".restitution");
 }
 
-BlockSpec read_block(const Reader& r, const json& b, const std::string& p) {
+BlockSpec read_block(const Reader& r, const json& b, const Path& p) {
   r.keys(b, p, {"pos", "size", "mass", "velocity", "force", "impulse", "color", "restitution"});
   BlockSpec out;
   read_block_keys(r, b, p, out);
   return out;
 }
 
-GridSpec read_grid(const Reader& r, const json& g, const std::string& p) {
+GridSpec read_grid(const Reader& r, const json& g, const Path& p) {
   r.keys(g, p, {"pos", "size", "mass", "velocity", "force", "impulse", "color", "restitution", "count", "step"});
   GridSpec out;
   read_block_keys(r, g, p, out.first);
@@ -394,7 +449,7 @@ GridSpec read_grid(const Reader& r, const json& g, const std::string& p) {
   return out;
 }
 
-RandomSpec read_random(const Reader& r, const json& g, const std::string& p, const SceneSpec& s) {
+RandomSpec read_random(const Reader& r, const json& g, const Path& p) {
   r.keys(g, p,
          {"count", "side", "size", "mass", "velocity", "force", "impulse", "restitution", "color", "cells", "area"});
   RandomSpec out;
@@ -416,7 +471,6 @@ RandomSpec read_random(const Reader& r, const json& g, const std::string& p, con
   if (!mass) r.fail(p, "missing key \"mass\" (a number > 0, a range [min, max], or \"inf\")");
   if (mass->is_array()) {
     out.mass = r.real_spec(*mass, p + ".mass");
-    if (out.mass.lo <= 0) r.fail(p + ".mass", "range must be > 0 (got min " + short_text(out.mass.lo) + ")");
   } else {
     out.mass = RealSpec::fixed(r.mass(*mass, p + ".mass"));
   }
@@ -424,9 +478,7 @@ RandomSpec read_random(const Reader& r, const json& g, const std::string& p, con
   if (const json* v = find(g, "force")) out.force = r.vec_spec(*v, p + ".force");
   if (const json* v = find(g, "impulse")) out.impulse = r.vec_spec(*v, p + ".impulse");
   if (const json* v = find(g, "restitution")) {
-    out.restitution = r.real_spec(*v, p + ".restitution");
-    for (const double e : {out.restitution->lo, out.restitution->hi})
-      if (e < 0 || e > 1) r.fail(p + ".restitution", "must be in [0, 1] (got " + short_text(e) + ")");
+    out.restitution = r.real_spec(*v, p + ".restitution");  // in [0, 1]: validate()
   }
   if (const json* v = find(g, "color"); v && !(v->is_string() && v->get<std::string>() == "random"))
     out.color = r.color(*v, p + ".color");
@@ -434,7 +486,7 @@ RandomSpec read_random(const Reader& r, const json& g, const std::string& p, con
   const json* area = find(g, "area");
   if (cells && area) r.fail(p, "give \"cells\" or \"area\", not both");
   if (cells) {
-    const std::string c = p + ".cells";
+    const Path c = p + ".cells";
     r.keys(*cells, c, {"pos", "columns", "step", "jitter"});
     out.use_cells = true;
     for (const char* k : {"pos", "columns", "step"})
@@ -443,17 +495,15 @@ RandomSpec read_random(const Reader& r, const json& g, const std::string& p, con
     out.columns = static_cast<int>(r.integer(cells->at("columns"), c + ".columns", 1, max_bodies));
     out.step = r.vec(cells->at("step"), c + ".step");
     if (const json* v = find(*cells, "jitter")) {
-      out.jitter = r.vec(*v, c + ".jitter");
-      if (out.jitter.x < 0 || out.jitter.y < 0) r.fail(c + ".jitter", "must be >= 0");
+      out.jitter = r.vec(*v, c + ".jitter");  // >= 0: validate()
     }
   } else {
-    // Default area: the inside of the walls, or the whole world.
+    // Default area: the inside of the walls, or the whole world, set by
+    // read_scene once the world is read (NaN here: a file's numbers are finite).
     out.use_cells = false;
-    const double t = s.walls ? wall_thickness : 0;
-    out.origin = {t, t};
-    out.extent = {s.width - 2 * t, s.height - 2 * t};
+    out.origin = out.extent = Vector{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
     if (area) {
-      const std::string a = p + ".area";
+      const Path a = p + ".area";
       r.keys(*area, a, {"pos", "size"});
       if (const json* v = find(*area, "pos")) out.origin = r.vec(*v, a + ".pos");
       if (const json* v = find(*area, "size")) out.extent = r.vec(*v, a + ".size");
@@ -462,7 +512,7 @@ RandomSpec read_random(const Reader& r, const json& g, const std::string& p, con
   return out;
 }
 
-BlockEntry read_entry(const Reader& r, const json& e, const std::string& p, const SceneSpec& s) {
+BlockEntry read_entry(const Reader& r, const json& e, const Path& p) {
   r.object(e, p);
   const bool grid = e.contains("grid"), random = e.contains("random");
   if (grid && random) r.fail(p, "an entry is a \"grid\" or a \"random\" generator, not both");
@@ -472,7 +522,7 @@ BlockEntry read_entry(const Reader& r, const json& e, const std::string& p, cons
   }
   if (random) {
     r.keys(e, p, {"random", "seed"});
-    RandomSpec out = read_random(r, e["random"], p + ".random", s);
+    RandomSpec out = read_random(r, e["random"], p + ".random");
     if (const json* v = find(e, "seed")) out.seed = r.seed(*v, p + ".seed");
     return out;
   }
@@ -501,8 +551,32 @@ TextPos line_column(std::string_view text, std::size_t position) {
   return p;
 }
 
-SceneSpec parse_scene(std::string_view text, const std::string& source) {
+SceneSpec read_scene(std::string_view text, const std::string& source) {
+  const Reader r(source);
+  SceneSpec s;
+  // The blocks are read as the parser completes each one. Their first error
+  // is kept and raised after the checks that come before the blocks (syntax
+  // anywhere in the file, top-level keys, world), as if the file were read
+  // whole first.
+  std::optional<SceneError> block_error;
+  // Room for the blocks up front: an entry is large (a variant of the three
+  // kinds), and growing the vector moves each one again. Every block and
+  // grid has a "pos" key, so their count bounds the entries of a plain file;
+  // capped, so a file of nothing but "pos" reserves little.
+  std::size_t entries = 0;
+  for (auto at = text.find("\"pos\""); at != std::string_view::npos && entries < (1u << 17); at = text.find("\"pos\"", at + 5))
+    ++entries;
+  s.blocks.reserve(entries);
   StrictDom dom;
+  const Path blocks = "blocks";
+  dom.on_block = [&](const json& e, std::size_t i) {
+    if (block_error) return;
+    try {
+      s.blocks.push_back(read_entry(r, e, Path(blocks, i)));
+    } catch (const SceneError& err) {
+      block_error = err;
+    }
+  };
   // Comments (// and /* */) are allowed: scene files are written by hand.
   const bool ok = json::sax_parse(text, &dom, json::input_format_t::json, true, true);
   if (!ok || !dom.error.empty()) {
@@ -514,25 +588,32 @@ SceneSpec parse_scene(std::string_view text, const std::string& source) {
     throw SceneError(source + ": " + (dom.error.empty() ? std::string("invalid JSON") : dom.error));
   }
   const json& doc = dom.root;
-  const Reader r(source);
   if (!doc.is_object()) r.fail("", "a scene file must hold one JSON object {...} (got " + r.got(doc) + ")");
   r.keys(doc, "", {"name", "description", "world", "blocks"});
-  SceneSpec s;
   s.name = stem(source);
   if (const json* v = find(doc, "name")) s.name = r.text(*v, "name");
   if (const json* v = find(doc, "description")) s.description = r.text(*v, "description");
   if (const json* v = find(doc, "world")) read_world(r, *v, s);
-  if (const json* v = find(doc, "blocks")) {
-    if (!v->is_array()) r.fail("blocks", "must be an array of blocks (got " + r.got(*v) + ")");
-    for (std::size_t i = 0; i < v->size(); ++i)
-      s.blocks.push_back(read_entry(r, (*v)[i], "blocks[" + std::to_string(i) + "]", s));
-  }
-  // The checks that need the whole scene (counts, placement against the walls).
-  expand(s, source);
+  if (const json* v = find(doc, "blocks"); v && !v->is_array())
+    r.fail("blocks", "must be an array of blocks (got " + r.got(*v) + ")");
+  if (block_error) throw *block_error;
+  // Random generators without an area take the inside of the walls, or the whole world.
+  const double t = s.walls ? wall_thickness : 0;
+  for (BlockEntry& e : s.blocks)
+    if (auto* g = std::get_if<RandomSpec>(&e); g && !g->use_cells) {
+      if (std::isnan(g->origin.x)) g->origin = {t, t};
+      if (std::isnan(g->extent.x)) g->extent = {s.width - 2 * t, s.height - 2 * t};
+    }
   return s;
 }
 
-SceneSpec load_scene_file(const std::string& path) {
+SceneSpec parse_scene(std::string_view text, const std::string& source) {
+  SceneSpec s = read_scene(text, source);
+  expand(s, source);  // the validation (scene.hpp), placement included
+  return s;
+}
+
+SceneSpec read_scene_file(const std::string& path) {
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
   if (ec || !std::filesystem::exists(status))
@@ -543,10 +624,23 @@ SceneSpec load_scene_file(const std::string& path) {
   const auto size = std::filesystem::file_size(path, ec);
   if (!ec && size > max_file_size)
     throw SceneError(path + ": cannot read the scene file: larger than " + std::to_string(max_file_size >> 20) + " MB");
-  std::ostringstream text;
-  text << in.rdbuf();
+  // Read at once into a string of the file's size (a stream, then a copy,
+  // doubled the work on a large scene); grown by the loop if it was not known.
+  std::string text(ec ? 0 : static_cast<std::size_t>(size), '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  for (char buf[65536]; in && !in.eof();) {
+    in.read(buf, sizeof buf);
+    text.append(buf, static_cast<std::size_t>(in.gcount()));
+  }
   if (in.bad()) throw SceneError(path + ": cannot read the scene file: read error");
-  return parse_scene(text.str(), path);
+  return read_scene(text, path);
+}
+
+SceneSpec load_scene_file(const std::string& path) {
+  SceneSpec s = read_scene_file(path);
+  expand(s, path);  // the validation (scene.hpp), placement included
+  return s;
 }
 
 // ---------------------------------------------------------------------------

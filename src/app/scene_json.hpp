@@ -2,13 +2,15 @@
 //
 // The format is documented in docs/scenes.md. The reader is strict, since a
 // typo must not pass silently: unknown and duplicate keys are errors, every
-// value is type- and range-checked, and each error is one line naming the
+// value is type-checked here (and an integer must fit its field), its meaning
+// (mass > 0, restitution in [0, 1], placement, ...) by the scene validator,
+// validate()/expand() in scene.hpp; each error is one line naming the
 // file and either the line:column (syntax) or the key path (meaning):
 //   scenes/x.json:4:17: invalid JSON: syntax error while parsing object ...
 //   scenes/x.json: blocks[3].mass: must be > 0 or "inf" (got -1)
 // Part of the physics library (no SDL), so it can be fuzzed on its own: any
 // input either gives a valid SceneSpec or throws SceneError, within bounded
-// time and memory (see the limits in scene.hpp).
+// time and memory (see the limits in engine/limits.hpp).
 #pragma once
 
 #include <string>
@@ -18,12 +20,19 @@
 
 namespace physics {
 
-// Parses and validates a scene file's text. `source` names it in messages
-// and gives the default scene name (its file name without directory and
-// extension). Throws SceneError.
+// Reads a scene file's text into a SceneSpec: JSON syntax, keys and the types
+// of values (what converting JSON needs), not the scene's meaning: that is
+// validate()/expand() in scene.hpp, run once by whoever builds the world (the
+// command line validates after applying its overrides). `source` names the
+// file in messages and gives the default scene name (its file name without
+// directory and extension). Throws SceneError.
+SceneSpec read_scene(std::string_view text, const std::string& source);
+// read_scene, then validated (expand: every check, placement included):
+// a SceneSpec it returns builds. Throws SceneError.
 SceneSpec parse_scene(std::string_view text, const std::string& source);
 
-// Reads and parses a file. Throws SceneError (also when it cannot be read).
+// The same from a file. Throw SceneError (also when it cannot be read).
+SceneSpec read_scene_file(const std::string& path);
 SceneSpec load_scene_file(const std::string& path);
 
 // The scene as a scene file that parse_scene reads back to the same scene.

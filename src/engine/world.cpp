@@ -7,14 +7,14 @@
 namespace physics {
 
 void validate(const Params& p) {
-  if (!std::isfinite(p.dt) || p.dt <= 0.0)
-    throw std::invalid_argument("dt must be a finite number > 0 (got " + std::to_string(p.dt) + ")");
-  if (p.substeps < 1)
-    throw std::invalid_argument("substeps must be >= 1 (got " + std::to_string(p.substeps) + ")");
-  if (p.iterations < 1)
-    throw std::invalid_argument("iterations must be >= 1 (got " + std::to_string(p.iterations) + ")");
-  if (!std::isfinite(p.gravity.x) || !std::isfinite(p.gravity.y))
-    throw std::invalid_argument("gravity must be finite");
+  if (!std::isfinite(p.dt) || p.dt <= 0.0 || p.dt > max_dt)
+    throw std::invalid_argument("dt must be a finite number in (0, 1e6] ms (got " + std::to_string(p.dt) + ")");
+  if (p.substeps < 1 || p.substeps > max_substeps)
+    throw std::invalid_argument("substeps must be in [1, 1000] (got " + std::to_string(p.substeps) + ")");
+  if (p.iterations < 1 || p.iterations > max_iterations)
+    throw std::invalid_argument("iterations must be in [1, 1000] (got " + std::to_string(p.iterations) + ")");
+  if (!(std::abs(p.gravity.x) <= max_motion && std::abs(p.gravity.y) <= max_motion))
+    throw std::invalid_argument("gravity must be finite, within 1e6 per axis");
 }
 
 std::string_view name(Stage s) {

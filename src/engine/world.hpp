@@ -9,6 +9,7 @@
 #include "system_defs.hpp"
 #include "engine/ccd.hpp"
 #include "engine/contact_solver.hpp"
+#include "engine/limits.hpp"
 #include "engine/pairs.hpp"
 #include "engine/timing.hpp"
 
@@ -30,7 +31,13 @@ struct Params {
   int iterations = 8;       // velocity iterations of the stable solver
 };
 
-// Throws std::invalid_argument naming the bad parameter.
+// The engine's own guard, run by World's constructor: a World can be built
+// without a scene (tests, tools, the benchmark), so it checks its parameters
+// itself. It uses the limits of engine/limits.hpp, the ones the scene
+// validator (app/scene.cpp) reports with a key path, so a validated scene
+// always passes; for a scene it is a cheap second look at four numbers, not
+// a second validation of its bodies. Throws std::invalid_argument naming the
+// bad parameter.
 void validate(const Params& p);
 
 struct World {

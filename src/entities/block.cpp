@@ -1,25 +1,18 @@
 #include "entities/block.hpp"
 
+#include <cassert>
 #include <cmath>
-#include <stdexcept>
-#include <string>
 
 namespace physics::Block {
 
 t make(World& w, double x, double y, int width, int height, Color color, double mass,
        double restitution) {
-  if (width <= 0 || height <= 0)
-    throw std::invalid_argument("block size must be > 0 (got " + std::to_string(width) + "x" +
-                                std::to_string(height) + ")");
-  // Sizes are summed in Rect::mdiff; keep them far from int overflow.
-  if (width > (1 << 28) || height > (1 << 28))
-    throw std::invalid_argument("block size too large (max 2^28 px)");
-  if (std::isnan(mass) || mass <= 0.0)
-    throw std::invalid_argument("block mass must be > 0 or infinity (got " + std::to_string(mass) + ")");
-  if (!std::isfinite(x) || !std::isfinite(y))
-    throw std::invalid_argument("block position must be finite");
-  if (!(restitution >= 0.0 && restitution <= 1.0))
-    throw std::invalid_argument("restitution must be in [0, 1] (got " + std::to_string(restitution) + ")");
+  // The caller gives a valid block: the scene validator (app/scene.cpp)
+  // rejects bad input with a message; these only catch a programming error.
+  assert(width > 0 && height > 0 && width <= max_block_size && height <= max_block_size);
+  assert(mass > 0.0);  // or infinity (a fixed block); false for NaN
+  assert(std::isfinite(x) && std::isfinite(y));
+  assert(restitution >= 0.0 && restitution <= 1.0);
 
   Components& c = w.components;
   const t e{c.create()};

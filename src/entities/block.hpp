@@ -14,8 +14,9 @@ using t = Entity<component::position, component::box, component::color, componen
 
 // Block.make x y w h color mass: creates the block and registers it with every
 // system the world declared (Draw, Move, Forces, Collision).
-// Throws std::invalid_argument on a size <= 0, a NaN or non-positive mass, a
-// non-finite position, or a restitution outside [0, 1].
+// Expects a valid block (asserted): 0 < size <= max_block_size, a mass > 0 or
+// infinity, a finite position, a restitution in [0, 1]. Scenes are checked
+// before, by the scene validator (app/scene.hpp).
 t make(World& w, double x, double y, int width, int height, Color color, double mass,
        double restitution = component::restitution::def);
 

@@ -1,0 +1,22 @@
+// The one set of limits on what a world may hold. The scene validator
+// (app/scene.cpp, validate/expand) rejects any scene outside them with a
+// message naming the key; the engine's own guards (validate(Params) in the
+// World's constructor, the asserts of Block::make) check the same numbers, so
+// every scene the validator accepts passes them.
+#pragma once
+
+#include <cstdint>
+
+namespace physics {
+
+// Limits that keep any input from exhausting memory, hanging the loader or
+// overflowing: sizes are summed in Rect::mdiff (int), far below INT_MAX here.
+inline constexpr int max_world_size = 1 << 20;  // px, per side
+inline constexpr int max_block_size = 1 << 20;  // px, per side
+inline constexpr std::int64_t max_bodies = 1'000'000;
+inline constexpr int max_substeps = 1000;
+inline constexpr int max_iterations = 1000;
+inline constexpr double max_motion = 1e6;  // |velocity|, |force|, |impulse|, |gravity| per axis
+inline constexpr double max_dt = 1e6;      // ms
+
+}  // namespace physics
