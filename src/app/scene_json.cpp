@@ -1,6 +1,7 @@
 #include "app/scene_json.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -8,6 +9,10 @@
 #include <fstream>
 #include <functional>
 #include <limits>
+// nlohmann's own invariant checks (assert, as the build has no NDEBUG) cost
+// a tenth of the load of a large scene; this file is the only one to include
+// it, so there is no other definition of its inline functions to disagree with.
+#define JSON_ASSERT(x) static_cast<void>(0)
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
@@ -22,6 +27,165 @@ constexpr std::size_t max_depth = 64;                    // scene files need 5
 constexpr std::uintmax_t max_file_size = 64u << 20;      // bytes
 
 // ---------------------------------------------------------------------------
+// A plain block entry ({"pos": [x, y], "size": [w, h], "mass": m, ...}) read
+// from the parser's events without a document: the entries of a large scene
+// are nearly all plain blocks, and a json object per entry (a std::map, a
+// vector per pair, all freed again) was half of its load time. The events
+// are kept, so that an entry that is anything else (a generator, an unknown
+// or repeated key, a nested value, a wrong type, shape or range) is replayed
+// into the document and read by read_entry, which words the error: this path
+// never makes a message of its own, so every message stays the same.
+
+class PlainBlock {
+ public:
+  enum class Kind : std::uint8_t { key, start_array, end_array, null, boolean, integer, natural, real, string };
+  struct Event {
+    Kind kind;
+    std::uint8_t id = 0;  // key: its index in names; string: its index in strings()
+    bool b = false;       // the value, by kind
+    std::int64_t i = 0;
+    std::uint64_t u = 0;
+    double d = 0;
+  };
+  // The keys of a plain block (read_block's list).
+  static constexpr std::array<std::string_view, 8> names{"pos",   "size",  "mass",  "velocity",
+                                                         "force", "impulse", "color", "restitution"};
+
+  void reset() {
+    events_.clear();
+    strings_.clear();
+    seen_ = 0;
+    in_array_ = false;
+  }
+  const std::vector<Event>& events() const { return events_; }
+  const std::string& text(const Event& e) const { return strings_[e.id]; }
+  bool in_array() const { return in_array_; }
+
+  // Each returns false when the event does not fit a plain block: the caller
+  // replays the events so far, then gives this one to the document.
+  bool key(std::string_view k) {
+    const auto it = std::find(names.begin(), names.end(), k);
+    const auto id = static_cast<std::uint8_t>(it - names.begin());
+    if (it == names.end() || (seen_ >> id & 1u)) return false;  // unknown, or a duplicate (the document's error)
+    seen_ |= 1u << id;
+    return push({Kind::key, id});
+  }
+  bool start_array() {
+    if (in_array_) return false;  // [[...]]: no block key holds one
+    in_array_ = true;
+    return push({Kind::start_array});
+  }
+  bool end_array() {
+    in_array_ = false;
+    return push({Kind::end_array});
+  }
+  bool scalar(const Event& e) { return push(e); }
+  bool string(std::string&& s) {
+    if (strings_.size() > 8) return false;
+    strings_.push_back(std::move(s));
+    return push({Kind::string, static_cast<std::uint8_t>(strings_.size() - 1)});
+  }
+
+  bool to_spec(BlockSpec& out) const;
+
+ private:
+  bool push(const Event& e) {
+    events_.push_back(e);
+    return true;
+  }
+  static bool number(const Event& e, double& out);
+  static bool vec(const Event* e, Vector& out);
+  static bool side(const Event& e, int& out);
+  bool mass(const Event& e, double& out) const;
+  bool color(const Event& e, Color& out) const;
+
+  std::vector<Event> events_;
+  std::vector<std::string> strings_;
+  unsigned seen_ = 0;  // the keys given so far, a bit each
+  bool in_array_ = false;
+};
+
+// Reader::number's conversion: the number's value as a double, finite.
+bool PlainBlock::number(const Event& e, double& out) {
+  switch (e.kind) {
+    case Kind::integer: out = static_cast<double>(e.i); break;
+    case Kind::natural: out = static_cast<double>(e.u); break;
+    case Kind::real: out = e.d; break;
+    default: return false;
+  }
+  return std::isfinite(out);
+}
+
+// e: the start of an array of exactly two numbers. The events are in one
+// vector and every array in it is closed, so reading in order, each event
+// looked at exists: e[1] since e[0] opens an array, e[2] since e[1] is not
+// its end, and so on.
+bool PlainBlock::vec(const Event* e, Vector& out) {
+  return e[0].kind == Kind::start_array && number(e[1], out.x) && number(e[2], out.y) &&
+         e[3].kind == Kind::end_array;
+}
+
+// A side, an integer in [1, max_block_size]; a real one (4.0) is left to
+// the document's reader, which takes it too: rare, and it has rules of its own.
+bool PlainBlock::side(const Event& e, int& out) {
+  if (e.kind == Kind::natural && e.u >= 1 && e.u <= static_cast<std::uint64_t>(max_block_size)) {
+    out = static_cast<int>(e.u);
+    return true;
+  }
+  return false;  // negative integers (nlohmann's "integer"): out of range
+}
+
+bool PlainBlock::mass(const Event& e, double& out) const {
+  if (e.kind == Kind::string) {
+    if (text(e) != "inf") return false;
+    out = infinity;
+    return true;
+  }
+  return number(e, out);  // > 0: validate() (scene.hpp), as for the document
+}
+
+bool PlainBlock::color(const Event& e, Color& out) const {
+  if (e.kind != Kind::string) return false;
+  const std::string& s = text(e);
+  if (s.size() != 7 || s[0] != '#') return false;
+  const auto digit = [](char c) {
+    return c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : c >= 'A' && c <= 'F' ? c - 'A' + 10 : -1;
+  };
+  std::uint8_t rgb[3];
+  for (int i = 0; i < 3; ++i) {
+    const int hi = digit(s[1 + 2 * i]), lo = digit(s[2 + 2 * i]);
+    if (hi < 0 || lo < 0) return false;
+    rgb[i] = static_cast<std::uint8_t>(hi * 16 + lo);
+  }
+  out = {rgb[0], rgb[1], rgb[2], 255};
+  return true;
+}
+
+// The block read_block would make of these events, or false if it would
+// not make one (it then says why) or might make it differently.
+bool PlainBlock::to_spec(BlockSpec& out) const {
+  std::array<const Event*, names.size()> at{};  // each key's value (a scalar, or the start of its array)
+  for (std::size_t i = 0; i + 1 < events_.size(); ++i)
+    if (events_[i].kind == Kind::key) at[events_[i].id] = &events_[i + 1];
+  const Event *pos = at[0], *size = at[1], *mass_ = at[2];
+  if (!pos || !size || !mass_ || !vec(pos, out.pos) || !mass(*mass_, out.mass)) return false;
+  const bool sides = size[0].kind == Kind::start_array && side(size[1], out.width) && side(size[2], out.height) &&
+                     size[3].kind == Kind::end_array;  // in this order: see vec()
+  if (!sides) return false;
+  for (std::size_t k = 3; k < 6; ++k) {
+    Vector& v = k == 3 ? out.velocity : k == 4 ? out.force : out.impulse;
+    if (at[k] && !vec(at[k], v)) return false;
+  }
+  if (at[6] && !color(*at[6], out.color)) return false;
+  if (at[7]) {
+    double e;
+    if (!number(*at[7], e)) return false;
+    out.restitution = e;  // in [0, 1]: validate()
+  }
+  return true;
+}
+
+// ---------------------------------------------------------------------------
 // Parsing: a SAX handler that builds the document like nlohmann's own DOM
 // parser, but rejects duplicate keys (nlohmann keeps the last one silently)
 // and nesting deeper than max_depth, and keeps the error's byte position.
@@ -32,26 +196,61 @@ class StrictDom : public nlohmann::json_sax<json> {
   std::string error;          // set when the parse failed
   std::size_t position = 0;   // byte position of a syntax error, else 0
 
-  bool null() override { return add(nullptr); }
-  bool boolean(bool v) override { return add(v); }
-  bool number_integer(number_integer_t v) override { return add(v); }
-  bool number_unsigned(number_unsigned_t v) override { return add(v); }
-  bool number_float(number_float_t v, const string_t&) override { return add(v); }
-  bool string(string_t& v) override { return add(v); }
+  // Each event goes to the plain block being read, if there is one and it
+  // takes it; else (the block replayed into the document first) to the document.
+  bool null() override { return fast({Kind::null}) || add(nullptr); }
+  bool boolean(bool v) override { return fast({.kind = Kind::boolean, .b = v}) || add(v); }
+  bool number_integer(number_integer_t v) override { return fast({.kind = Kind::integer, .i = v}) || add(v); }
+  bool number_unsigned(number_unsigned_t v) override { return fast({.kind = Kind::natural, .u = v}) || add(v); }
+  bool number_float(number_float_t v, const string_t&) override {
+    return fast({.kind = Kind::real, .d = v}) || add(v);
+  }
+  bool string(string_t& v) override {
+    if (fast_ && plain_.string(std::move(v))) return true;
+    if (fast_) fall_back();
+    return add(v);
+  }
   bool binary(binary_t&) override {
     error = "binary values are not JSON";
     return false;
   }
-  bool start_object(std::size_t) override { return open(json::object()); }
+  bool start_object(std::size_t) override {
+    if (fast_) fall_back();  // a nested object: not a plain block
+    if (!stack_.empty() && stack_.back().blocks && on_plain_block) {
+      // An entry of "blocks": read as a plain block until it shows it is not one.
+      plain_.reset();
+      fast_ = true;
+      return true;
+    }
+    return open(json::object());
+  }
   bool start_array(std::size_t) override {
+    if (fast_ && plain_.start_array()) return true;
+    if (fast_) fall_back();
     // Most arrays of a scene are pairs ([x, y], [w, h]): one allocation, not two.
     json a = json::array();
     a.get_ref<json::array_t&>().reserve(2);
     return open(std::move(a));
   }
-  bool end_object() override { return close(); }
-  bool end_array() override { return close(); }
+  bool end_object() override {
+    if (fast_) {
+      BlockSpec spec;
+      if (plain_.to_spec(spec)) {
+        fast_ = false;
+        on_plain_block(std::move(spec), stack_.back().children++);
+        return true;
+      }
+      fall_back();  // read_entry says what is wrong with it
+    }
+    return close();
+  }
+  bool end_array() override {
+    if (fast_) return plain_.end_array();  // the plain block only opens arrays one deep
+    return close();
+  }
   bool key(string_t& k) override {
+    if (fast_ && plain_.key(k)) return true;
+    if (fast_) fall_back();
     // One lookup: the member is made here (null until its value comes), so
     // a second one with the same name is a duplicate.
     auto [it, inserted] = stack_.back().value->emplace(k, nullptr);
@@ -82,6 +281,9 @@ class StrictDom : public nlohmann::json_sax<json> {
   // complete (its index in the array); the element is dropped after, so a
   // large scene is never held whole as a document. Unset: nothing streamed.
   std::function<void(const json&, std::size_t)> on_block;
+  // Called instead with an element of it that is a plain block (PlainBlock),
+  // read without a document. Unset: every element goes to on_block.
+  std::function<void(BlockSpec&&, std::size_t)> on_plain_block;
 
  private:
   // An open array or object; where it sits in its parent (a key or an
@@ -97,6 +299,45 @@ class StrictDom : public nlohmann::json_sax<json> {
   std::vector<Open> stack_;
   json* slot_ = nullptr;  // the member key() made, waiting for its value
   std::string last_key_;  // its name
+  using Kind = PlainBlock::Kind;
+  PlainBlock plain_;      // the entry of "blocks" being read as a plain block,
+  bool fast_ = false;     // if this is set
+
+  bool fast(const PlainBlock::Event& e) {
+    if (!fast_) return false;
+    if (plain_.scalar(e)) return true;
+    fall_back();
+    return false;
+  }
+  // The entry is not a plain block: it becomes the document's, as if it had
+  // been given to it from its start (opened at the index it would have had).
+  // Replaying cannot fail: the events were those of a valid, shallow object
+  // with no repeated key.
+  void fall_back() {
+    fast_ = false;
+    open(json::object());
+    for (const PlainBlock::Event& e : plain_.events()) {
+      switch (e.kind) {
+        case Kind::key: {
+          string_t k(PlainBlock::names[e.id]);
+          key(k);
+          break;
+        }
+        case Kind::start_array: start_array(0); break;
+        case Kind::end_array: end_array(); break;
+        case Kind::null: null(); break;
+        case Kind::boolean: boolean(e.b); break;
+        case Kind::integer: number_integer(e.i); break;
+        case Kind::natural: number_unsigned(e.u); break;
+        case Kind::real: number_float(e.d, {}); break;
+        case Kind::string: {
+          string_t v = plain_.text(e);
+          string(v);
+          break;
+        }
+      }
+    }
+  }
 
   std::string path() const {
     std::string p;
@@ -569,6 +810,9 @@ SceneSpec read_scene(std::string_view text, const std::string& source) {
   s.blocks.reserve(entries);
   StrictDom dom;
   const Path blocks = "blocks";
+  dom.on_plain_block = [&](BlockSpec&& b, std::size_t) {
+    if (!block_error) s.blocks.push_back(std::move(b));
+  };
   dom.on_block = [&](const json& e, std::size_t i) {
     if (block_error) return;
     try {
