@@ -162,6 +162,35 @@ BOOST_AUTO_TEST_CASE(generators_read_ranges_and_seeds) {
   }
 }
 
+// A plain block is read from the parser's events, without a document
+// (scene_json.cpp: PlainBlock); a real side (4.0) sends the same block to the
+// document's reader. Both must give the same block, bit for bit.
+BOOST_AUTO_TEST_CASE(plain_blocks_read_without_a_document_equal_the_documents) {
+  const std::vector<std::string> members = {
+      R"("pos": [100, 100], "mass": 1)",
+      R"("mass": 2.5, "pos": [-3, 0.1], "velocity": [0.1, -0.2], "force": [1e300, -1e-300], "impulse": [5, 6])",
+      R"("pos": [18446744073709551615, -9223372036854775808], "mass": "inf", "color": "#a0B1c2")",
+      R"("pos": [0.30000000000000004, 1e-320], "mass": 9007199254740993, "restitution": 0.5)",
+      R"("restitution": 0, "color": "#FFFFFF", "pos": [1, 2], "mass": -1)",
+  };
+  for (const std::string& m : members) {
+    const SceneSpec fast = read_scene(with_block(m + R"(, "size": [4, 7])"), "p.json");
+    const SceneSpec dom = read_scene(with_block(m + R"(, "size": [4.0, 7.0])"), "p.json");
+    BOOST_TEST_REQUIRE(fast.blocks.size() == 1u);
+    BOOST_TEST((fast.blocks == dom.blocks), m);
+  }
+  // Plain blocks and others, in their order.
+  const SceneSpec s = read_scene(R"({"blocks": [
+      {"pos": [1, 1], "size": [2, 2], "mass": 1},
+      {"grid": {"pos": [100, 100], "size": [10, 10], "mass": "inf", "count": [3, 2]}},
+      {"pos": [3, 3], "size": [2.0, 2], "mass": 1},
+      {"pos": [4, 4], "size": [2, 2], "mass": 1}]})",
+                                 "p.json");
+  BOOST_TEST_REQUIRE(s.blocks.size() == 4u);
+  BOOST_TEST(std::holds_alternative<GridSpec>(s.blocks[1]));
+  for (const std::size_t i : {0u, 2u, 3u}) BOOST_TEST(std::get<BlockSpec>(s.blocks[i]).pos.x == (i == 0 ? 1.0 : i + 1.0));
+}
+
 BOOST_AUTO_TEST_SUITE_END()
 
 // One case per kind of bad input the issue lists, and a few more.
@@ -211,6 +240,23 @@ BOOST_AUTO_TEST_CASE(unknown_keys_are_errors_with_a_hint) {
                  "blocks[0].grid.colour: unknown key (did you mean \"color\"?)"));
   BOOST_TEST(has(error_of(R"({"blocks": [{"random": {"count": 1, "side": 5, "mass": 1}, "sed": 1}]})"),
                  "blocks[0].sed: unknown key"));
+}
+
+// Errors in a block after plain ones: the document's messages, path and
+// index included, and a syntax error further on still comes first.
+BOOST_AUTO_TEST_CASE(errors_after_plain_blocks) {
+  const std::string two = R"({"blocks": [{"pos": [1, 1], "size": [2, 2], "mass": 1}, {)";
+  BOOST_TEST(has(error_of(two + R"("pos": [1, 1], "mass": 1, "size": [2, 2], "mass": 3}]})"),
+                 "bad.json: blocks[1]: duplicate key \"mass\""));
+  BOOST_TEST(has(error_of(two + R"("pos": [1, 1], "size": [0, 2], "mass": 1}]})"), "bad.json: blocks[1].size[0]: must be > 0"));
+  BOOST_TEST(has(error_of(two + R"("pos": [1, 1, 1], "size": [2, 2], "mass": 1}]})"), "bad.json: blocks[1].pos: must be"));
+  BOOST_TEST(has(error_of(two + R"("pos": {"x": 1}, "size": [2, 2], "mass": 1}]})"), "bad.json: blocks[1].pos: must be"));
+  BOOST_TEST(has(error_of(two + R"("pos": [[1], 1], "size": [2, 2], "mass": 1}]})"), "bad.json: blocks[1].pos[0]: must be"));
+  BOOST_TEST(has(error_of(two + R"("pos": [1, 1], "size": [2, 2], "mass": 1, "colour": "#000000"}]})"),
+                 "bad.json: blocks[1].colour: unknown key (did you mean \"color\"?)"));
+  BOOST_TEST(has(error_of(two + R"("pos": [1, 1], "size": [2, 2], "mass": 1, "color": "#00000g"}]})"),
+                 "bad.json: blocks[1].color: must be a colour"));
+  BOOST_TEST(has(error_of(two + R"("pos": [1, 1], "size": [0, 2], "mass": 1}], "x": })"), "bad.json:1:"));
 }
 
 BOOST_AUTO_TEST_CASE(duplicate_keys_are_errors) {
