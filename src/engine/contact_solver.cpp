@@ -48,7 +48,7 @@ std::pair<int, double> best_axis(const Components& k, EntityId c, EntityId b) {
 std::uint64_t key(EntityId c, EntityId b) { return Pair{c, b}.key(); }
 
 // The contact law (engine/contact.hpp) on a contact's axis.
-void apply(Components& k, const ContactConstraint& ct, double impulse) {
+inline void apply(Components& k, const ContactConstraint& ct, double impulse) {
   apply_normal_impulse(k.velocity[ct.c], k.velocity[ct.b], axis_normal[ct.axis], impulse, ct.wc, ct.wb);
 }
 

@@ -22,14 +22,14 @@ Bounds swept(const Components& k, EntityId e, double h, double reach) {
 // ---- the course pass ----
 
 BroadPhase::CoursePairs BroadPhase::course_pairs(const Components& k, std::span<const EntityId> entities) {
-  entities_.assign(entities.begin(), entities.end());
+  course_entities_ = entities;
   stats_ = {};
   found_late_.clear();
   course_build(k);
   stats_.candidates = grid_.pairs().size();
   // Past this many bodies out of their boxes (a crowded or overlapping
   // start), rebuilding at the current positions is cheaper than querying on.
-  rebuild_after_ = std::max<std::size_t>(256, entities_.size() / 4);
+  rebuild_after_ = std::max<std::size_t>(256, entities.size() / 4);
   next_ = moved_ = 0;
   last_ = ~PairKey{0};  // never a pair: i < j < 2^32 - 1
   started_ = false;
@@ -37,11 +37,11 @@ BroadPhase::CoursePairs BroadPhase::course_pairs(const Components& k, std::span<
 }
 
 void BroadPhase::course_build(const Components& k) {
-  const std::size_t n = entities_.size();
+  const std::size_t n = course_entities_.size();
   boxes_.resize(n);
   fixed_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const EntityId e = entities_[i];
+    const EntityId e = course_entities_[i];
     boxes_[i] = Aabb::around(k.position[e], k.box[e], course_margin);
     fixed_[i] = !std::isfinite(k.mass[e]);  // the same test as "two walls never collide"
   }
@@ -50,7 +50,7 @@ void BroadPhase::course_build(const Components& k) {
 }
 
 bool BroadPhase::refresh(const Components& k, std::uint32_t i, PairKey current) {
-  const EntityId e = entities_[i];
+  const EntityId e = course_entities_[i];
   if (boxes_[i].contains(k.position[e], k.box[e])) return false;
   // Pushed out of its box: the pairs found when the pass began may no longer
   // hold all of its contacts. Give it a new box and queue the pairs it may
@@ -70,20 +70,20 @@ bool BroadPhase::refresh(const Components& k, std::uint32_t i, PairKey current) 
   return true;
 }
 
-bool BroadPhase::course_next(const Components& k, Pair& out) {
-  if (started_) {
-    // The pair handed out last may have been corrected: bodies it pushed out
-    // of their boxes get their new pairs (a pair left alone moved nothing).
-    moved_ += refresh(k, pair_first(last_), last_) + refresh(k, pair_second(last_), last_);
-    if (moved_ > rebuild_after_) {
-      course_build(k);
-      const std::vector<PairKey>& rebuilt = grid_.pairs();
-      next_ = static_cast<std::size_t>(std::upper_bound(rebuilt.begin(), rebuilt.end(), last_) - rebuilt.begin());
-      found_late_.clear();
-      moved_ = 0;
-      ++stats_.rebuilds;
-    }
-  }
+void BroadPhase::pushed_out(const Components& k) {
+  // The pair handed out last was corrected: bodies it pushed out of their
+  // boxes get their new pairs.
+  moved_ += refresh(k, pair_first(last_), last_) + refresh(k, pair_second(last_), last_);
+  if (moved_ <= rebuild_after_) return;
+  course_build(k);
+  const std::vector<PairKey>& rebuilt = grid_.pairs();
+  next_ = static_cast<std::size_t>(std::upper_bound(rebuilt.begin(), rebuilt.end(), last_) - rebuilt.begin());
+  found_late_.clear();
+  moved_ = 0;
+  ++stats_.rebuilds;
+}
+
+bool BroadPhase::course_next_slow(Pair& out) {
   for (;;) {
     const std::vector<PairKey>& listed = grid_.pairs();
     const bool in_list = next_ < listed.size();
@@ -99,7 +99,7 @@ bool BroadPhase::course_next(const Components& k, Pair& out) {
     if (key == last_) continue;  // found both when the pass began and later
     last_ = key;
     started_ = true;
-    out = {entities_[pair_first(key)], entities_[pair_second(key)]};
+    out = {course_entities_[pair_first(key)], course_entities_[pair_second(key)]};
     return true;
   }
 }

@@ -66,20 +66,29 @@ class BroadPhase {
   };
 
  private:
-  // The course pass.
+  // The course pass. course_next() is inline: it runs once per candidate
+  // pair, and most pairs leave both bodies in their boxes and take the next
+  // listed pair; the rest goes to course_next_slow().
   void course_build(const Components& k);
   bool course_next(const Components& k, Pair& out);
+  void pushed_out(const Components& k);  // the last pair's correction pushed a body out of its box
+  bool course_next_slow(Pair& out);     // the next pair, merging the list with the pairs found late
+  bool inside(const Components& k, std::uint32_t i) const {
+    const EntityId e = course_entities_[i];
+    return boxes_[i].contains(k.position[e], k.box[e]);
+  }
   bool refresh(const Components& k, std::uint32_t i, PairKey current);
   // find().
   void fat_rebuild(const Components& k, std::span<const EntityId> entities);
 
   UniformGrid grid_;
-  std::vector<EntityId> entities_;   // the bodies the grid was built on, in registration order
+  std::vector<EntityId> entities_;   // the bodies of find()'s fat grid, in registration order
   std::vector<std::uint8_t> fixed_;  // infinite mass, by registration rank
   std::vector<Aabb> boxes_;          // the grid's boxes, by registration rank
   bool fat_built_ = false;           // the grid holds find()'s fat boxes
 
   // Course pass state.
+  std::span<const EntityId> course_entities_;  // the Collision system's bodies, during its pass
   std::vector<PairKey> found_late_;  // min-heap: pairs found after a body left its box
   std::size_t next_ = 0, moved_ = 0, rebuild_after_ = 0;
   PairKey last_ = ~PairKey{0};
@@ -123,6 +132,20 @@ class BroadPhase::CoursePairs {
   BroadPhase* bp_;
   const Components* k_;
 };
+
+inline bool BroadPhase::course_next(const Components& k, Pair& out) {
+  if (started_ && !(inside(k, pair_first(last_)) && inside(k, pair_second(last_)))) pushed_out(k);
+  // The next listed pair, unless a pair found late comes first (or the list
+  // is done, or the pair was found late already).
+  const std::vector<PairKey>& listed = grid_.pairs();
+  if (next_ >= listed.size() || (!found_late_.empty() && found_late_.front() < listed[next_]) ||
+      listed[next_] == last_)
+    return course_next_slow(out);
+  last_ = listed[next_++];
+  started_ = true;
+  out = {course_entities_[pair_first(last_)], course_entities_[pair_second(last_)]};
+  return true;
+}
 
 // One-off versions (a fresh BroadPhase each call) and the all-pairs
 // definition, for the tests.
