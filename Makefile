@@ -96,7 +96,7 @@ run: deps
 
 test: deps
 	@$(MAKE) --no-print-directory layers $(BUILD)/tests $(BUILD)/game check-no-sdl
-	$(if $(filter 1,$(SANITIZE)),,@$(MAKE) --no-print-directory exercise-check)
+	$(if $(TEST_ARGS),,@$(MAKE) --no-print-directory exercise-check)
 	BOOST_TEST_COLOR_OUTPUT=no ./$(BUILD)/tests $(TEST_ARGS) 2>&1
 
 # Includes under src/ go one way (utils < components < engine/systems < entities < game < app), no cycle.
