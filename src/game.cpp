@@ -87,6 +87,8 @@ void step(World& w) {
   }
   ++w.times.steps;
   ++w.frame;
+  // Not part of the sheet: the engine's look at the state it left (engine/health.hpp).
+  w.times.time(Stage::health, [&] { w.check_health(); });
 }
 
 void draw(const World& w, Canvas& canvas) {

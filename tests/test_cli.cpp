@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <charconv>
 #include <filesystem>
 #include <fstream>
@@ -14,6 +15,8 @@
 #include "app/builtin_scenes.hpp"
 #include "app/cli.hpp"
 #include "app/dump.hpp"
+#include "app/headless.hpp"
+#include "entities/block.hpp"
 #include "helpers.hpp"
 #include "app/scene_json.hpp"
 
@@ -460,6 +463,55 @@ BOOST_AUTO_TEST_CASE(a_window_that_cannot_open_falls_back_to_headless) {
   BOOST_TEST(r.code == 0);
   BOOST_TEST(has(r.err, "running headless"), r.err);
   BOOST_TEST(has(r.out, "ran headless: window failed"));
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+// Physics health (engine/health.hpp): what cannot be checked up front is
+// checked after every step; escapes are counted; known limits are named.
+BOOST_AUTO_TEST_SUITE(cli_health)
+
+BOOST_AUTO_TEST_CASE(a_dt_below_the_floor_is_refused) {
+  expect_bad({"--headless", "--frames", "5", "--dt", "1e-320"}, "--dt: must be >= 1e-06 ms (got '1e-320')");
+}
+
+BOOST_AUTO_TEST_CASE(a_kick_that_overflows_is_refused_naming_the_block) {
+  TempDir d;
+  const auto f = d.file("m.json", R"({"blocks":[{"pos":[100,100],"size":[10,10],"mass":1e-300,"force":[1e6,0]}]})");
+  expect_bad({"--headless", "--scene", f}, "blocks[0].mass: with a mass of 1e-300");
+}
+
+BOOST_AUTO_TEST_CASE(a_non_finite_velocity_stops_the_run_naming_body_and_frame) {
+  World w(SystemSet{.forces = true, .move = true});
+  const auto b = Block::make(w, 100, 100, 10, 10, Game::red, 1.0);
+  Headless::run(w, 2);
+  w.components.velocity[b.id] = {std::nan(""), 0.0};
+  const auto s = Headless::run(w, 10);
+  BOOST_TEST(s.frames == 3);
+  BOOST_TEST(Headless::non_finite_line(w) == "body 0 has a non-finite position (nan, 100) after frame 3");
+}
+
+BOOST_AUTO_TEST_CASE(escapes_are_counted_and_strict_exits_3) {
+  TempDir d;
+  const auto f = d.file("e.json", R"({"world":{"walls":false},"blocks":[{"pos":[100,100],"size":[10,10],"mass":1,"velocity":[1,0]}]})");
+  const Ran r = cli({"--headless", "--scene", f, "--frames", "60"});
+  BOOST_TEST(r.code == 0);
+  BOOST_TEST(has(r.out, "escaped:         1 (the first: body 0, by frame 44)"), r.out);
+  BOOST_TEST(has(r.out, "--ccd on"));
+  const Ran s = cli({"--headless", "--scene", f, "--frames", "60", "--strict"});
+  BOOST_TEST(s.code == 3);
+  BOOST_TEST(has(s.err, "game: --strict: 1 body left the world"), s.err);
+}
+
+BOOST_AUTO_TEST_CASE(a_sinking_tower_names_the_stable_solver) {
+  TempDir d;
+  const auto f = d.file("t.json", R"({"world":{"gravity":[0,0.001],"restitution":0},
+    "blocks":[{"grid":{"pos":[380,160],"count":[1,10],"step":[0,40],"size":[40,40],"mass":1}}]})");
+  const Ran r = cli({"--headless", "--scene", f, "--frames", "600"});
+  BOOST_TEST(r.code == 0);
+  BOOST_TEST((has(r.out, "note:") && has(r.out, "--solver stable") && has(r.out, "docs/numerics.md")), r.out);
+  const Ran s = cli({"--headless", "--scene", f, "--frames", "600", "--solver", "stable"});
+  BOOST_TEST(!has(s.out, "note:"), s.out);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -90,6 +90,7 @@ po::options_description descriptions() {
        "write every frame as CSV: frame,id,x,y,w,h,vx,vy,mass (frame 0 = the initial state)")
       ("screenshot", po::value<std::string>()->value_name("FILE.png"),
        "save the last frame as PNG (window, or offscreen when headless); 60 frames unless --frames")
+      ("strict", "exit with code 3 when a body leaves the world (a non-finite value always does)")
       ("overlays", po::value<std::string>()->value_name("LIST"),
        "window overlays at start: aabb,velocity,contacts,help,nohud or all");
   return d;
@@ -108,8 +109,21 @@ int headless_run(const SceneSpec& spec, const std::vector<Body>& bodies, const O
   rec.start(w);
   const std::int64_t frames = o.frames.value_or(picture ? screenshot_frames : headless_frames);
   const auto summary = Headless::run(w, frames, [&](const World& world) { rec.after_step(world); });
+  if (!w.health.finite()) {
+    // No summary nor dump of a state that is not one (the trace keeps the
+    // frames before, which show how it came to this).
+    rec.abandon();
+    err << "game: " << Headless::non_finite_line(w) << "\n";
+    return 3;
+  }
   Headless::print_summary(out, w, summary, why, spec.name);
   rec.finish(w);
+  if (o.strict && w.health.escaped > 0) {
+    err << "game: --strict: " << w.health.escaped << " bod" << (w.health.escaped == 1 ? "y" : "ies")
+        << " left the world (the first: body " << w.health.first_escape->id << ", by frame "
+        << w.health.first_escape->frame << ")\n";
+    return 3;
+  }
   if (picture && !Offscreen::screenshot(w, spec.width, spec.height, o.screenshot)) {
     err << "game: --screenshot: cannot write " << o.screenshot << "\n";
     return 1;
@@ -124,7 +138,8 @@ std::string usage() {
   o << "usage: game [--scene NAME|FILE] [--headless] [--frames N] [options]\n"
        "  Runs a scene of the 2D physics engine in a window (the testbed; H lists its keys,\n"
        "  Esc quits), or headless with a summary when --headless is given or there is no display.\n"
-       "  Values given here override the scene's. Bad input exits with code 2.\n\n"
+       "  Values given here override the scene's. Bad input exits with code 2; a non-finite\n"
+       "  position or velocity stops the run with code 3 (also an escape, with --strict).\n\n"
     << descriptions()
     << "\nValues may follow the flag or an '=' (--gravity=0,-0.001 for a value starting with '-').\n";
   return o.str();
@@ -160,6 +175,7 @@ Options parse(std::span<const std::string> args) {
   o.list_scenes = has("list-scenes");
   o.print_scene = has("print-scene");
   o.headless = has("headless");
+  o.strict = has("strict");
   if (has("scene")) {
     o.scene = get("scene");
     if (o.scene.empty()) throw UsageError("--scene: needs a scene name or a file");
@@ -169,6 +185,7 @@ Options parse(std::span<const std::string> args) {
   if (has("dt")) {
     ov.dt = real("--dt", get("dt"));
     if (*ov.dt <= 0) bad("--dt", "must be > 0", get("dt"));
+    if (*ov.dt < min_dt) bad("--dt", "must be >= 1e-06 ms", get("dt"));
     if (*ov.dt > max_dt) bad("--dt", "must be <= 1000000 ms", get("dt"));
   }
   if (has("substeps")) ov.substeps = static_cast<int>(integer("--substeps", get("substeps"), 1, max_substeps));
@@ -244,6 +261,13 @@ void Recorder::after_step(const World& w) {
 }
 
 void Recorder::restart(const World& w) { after_step(w); }
+
+void Recorder::abandon() {
+  if (!dump_.is_open()) return;
+  dump_.close();
+  std::error_code ec;
+  std::filesystem::remove(dump_path_, ec);
+}
 
 void Recorder::finish(const World& w) {
   if (dump_.is_open()) {

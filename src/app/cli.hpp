@@ -28,6 +28,7 @@ inline constexpr std::int64_t screenshot_frames = 60;  // --screenshot without -
 
 struct Options {
   bool help = false, list_scenes = false, print_scene = false, headless = false;
+  bool strict = false;  // an escape exits with code 3
   std::string scene{"many"};
   std::optional<std::int64_t> frames;
   Overrides overrides;
@@ -58,6 +59,7 @@ class Recorder {
   void after_step(const World& w);  // trace: this frame
   void restart(const World& w);     // trace: a new world's frame 0 (testbed reset)
   void finish(const World& w);      // dump: the final state; throws std::runtime_error on I/O error
+  void abandon();                   // dump: removed, the run ended on a non-finite state
 
  private:
   std::string dump_path_, trace_path_;

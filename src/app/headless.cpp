@@ -15,7 +15,7 @@ namespace {
 // Whether the options of this world run stage s at all.
 bool runs(const World& w, Stage s) {
   switch (s) {
-    case Stage::forces: case Stage::move: case Stage::collision: return true;
+    case Stage::forces: case Stage::move: case Stage::collision: case Stage::health: return true;
     case Stage::ccd: return w.params.ccd;
     case Stage::pairs: return w.params.ccd || w.params.solver == Solver::stable;
     default: return w.params.solver == Solver::stable;
@@ -62,16 +62,48 @@ void print_summary(std::ostream& out, const World& w, const Summary& s, const st
     << "bodies:          " << s.bodies << " (" << s.mobile << " mobile)\n"
     << std::setprecision(9) << "kinetic energy:  " << s.ke_start << " after frame 1, " << s.ke_end << " at the end\n"
     << "momentum:        " << vec(s.p_start) << " after frame 1, " << vec(s.p_end) << " at the end\n"
+    << "escaped:         " << escape_line(w) << "\n"
     << std::setprecision(4) << "physics ms/step: " << w.times.total_ms_per_step() << " total, " << stage_times(w)
     << "\n";
+  if (const std::string a = advice(w); !a.empty()) o << "note:            " << a << "\n";
   out << o.str();
+}
+
+std::string non_finite_line(const World& w) {
+  if (w.health.finite()) return "";
+  const NonFinite& b = *w.health.non_finite;
+  std::ostringstream o;
+  o << "body " << b.id << " has a non-finite " << (b.velocity ? "velocity" : "position") << " (" << b.value.x << ", "
+    << b.value.y << ") after frame " << b.frame;
+  return o.str();
+}
+
+std::string escape_line(const World& w) {
+  const Health& h = w.health;
+  if (!h.first_escape) return std::to_string(h.escaped);
+  return std::to_string(h.escaped) + " (the first: body " + std::to_string(h.first_escape->id) + ", by frame " +
+         std::to_string(h.first_escape->frame) + ")";
+}
+
+std::string advice(const World& w) {
+  const Health& h = w.health;
+  std::string a;
+  if (h.deep && w.params.solver == Solver::course)
+    a = "overlaps deeper than 1 px persist (bodies " + std::to_string(h.deep->c) + " and " + std::to_string(h.deep->b) +
+        " after frame " + std::to_string(h.deep->frame) +
+        "): the course solver's one pass lets stacks sink; --solver stable holds them";
+  if (h.escaped > 0 && !w.params.ccd)
+    a += std::string(a.empty() ? "" : "; ") +
+         "bodies left the world: fast bodies tunnel through walls in one step; --ccd on stops that";
+  return a.empty() ? a : a + " (docs/numerics.md)";
 }
 
 std::string hud_line(const World& w, double fps) {
   const Vector p = w.momentum();
-  char buf[200];
-  std::snprintf(buf, sizeof buf, "%.0f fps  physics %.3f ms/step  %zu bodies  KE %.5g  p (%.4g, %.4g)", fps,
-                w.times.total_ms_per_step(), w.components.size(), w.kinetic_energy(), p.x, p.y);
+  char buf[240];
+  std::snprintf(buf, sizeof buf, "%.0f fps  physics %.3f ms/step  %zu bodies  KE %.5g  p (%.4g, %.4g)  escaped %lld",
+                fps, w.times.total_ms_per_step(), w.components.size(), w.kinetic_energy(), p.x, p.y,
+                static_cast<long long>(w.health.escaped));
   return buf;
 }
 

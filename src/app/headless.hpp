@@ -29,6 +29,15 @@ void print_summary(std::ostream& out, const World& w, const Summary& s, const st
 // left out; the engine's stages only when the options that run them are on.
 std::string stage_times(const World& w);
 
+// What the health check found (engine/health.hpp), for the summary, the HUD
+// and the command line: `non_finite_line` is the one-line error
+// ("body 7 has a non-finite velocity (nan, 0) after frame 3", empty if none);
+// `escape_line` is "0" or "2 (the first: body 12, by frame 40)"; `advice`
+// names the course solver's limit that was met and its option, or is empty.
+std::string non_finite_line(const World& w);
+std::string escape_line(const World& w);
+std::string advice(const World& w);
+
 // The HUD line: fps, physics ms/step, body count, kinetic energy, momentum.
 std::string hud_line(const World& w, double fps);
 
@@ -39,6 +48,7 @@ Summary run(World& w, std::int64_t frames, AfterStep&& after_step) {
   s.mobile = w.finite_bodies();
   for (std::int64_t f = 0; f < frames; ++f) {
     Game::step(w);
+    if (!w.health.finite()) break;  // nothing more to run, nor to record as a frame
     after_step(static_cast<const World&>(w));
     // Bodies start at rest with their first impulse pending in sum_forces;
     // the motion they start with is the one after the first frame.
@@ -47,7 +57,8 @@ Summary run(World& w, std::int64_t frames, AfterStep&& after_step) {
       s.p_start = w.momentum();
     }
   }
-  s.frames = frames;
+  s.frames = w.health.finite() ? frames : w.frame;
+  if (w.health.finite()) w.health.count_escapes(w.components, w.frame);  // the frames since the last count
   s.ke_end = w.kinetic_energy();
   s.p_end = w.momentum();
   return s;

@@ -2,6 +2,7 @@
 
 #include "game.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <sstream>
@@ -82,6 +83,21 @@ struct Checker {
       fail(at, "range [" + std::to_string(r.lo) + ", " + std::to_string(r.hi) + "] is empty (min > max)");
   }
 };
+
+// The velocity change of the first frame, force·dt/m + impulse/m, within
+// the motion limit (a mass of 1e-300 turned a force of 1e6 into inf).
+// `mass`: the smallest the entry can have; force and impulse: the largest.
+void check_kick(const Checker& k, double mass, double force, double impulse, double dt, At at) {
+  if (!std::isfinite(mass)) return;
+  const double dv = force * dt / mass + impulse / mass;
+  if (!(dv <= max_motion))
+    k.fail(at, "with a mass of " + num(mass) + " and dt " + num(dt) + " ms, force and impulse change the velocity by " +
+                   num(dv) + " px/ms on the first frame (at most " + num(max_motion) + ")");
+}
+double largest(Vector v) { return std::max(std::abs(v.x), std::abs(v.y)); }
+double largest(const VecSpec& v) {
+  return std::max({std::abs(v.x.lo), std::abs(v.x.hi), std::abs(v.y.lo), std::abs(v.y.hi)});
+}
 
 void check_block(const Checker& k, const BlockSpec& b, const std::string& p) {
   k.finite(b.pos, At{p, ".pos"});
@@ -262,6 +278,7 @@ void validate(const SceneSpec& s, const std::string& source) {
   const Params& p = s.params;
   if (!std::isfinite(p.dt)) k.fail("world.dt", "must be a finite number (got " + num(p.dt) + ")");
   if (p.dt <= 0.0) k.fail("world.dt", "must be > 0 (got " + num(p.dt) + ")");
+  if (p.dt < min_dt) k.fail("world.dt", "must be >= " + num(min_dt) + " ms (got " + num(p.dt) + ")");
   if (p.substeps < 1 || p.substeps > max_substeps)
     k.fail("world.substeps",
            "must be in [1, " + std::to_string(max_substeps) + "] (got " + std::to_string(p.substeps) + ")");
@@ -276,15 +293,22 @@ void validate(const SceneSpec& s, const std::string& source) {
   for (std::size_t i = 0; i < s.blocks.size(); ++i) {
     const std::string path = entry_path(i);
     const BlockEntry& e = s.blocks[i];
-    if (const auto* b = std::get_if<BlockSpec>(&e)) check_block(k, *b, path);
+    if (const auto* b = std::get_if<BlockSpec>(&e)) {
+      check_block(k, *b, path);
+      check_kick(k, b->mass, largest(b->force), largest(b->impulse), p.dt, At{path, ".mass"});
+    }
     if (const auto* g = std::get_if<GridSpec>(&e)) {
       check_block(k, g->first, path + ".grid");
+      check_kick(k, g->first.mass, largest(g->first.force), largest(g->first.impulse), p.dt, At{path, ".grid.mass"});
       if (g->columns < 1 || g->rows < 1)
         k.fail(path + ".grid.count", "must be >= 1 each (got [" + std::to_string(g->columns) + ", " +
                                          std::to_string(g->rows) + "])");
       k.finite(g->step, At{path, ".grid.step"});
     }
-    if (const auto* r = std::get_if<RandomSpec>(&e)) check_random(k, *r, path + ".random");
+    if (const auto* r = std::get_if<RandomSpec>(&e)) {
+      check_random(k, *r, path + ".random");
+      check_kick(k, r->mass.lo, largest(r->force), largest(r->impulse), p.dt, At{path, ".random.mass"});
+    }
   }
 }
 
@@ -313,6 +337,8 @@ std::vector<Body> expand(const SceneSpec& s, const std::string& source) {
 void populate(World& w, const SceneSpec& s, const std::vector<Body>& bodies) {
   w.components.reserve(w.components.size() + bodies.size() + (s.walls ? 4 : 0));
   if (s.walls) Game::init_walls(w, s.width, s.height, s.restitution);
+  const double t = s.walls ? wall_thickness : 0.0;
+  w.health.watch(t, t, s.width - t, s.height - t, static_cast<EntityId>(w.components.size()));
   for (const Body& b : bodies) {
     const auto e = Block::make(w, b.pos.x, b.pos.y, b.width, b.height, b.color, b.mass, b.restitution);
     w.components.velocity[e.id] = b.velocity;

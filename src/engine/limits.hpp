@@ -18,5 +18,8 @@ inline constexpr int max_substeps = 1000;
 inline constexpr int max_iterations = 1000;
 inline constexpr double max_motion = 1e6;  // |velocity|, |force|, |impulse|, |gravity| per axis
 inline constexpr double max_dt = 1e6;      // ms
+// The smallest dt: below it, impulse/dt (the first frame's force) and the
+// Forces' divisions overflow or lose all precision (--dt 1e-320 gave NaN).
+inline constexpr double min_dt = 1e-6;     // ms
 
 }  // namespace physics

@@ -7,8 +7,8 @@
 namespace physics {
 
 void validate(const Params& p) {
-  if (!std::isfinite(p.dt) || p.dt <= 0.0 || p.dt > max_dt)
-    throw std::invalid_argument("dt must be a finite number in (0, 1e6] ms (got " + std::to_string(p.dt) + ")");
+  if (!std::isfinite(p.dt) || p.dt < min_dt || p.dt > max_dt)
+    throw std::invalid_argument("dt must be a finite number in [1e-6, 1e6] ms (got " + std::to_string(p.dt) + ")");
   if (p.substeps < 1 || p.substeps > max_substeps)
     throw std::invalid_argument("substeps must be in [1, 1000] (got " + std::to_string(p.substeps) + ")");
   if (p.iterations < 1 || p.iterations > max_iterations)
@@ -20,7 +20,7 @@ void validate(const Params& p) {
 std::string_view name(Stage s) {
   static constexpr std::string_view names[stage_count] = {
       "forces", "move", "collision", "pairs", "ccd", "prepare", "warm_start", "relax", "restitution", "impact_time",
-      "store", "positions"};
+      "store", "positions", "health"};
   return names[static_cast<std::size_t>(s)];
 }
 
@@ -57,6 +57,32 @@ void World::after_move() {
   if (!systems.collision || params.solver != Solver::stable) return;
   contact_solver.solve_positions(components, systems.collision->entities(), params.gravity, solver_settings(params),
                                  broadphase, times);
+}
+
+void World::check_health() {
+  health.check_bodies(components, frame);
+  if (!health.finite() || health.deep || frame % Health::overlap_period != 0) return;
+  if (!systems.collision || params.solver != Solver::course) return;
+  // The deepest overlap of the last look, if still deeper than 1 px, is a
+  // persistent one; then look for the deepest overlap now.
+  if (health.suspect) {
+    const auto [c, b] = *health.suspect;
+    const double d = overlap_depth(components, c, b);
+    if (d > Health::deep_overlap) {
+      health.deep = DeepOverlap{c, b, d, frame};
+      return;
+    }
+  }
+  health.suspect.reset();
+  double deepest = Health::deep_overlap;
+  for (const Pair p : course_pairs()) {
+    if (!std::isfinite(components.mass[p.c]) && !std::isfinite(components.mass[p.b])) continue;
+    const double d = overlap_depth(components, p.c, p.b);
+    if (d > deepest) {
+      deepest = d;
+      health.suspect = std::pair{p.c, p.b};
+    }
+  }
 }
 
 BroadPhase::CoursePairs World::course_pairs() {

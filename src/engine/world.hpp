@@ -9,6 +9,7 @@
 #include "system_defs.hpp"
 #include "engine/ccd.hpp"
 #include "engine/contact_solver.hpp"
+#include "engine/health.hpp"
 #include "engine/limits.hpp"
 #include "engine/pairs.hpp"
 #include "engine/timing.hpp"
@@ -53,6 +54,8 @@ struct World {
   BroadPhase broadphase;
   Ccd ccd;
   ContactSolver contact_solver;
+  // What the checks after each step found (engine/health.hpp).
+  Health health;
 
   explicit World(SystemSet set = {}, Params p = {});
 
@@ -62,6 +65,9 @@ struct World {
   // position projection, which replaces the course's Collision pass.
   void before_move(double h);
   void after_move();
+  // The checks after a step (Game::step runs them, timed as Stage::health):
+  // non-finite values, escapes, persistent deep overlaps (course solver).
+  void check_health();
   // The pairs of the Collision system's bodies, for its pass.
   BroadPhase::CoursePairs course_pairs();
 

@@ -1,0 +1,63 @@
+#include "engine/health.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+#include "systems/collision.hpp"
+
+namespace physics {
+
+void Health::watch(double left, double top, double right, double bottom, EntityId first) {
+  bounded = true;
+  x0 = left, y0 = top, x1 = right, y1 = bottom;
+  first_body = first;
+}
+
+namespace {
+bool all_finite(Vector v) { return std::isfinite(v.x) && std::isfinite(v.y); }
+}  // namespace
+
+// Whether any of the n doubles at d is inf or NaN: an integer max over the
+// exponent bits (all ones only for inf and NaN), which the compiler vectorises.
+bool any_non_finite(const double* d, std::size_t n) {
+  constexpr std::uint64_t exponent = 0x7ff0000000000000u;
+  std::uint64_t m = 0;
+  for (std::size_t i = 0; i < n; ++i) m = std::max(m, std::bit_cast<std::uint64_t>(d[i]) & exponent);
+  return m == exponent;
+}
+
+void Health::check_bodies(const Components& c, std::int64_t frame) {
+  if (non_finite) return;
+  const std::size_t n = c.size();
+  static_assert(sizeof(Vector) == 2 * sizeof(double));
+  const bool bad = any_non_finite(&c.position.data()->x, 2 * n) || any_non_finite(&c.velocity.data()->x, 2 * n);
+  for (std::size_t e = 0; bad && e < n; ++e) {
+    const Vector p = c.position[e], v = c.velocity[e];
+    if (all_finite(p) && all_finite(v)) continue;
+    const auto id = static_cast<EntityId>(e);
+    non_finite = all_finite(p) ? NonFinite{id, true, v, frame} : NonFinite{id, false, p, frame};
+    return;
+  }
+  if (bounded && frame % escape_period == 0) count_escapes(c, frame);
+}
+
+void Health::count_escapes(const Components& c, std::int64_t frame) {
+  const std::size_t n = c.size();
+  if (out_.size() < n) out_.resize(n, 0);
+  for (std::size_t e = first_body; e < n; ++e) {
+    const double cx = c.position[e].x + c.box[e].width * 0.5, cy = c.position[e].y + c.box[e].height * 0.5;
+    if (((cx < x0) | (cx > x1) | (cy < y0) | (cy > y1)) == 0 || out_[e]) continue;
+    out_[e] = 1;
+    if (escaped++ == 0) first_escape = Escape{static_cast<EntityId>(e), frame};
+  }
+}
+
+double overlap_depth(const Components& k, EntityId c, EntityId b) {
+  const auto [s_pos, s] = Rect::mdiff(k.position[c], k.box[c], k.position[b], k.box[b]);
+  if (!Rect::has_origin(s_pos, s)) return 0.0;
+  const Vector pen = Collision::penetration(s_pos, s);
+  return std::abs(pen.x) + std::abs(pen.y);  // one of them is 0
+}
+
+}  // namespace physics

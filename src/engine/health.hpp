@@ -1,0 +1,73 @@
+// Physics health: after every step (Game::step, timed as Stage::health), a
+// cheap O(n) pass checks that every position and velocity is finite and
+// counts the bodies that left the world; every `overlap_period` frames, the
+// course solver's one known failure is looked for: an overlap deeper than
+// `deep_overlap` px that is still there a period later (a stack sinking).
+// The application reports what it finds (app/headless.cpp, app/testbed.cpp,
+// app/cli.cpp: exit code 3); the check itself changes nothing in the world.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "component_defs.hpp"
+
+namespace physics {
+
+struct NonFinite {
+  EntityId id = 0;
+  bool velocity = false;  // else the position
+  Vector value{};
+  std::int64_t frame = 0;  // after which it was found (1 = the first frame)
+};
+
+struct Escape {
+  EntityId id = 0;
+  std::int64_t frame = 0;
+};
+
+struct DeepOverlap {
+  EntityId c = 0, b = 0;
+  double depth = 0.0;  // px, |penetration| at the second look
+  std::int64_t frame = 0;
+};
+
+struct Health {
+  // Frames between two looks: escapes are counted every escape_period frames
+  // (and at the frame a run stops), overlaps looked at every overlap_period,
+  // which keeps the check near 1 % of a gas step (bench: gas10k.json).
+  static constexpr std::int64_t escape_period = 4;
+  static constexpr std::int64_t overlap_period = 60;
+  static constexpr double deep_overlap = 1.0;         // px
+
+  // The inside of the world (the walls' inside, else the scene's bounds),
+  // set by populate(); bodies from `first_body` on are watched (not the walls).
+  bool bounded = false;
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  EntityId first_body = 0;
+
+  std::optional<NonFinite> non_finite;  // the first; the world is not to be stepped again
+  std::int64_t escaped = 0;             // bodies whose centre left the inside, each counted once
+  std::optional<Escape> first_escape;
+  std::optional<DeepOverlap> deep;                // persistent deep overlap, the first seen
+  std::optional<std::pair<EntityId, EntityId>> suspect;  // deepest overlap of the last look
+
+  bool finite() const { return !non_finite; }
+  void watch(double left, double top, double right, double bottom, EntityId first);
+
+  // The O(n) pass over the components after frame `frame`: the first
+  // non-finite body (then nothing else is checked), and new escapes.
+  void check_bodies(const Components& c, std::int64_t frame);
+  // Counts the bodies newly outside (check_bodies does every escape_period).
+  void count_escapes(const Components& c, std::int64_t frame);
+
+ private:
+  std::vector<std::uint8_t> out_;  // per body: already counted as escaped
+};
+
+// |penetration| of the boxes of c and b (the course's shortest vector), 0 if
+// they do not overlap.
+double overlap_depth(const Components& k, EntityId c, EntityId b);
+
+}  // namespace physics
