@@ -148,12 +148,17 @@ Testbed::Action Testbed::handle(const InputEvent& e) {
   return Action::none;
 }
 
-std::vector<std::string> Testbed::key_list() {
+std::vector<std::string> Testbed::key_list(std::size_t scene_count) {
+  // The digits that choose a scene: 1-8 for the built-ins, 9 for a scene
+  // file given with --scene (it joins the list as the ninth).
+  const std::size_t n = std::clamp<std::size_t>(scene_count, 1, 9);
+  std::string digits = n == 1 ? "1      " : "1-" + std::to_string(n) + "    ";
   return {"Space  pause / resume",
           "N, ->  one step",
           "R      reset the scene",
-          "1-9    choose a scene, Tab: next scene",
-          "click  spawn a block; drag: fling it (slingshot)",
+          digits + (n == 9 ? "scene (9: the --scene file); Tab: next" : "choose a scene, Tab: next scene"),
+          "click  spawn a block",
+          "drag   slingshot: it flies opposite to the drag",
           "A      AABBs",
           "V      velocity vectors",
           "C      contact normals and penetration vectors",
@@ -181,7 +186,7 @@ View Testbed::view(double fps, double draw_ms) const {
     v.hud.push_back("ms/step: " + Headless::stage_times(world_) + (world_.systems.draw ? draw : "  draw off"));
     if (!message_.empty()) v.hud.push_back(message_);
   }
-  if (overlays_.help) v.help = key_list();
+  if (overlays_.help) v.help = key_list(scenes_.size());
   return v;
 }
 

@@ -4,8 +4,8 @@
 // everything here is tested without a window (tests/test_testbed.cpp).
 //
 //   Space        pause / resume            N or →   one step (and pause)
-//   R            reset the scene           1-9      scene 1-9; Tab: next scene
-//   left click   spawn a block             left drag  fling it (slingshot)
+//   R            reset the scene           1-9      scene 1-8, 9: a --scene file; Tab: next
+//   left click   spawn a block             left drag  fling it opposite to the drag (slingshot)
 //   A  AABBs     V  velocity vectors       C  contact normals and penetrations
 //   I  HUD on/off    S  slow motion (x1/4)   H  this key list     Esc/Q  quit
 #pragma once
@@ -93,7 +93,8 @@ class Testbed {
   bool spawn(Vector centre, Vector v);
 
   View view(double fps, double draw_ms) const;
-  static std::vector<std::string> key_list();
+  // The H list; the digit line names as many scenes as there are (at most 9).
+  static std::vector<std::string> key_list(std::size_t scene_count);
 
   // Called after every physics step, and after a reset or a scene switch
   // with the new world (frame 0): the trace.
