@@ -1,5 +1,6 @@
 // The testbed's input handling without a window: events in, world changes out.
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "app/builtin_scenes.hpp"
@@ -68,7 +69,9 @@ BOOST_AUTO_TEST_CASE(r_resets_the_scene) {
   Testbed tb = on("many");
   const auto start = tb.world().components.position;
   for (int i = 0; i < 30; ++i) tb.step();
-  tb.spawn({400, 300}, {});
+  bool spawned = false;  // somewhere free of the moving squares
+  for (int x = 100; x < 700 && !spawned; x += 40)
+    for (int y = 100; y < 500 && !spawned; y += 40) spawned = tb.spawn({double(x), double(y)}, {});
   BOOST_TEST(tb.world().components.size() == 16u);
   tb.handle(press('r'));
   BOOST_TEST(tb.world().frame == 0);
@@ -154,6 +157,31 @@ BOOST_AUTO_TEST_CASE(no_block_is_spawned_in_a_wall) {
   tb.handle({InputEvent::Kind::mouse_down, 0, 400, 300, 3});
   tb.handle({InputEvent::Kind::mouse_up, 0, 400, 300, 3});
   BOOST_TEST(tb.world().components.size() == n);
+}
+
+// A click inside a body is refused like one on a wall; the message fades.
+BOOST_AUTO_TEST_CASE(no_block_is_spawned_into_a_body_and_the_message_fades) {
+  Testbed tb = on("stack");
+  const Components& c = tb.world().components;
+  const std::size_t n = c.size();
+  EntityId inside = n;
+  for (EntityId e = 0; e < n && inside == n; ++e)
+    if (std::isfinite(c.mass[e])) inside = e;
+  BOOST_REQUIRE(inside < n);
+  const Vector at = c.position[inside] + Vector{c.box[inside].width / 2.0, c.box[inside].height / 2.0};
+  const std::vector<Vector> before = c.position;
+  BOOST_TEST(!tb.spawn(at, {}));
+  BOOST_TEST(c.size() == n);
+  BOOST_TEST((c.position == before));
+  BOOST_TEST(tb.message() == "no room there: a block cannot overlap another body");
+  BOOST_TEST(tb.view(60, 0).hud.back() == tb.message());
+  tb.handle(press(key::space));  // fades in real time, paused or not
+  tb.advance(Testbed::message_ms / 2);
+  BOOST_TEST(!tb.message().empty());
+  tb.advance(Testbed::message_ms / 2 + 1);
+  BOOST_TEST(tb.message().empty());
+  // Touching is no overlap: right on top of the first tower (its top at y = 360) is room.
+  BOOST_TEST(tb.spawn({220, 360 - Testbed::spawn_size / 2.0}, {}));
 }
 
 BOOST_AUTO_TEST_CASE(overlay_keys_toggle_and_contacts_are_recorded) {

@@ -34,7 +34,7 @@ void Testbed::rebuild() {
     world_ = make_world(with_overrides(scenes_[current_], overrides_), true, scenes_[current_].name);
     message_.clear();
   } catch (const SceneError& e) {
-    message_ = e.what();  // keep the world we have
+    say(e.what(), false);  // keep the world we have
   }
   if (world_.systems.collision) world_.systems.collision->record_contacts = overlays_.contacts;
   last_contacts_.clear();
@@ -62,7 +62,14 @@ void Testbed::step() {
   after_step();
 }
 
+void Testbed::say(std::string message, bool fades) {
+  message_ = std::move(message);
+  message_left_ms_ = fades ? message_ms : std::numeric_limits<double>::infinity();
+}
+
 int Testbed::advance(double elapsed_ms, std::int64_t last_frame) {
+  // A passing message fades after message_ms of real time, paused or not.
+  if (!message_.empty() && elapsed_ms > 0.0 && (message_left_ms_ -= elapsed_ms) <= 0.0) message_.clear();
   if (paused_ || !(elapsed_ms > 0.0)) return 0;
   const double dt = world_.params.dt;
   acc_ms_ = std::min(acc_ms_ + elapsed_ms * (slow_ ? slow_motion : 1.0), max_steps_per_frame * dt);
@@ -83,8 +90,18 @@ bool Testbed::spawn(Vector centre, Vector v) {
   const Vector pos{centre.x - half, centre.y - half};
   const double t = s.walls ? wall_thickness : 0.0;
   if (!(pos.x >= t && pos.y >= t && pos.x + spawn_size <= s.width - t && pos.y + spawn_size <= s.height - t)) {
-    message_ = s.walls ? "no room there: a block cannot overlap the walls" : "no room there: outside the world";
+    say(s.walls ? "no room there: a block cannot overlap the walls" : "no room there: outside the world", true);
     return false;
+  }
+  // Nor into a body (a tower would explode): one scan per click.
+  const Components& c = world_.components;
+  for (std::size_t e = 0; e < c.size(); ++e) {
+    const Vector q = c.position[e];
+    if (pos.x < q.x + c.box[e].width && q.x < pos.x + spawn_size && pos.y < q.y + c.box[e].height &&
+        q.y < pos.y + spawn_size) {
+      say("no room there: a block cannot overlap another body", true);
+      return false;
+    }
   }
   const auto b = Block::make(world_, pos.x, pos.y, spawn_size, spawn_size, spawn_color, spawn_mass,
                              with_overrides(s, overrides_).restitution);

@@ -60,6 +60,7 @@ class Testbed {
   static constexpr double fling_scale = 0.005;  // px/ms of velocity per px of drag
   static constexpr double max_fling = 2.0;      // px/ms: below a wall's 40 px per frame
   static constexpr int click_radius = 4;        // px: a shorter drag is a click
+  static constexpr double message_ms = 2000.0;  // real ms a "no room there" stays on the HUD
 
   // `scenes` is the list keys 1-9 and Tab walk through; `overrides` (the
   // command line's values) apply to each of them. Throws SceneError if the
@@ -89,7 +90,8 @@ class Testbed {
   const std::string& message() const { return message_; }
 
   // Spawns a block centred on (x, y) with velocity v, unless it would
-  // overlap a wall or leave the world. Returns whether it did.
+  // overlap a wall or another body or leave the world (then a message says
+  // "no room there" for message_ms). Returns whether it did.
   bool spawn(Vector centre, Vector v);
 
   View view(double fps, double draw_ms) const;
@@ -103,6 +105,8 @@ class Testbed {
  private:
   void rebuild();
   void after_step();
+  // Shows `message` on the HUD; a passing one (`fades`) for message_ms.
+  void say(std::string message, bool fades);
 
   std::vector<SceneSpec> scenes_;
   std::size_t current_;
@@ -115,6 +119,7 @@ class Testbed {
   Vector mouse_{};
   std::vector<Contact> last_contacts_;
   std::string message_;
+  double message_left_ms_ = 0.0;
 };
 
 }  // namespace physics
