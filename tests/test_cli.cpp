@@ -319,6 +319,21 @@ BOOST_AUTO_TEST_CASE(a_scene_file_is_validated_once) {
   }
 }
 
+// Overlapping blocks in a file are legitimate: the run goes on, with one
+// warning line naming the first pair.
+BOOST_AUTO_TEST_CASE(overlapping_blocks_in_a_file_get_one_warning) {
+  TempDir dir;
+  const auto file = dir.file("ov.json", R"({"blocks": [{"pos": [100, 100], "size": [20, 20], "mass": 1},
+                                                     {"pos": [300, 100], "size": [20, 20], "mass": 1},
+                                                     {"pos": [110, 105], "size": [20, 20], "mass": 1},
+                                                     {"pos": [115, 105], "size": [20, 20], "mass": 1}]})");
+  const Ran r = cli({"--scene", file, "--headless", "--frames", "1"});
+  BOOST_TEST(r.code == 0);
+  BOOST_TEST(r.err == "warning: " + file + ": blocks[0] and blocks[2] overlap at the start\n");
+  BOOST_TEST(has(r.out, "frames:          1"));
+  BOOST_TEST(cli({"--scene", "stack", "--headless", "--frames", "1"}).err.empty());
+}
+
 BOOST_AUTO_TEST_CASE(unknown_scene) {
   expect_bad({"--scene", "nope"}, "unknown scene 'nope' (built-in scenes: walls, drift, impulse, bounce, many,");
 }

@@ -475,3 +475,73 @@ BOOST_AUTO_TEST_CASE(the_offscreen_picture_paints_the_drawn_blocks) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+// Overlapping starts are warned about, not refused: the first pair found
+// equals the all-pairs answer (whether any pair overlaps), in O(n log n).
+BOOST_AUTO_TEST_SUITE(scene_overlaps)
+
+namespace {
+Body box(double x, double y, int w, int h) {
+  Body b;
+  b.pos = {x, y};
+  b.width = w;
+  b.height = h;
+  return b;
+}
+bool overlap(const Body& a, const Body& b) {
+  return a.pos.x < b.pos.x + b.width && b.pos.x < a.pos.x + a.width && a.pos.y < b.pos.y + b.height &&
+         b.pos.y < a.pos.y + a.height;
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(touching_is_no_overlap) {
+  BOOST_TEST(!first_overlap({box(0, 0, 10, 10), box(10, 0, 10, 10), box(0, 10, 10, 10), box(10, 10, 5, 5)}));
+  const auto o = first_overlap({box(0, 0, 10, 10), box(50, 0, 10, 10), box(9, 9, 2, 2)});
+  BOOST_REQUIRE(o.has_value());
+  BOOST_TEST(o->first == 0u);
+  BOOST_TEST(o->second == 2u);
+  BOOST_TEST(first_overlap({box(0, 0, 10, 10), box(0, 0, 10, 10)}).has_value());  // the same box twice
+}
+
+BOOST_AUTO_TEST_CASE(the_sweep_agrees_with_all_pairs) {
+  Random rng(7);
+  for (int trial = 0; trial < 300; ++trial) {
+    std::vector<Body> bodies;
+    const int n = rng.uniform_int(0, 12);
+    for (int i = 0; i < n; ++i)
+      bodies.push_back(box(rng.uniform_int(0, 60), rng.uniform_int(0, 60), rng.uniform_int(1, 12), rng.uniform_int(1, 12)));
+    bool any = false;
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+      for (std::size_t j = i + 1; j < bodies.size(); ++j) any = any || overlap(bodies[i], bodies[j]);
+    const auto o = first_overlap(bodies);
+    BOOST_TEST(o.has_value() == any, "trial " << trial);
+    if (o) BOOST_TEST((o->first < o->second && overlap(bodies[o->first], bodies[o->second])));
+  }
+}
+
+BOOST_AUTO_TEST_CASE(a_100000_body_grid_is_checked_quickly) {
+  std::vector<Body> bodies;
+  for (int i = 0; i < 100000; ++i) bodies.push_back(box(i % 316 * 4.0, i / 316 * 4.0, 4, 4));  // touching
+  BOOST_TEST(!first_overlap(bodies));  // quadratic would be 5e9 checks
+  bodies.push_back(box(2, 2, 4, 4));
+  BOOST_TEST(first_overlap(bodies).has_value());
+}
+
+BOOST_AUTO_TEST_CASE(the_warning_names_the_two_blocks) {
+  SceneSpec s;
+  BlockSpec a;
+  a.pos = {100, 100};
+  a.width = a.height = 20;
+  a.mass = 1;
+  BlockSpec b = a;
+  b.pos = {300, 300};
+  BlockSpec c = a;
+  c.pos = {110, 110};
+  s.blocks = {a, b, c};
+  BOOST_TEST(overlap_warning(s, expand(s, "x.json"), "x.json") ==
+             "warning: x.json: blocks[0] and blocks[2] overlap at the start");
+  s.blocks.pop_back();
+  BOOST_TEST(overlap_warning(s, expand(s, "x.json"), "x.json").empty());
+}
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -293,6 +293,9 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err,
     spec = resolve_scene(o.scene);
     apply(spec, o.overrides);
     bodies = expand(spec, scene_source(o.scene));
+    // Legitimate, but easy to write by mistake in a file: one line.
+    if (!find_builtin(o.scene))
+      if (const std::string w = overlap_warning(spec, bodies, o.scene); !w.empty()) err << w << "\n";
   } catch (const SceneError& e) {
     err << "game: " << e.what() << "\n";
     return 2;
