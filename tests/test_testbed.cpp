@@ -222,6 +222,22 @@ BOOST_AUTO_TEST_CASE(hud_help_and_slow_motion) {
   BOOST_TEST(tb.advance(course_dt * 1.1) == 1);
 }
 
+// The HUD says how the world is solved and which overlays are on.
+BOOST_AUTO_TEST_CASE(the_hud_shows_the_solver_substeps_ccd_and_overlays) {
+  Testbed tb = on("many");
+  BOOST_TEST(tb.view(60, 0).hud[3] == "solver course  substeps 1  CCD off  overlays: none (A, V, C)");
+  tb.handle(press('a'));
+  tb.handle(press('c'));
+  BOOST_TEST(tb.view(60, 0).hud[3] == "solver course  substeps 1  CCD off  overlays: aabb (A), contacts (C)");
+  Overrides o;
+  o.solver = Solver::stable;
+  o.iterations = 12;
+  o.substeps = 4;
+  o.ccd = true;
+  Testbed st(all_scenes(), 0, o, Overlays{.velocity = true});
+  BOOST_TEST(st.view(60, 0).hud[3] == "solver stable (12 it.)  substeps 4  CCD on  overlays: velocity (V)");
+}
+
 BOOST_AUTO_TEST_CASE(the_hud_shows_no_time_for_a_left_out_system) {
   Testbed tb = on("drift");
   tb.step();

@@ -18,6 +18,18 @@ SceneSpec with_overrides(SceneSpec s, const Overrides& o) {
   return s;
 }
 
+// "solver stable (8 it.)  substeps 2  CCD on  overlays: aabb, contacts"
+std::string options_line(const Params& p, const Overlays& o) {
+  std::string s = p.solver == Solver::stable ? "solver stable (" + std::to_string(p.iterations) + " it.)"
+                                             : std::string("solver course");
+  s += "  substeps " + std::to_string(p.substeps) + "  CCD " + (p.ccd ? "on" : "off") + "  overlays: ";
+  std::string list;
+  for (const auto& [on, name] : {std::pair{o.aabb, "aabb (A)"}, {o.velocity, "velocity (V)"},
+                                 {o.contacts, "contacts (C)"}})
+    if (on) list += (list.empty() ? "" : ", ") + std::string(name);
+  return s + (list.empty() ? "none (A, V, C)" : list);
+}
+
 }  // namespace
 
 Testbed::Testbed(std::vector<SceneSpec> scenes, std::size_t current, Overrides overrides, Overlays overlays)
@@ -201,6 +213,7 @@ View Testbed::view(double fps, double draw_ms) const {
     char draw[64];
     std::snprintf(draw, sizeof draw, "  draw %.3f ms/frame", draw_ms);
     v.hud.push_back("ms/step: " + Headless::stage_times(world_) + (world_.systems.draw ? draw : "  draw off"));
+    v.hud.push_back(options_line(world_.params, overlays_));
     if (!message_.empty()) v.hud.push_back(message_);
   }
   if (overlays_.help) v.help = key_list(scenes_.size());
