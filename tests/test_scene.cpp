@@ -1,6 +1,7 @@
 // Scenes as data: the built-in scenes declare their systems, generators,
 // command-line overrides, placement checks.
 #include <algorithm>
+#include <cmath>
 #include <set>
 #include <sstream>
 
@@ -468,6 +469,16 @@ BOOST_AUTO_TEST_CASE(the_offscreen_picture_paints_the_drawn_blocks) {
   BOOST_TEST((px(120, 120) == Color{255, 0, 0, 255}));       // the red block
   BOOST_TEST((px(340, 310) == default_block_color));         // the platform
   BOOST_TEST((px(400, 200) == Color{255, 255, 255, 255}));   // background
+  // Each block has a darker 1 px outline inside its box: touching blocks of
+  // one colour read as separate blocks.
+  const Components& c = w.components;
+  for (EntityId e = 4; e < c.size(); ++e) {
+    const int x = static_cast<int>(std::lround(c.position[e].x)), y = static_cast<int>(std::lround(c.position[e].y));
+    BOOST_TEST((px(x, y) == outline_color(c.color[e])));
+    BOOST_TEST((px(x + c.box[e].width - 1, y + c.box[e].height / 2) == outline_color(c.color[e])));
+    BOOST_TEST((px(x + 1, y + 1) == c.color[e]));
+  }
+  BOOST_TEST((outline_color(Color{255, 0, 0, 255}) == Color{140, 0, 0, 255}));
   // Without Draw (a headless world) nothing is drawn.
   const World h = make_world(builtin("bounce"), false);
   const auto blank = Offscreen::render(h, 800, 600);
