@@ -556,3 +556,26 @@ BOOST_AUTO_TEST_CASE(the_warning_names_the_two_blocks) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+// Random colours keep away from the walls' blue and black (a square of
+// `many` used to come out wall-blue, another near-black).
+BOOST_AUTO_TEST_CASE(random_colours_keep_away_from_the_walls) {
+  const auto dist2 = [](Color a, Color b) {
+    const auto d = [](int x, int y) { return (x - y) * (x - y); };
+    return d(a.r, b.r) + d(a.g, b.g) + d(a.b, b.b);
+  };
+  std::size_t checked = 0;
+  for (const char* name : {"many", "gas"})
+    for (std::uint64_t seed = 0; seed < 40; ++seed) {
+      SceneSpec s = builtin(name);
+      Overrides o;
+      o.seed = seed;
+      apply(s, o);
+      for (const Body& b : expand(s, name)) {
+        BOOST_TEST(dist2(b.color, Game::wall_blue) >= min_wall_color_distance * min_wall_color_distance);
+        BOOST_TEST(dist2(b.color, Game::wall_black) >= min_wall_color_distance * min_wall_color_distance);
+        ++checked;
+      }
+    }
+  BOOST_TEST(checked > 10000u);
+}
