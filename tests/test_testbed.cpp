@@ -200,6 +200,23 @@ BOOST_AUTO_TEST_CASE(overlay_keys_toggle_and_contacts_are_recorded) {
   BOOST_TEST_REQUIRE(!v.contacts.empty());
   BOOST_TEST(std::abs(v.contacts[0].normal.x) == 1.0);
   BOOST_TEST(v.contacts[0].normal.y == 0.0);
+  // Each one drawn where its bodies meet now: on the edge they share.
+  BOOST_TEST_REQUIRE(v.contact_regions.size() == v.contacts.size());
+  const Components& c = tb.world().components;
+  for (std::size_t i = 0; i < v.contacts.size(); ++i) {
+    const ContactRegion r = v.contact_regions[i];
+    for (const EntityId e : {v.contacts[i].c, v.contacts[i].b}) {
+      BOOST_TEST(r.lo.x >= c.position[e].x);
+      BOOST_TEST(r.hi.x <= c.position[e].x + c.box[e].width);
+      BOOST_TEST(r.lo.y >= c.position[e].y);
+      BOOST_TEST(r.hi.y <= c.position[e].y + c.box[e].height);
+    }
+    BOOST_TEST((r.lo.x == r.hi.x || r.lo.y == r.hi.y));  // touching: a segment
+  }
+  // A step without contacts shows none: nothing is left behind.
+  for (int i = 0; i < 200 && !tb.view(60, 0).contacts.empty(); ++i) tb.step();
+  BOOST_TEST(tb.view(60, 0).contacts.empty());
+  BOOST_TEST(tb.view(60, 0).contact_regions.empty());
   tb.handle(press('C'));  // upper case works too
   BOOST_TEST(!tb.overlays().contacts);
   BOOST_TEST(tb.view(60, 0).contacts.empty());

@@ -50,6 +50,7 @@ void Testbed::rebuild() {
   }
   if (world_.systems.collision) world_.systems.collision->record_contacts = overlays_.contacts;
   last_contacts_.clear();
+  last_regions_.clear();
   acc_ms_ = 0.0;
   press_.reset();
   if (on_reset) on_reset(world_);
@@ -64,8 +65,21 @@ void Testbed::select(std::size_t i) {
 }
 
 void Testbed::after_step() {
-  if (world_.systems.collision && overlays_.contacts && world_.systems.collision->contact_count() > 0)
+  // The contacts of this step only (none is none: no arrows left behind by
+  // bodies that have moved apart), placed where the bodies meet now.
+  last_contacts_.clear();
+  last_regions_.clear();
+  if (world_.systems.collision && overlays_.contacts) {
+    const Components& c = world_.components;
     last_contacts_ = world_.systems.collision->contacts();
+    for (const Contact& k : last_contacts_) {
+      const Vector a = c.position[k.c], b = c.position[k.b];
+      const Vector lo{std::max(a.x, b.x), std::max(a.y, b.y)};
+      const Vector hi{std::min(a.x + c.box[k.c].width, b.x + c.box[k.b].width),
+                      std::min(a.y + c.box[k.c].height, b.y + c.box[k.b].height)};
+      last_regions_.push_back({lo, hi});
+    }
+  }
   if (on_step) on_step(world_);
 }
 
@@ -165,7 +179,7 @@ Testbed::Action Testbed::handle(const InputEvent& e) {
     case 'c':
       overlays_.contacts = !overlays_.contacts;
       if (world_.systems.collision) world_.systems.collision->record_contacts = overlays_.contacts;
-      if (!overlays_.contacts) last_contacts_.clear();
+      if (!overlays_.contacts) last_contacts_.clear(), last_regions_.clear();
       break;
     case 'i': overlays_.hud = !overlays_.hud; break;
     case 's': slow_ = !slow_; break;
@@ -200,7 +214,7 @@ std::vector<std::string> Testbed::key_list(std::size_t scene_count) {
 View Testbed::view(double fps, double draw_ms) const {
   View v;
   v.overlays = overlays_;
-  if (overlays_.contacts) v.contacts = last_contacts_;
+  if (overlays_.contacts) v.contacts = last_contacts_, v.contact_regions = last_regions_;
   if (press_) v.sling = std::pair{*press_, mouse_};
   if (overlays_.hud) {
     const SceneSpec& s = scene();

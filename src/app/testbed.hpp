@@ -42,10 +42,19 @@ struct Overlays {
   bool aabb = false, velocity = false, contacts = false, hud = true, help = false;
 };
 
+// Where a contact of the last step is: the overlap of the two boxes' x and
+// y ranges right after the step (the correction leaves them touching, so a
+// segment of their shared edge), in world coordinates.
+struct ContactRegion {
+  Vector lo, hi;
+  Vector middle() const { return 0.5 * (lo + hi); }
+};
+
 // One frame's picture beyond the blocks themselves.
 struct View {
   Overlays overlays;
-  std::span<const Contact> contacts;  // the last collisions, if shown
+  std::span<const Contact> contacts;  // the last step's collisions (none if it had none), if shown
+  std::span<const ContactRegion> contact_regions;  // where each one is, in the same order
   std::optional<std::pair<Vector, Vector>> sling;  // drag: from the press point to the mouse
   std::vector<std::string> hud;   // lines, top left
   std::vector<std::string> help;  // the key list, when H is on
@@ -118,6 +127,7 @@ class Testbed {
   std::optional<Vector> press_;
   Vector mouse_{};
   std::vector<Contact> last_contacts_;
+  std::vector<ContactRegion> last_regions_;
   std::string message_;
   double message_left_ms_ = 0.0;
 };
