@@ -58,7 +58,7 @@ void reference_q9(World& w, std::uint64_t seed) {
                     static_cast<std::uint8_t>(rng.uniform_int(40, 220)), 255};
     const double x = 180 + 110 * (i % 5) + rng.uniform(0, 50);
     const double y = 220 + 150 * (i / 5) + rng.uniform(0, 80);
-    const auto b = Block::make(w, x, y, side, side, col, mass);
+    const auto b = Block::make(w, x, y, side, side, Game::away_from_walls(col), mass);
     w.components.sum_forces[b.id] = Vector::mult(1.0 / w.params.dt, impulse);
   }
 }
@@ -280,7 +280,10 @@ BOOST_AUTO_TEST_CASE(random_draws_only_what_is_a_range_and_depends_on_the_seed) 
   // The first draws: mass, colour (r, g, b), then the position.
   Random rng(42);
   BOOST_TEST(a[0].mass == rng.uniform(1, 2));
-  BOOST_TEST(int(a[0].color.r) == rng.uniform_int(40, 220));
+  Color col{};
+  for (std::uint8_t* ch : {&col.r, &col.g, &col.b}) *ch = static_cast<std::uint8_t>(rng.uniform_int(40, 220));
+  col.a = a[0].color.a;
+  BOOST_TEST((a[0].color == Game::away_from_walls(col)));
 }
 
 BOOST_AUTO_TEST_CASE(overrides_replace_the_scenes_values) {
@@ -572,8 +575,8 @@ BOOST_AUTO_TEST_CASE(random_colours_keep_away_from_the_walls) {
       o.seed = seed;
       apply(s, o);
       for (const Body& b : expand(s, name)) {
-        BOOST_TEST(dist2(b.color, Game::wall_blue) >= min_wall_color_distance * min_wall_color_distance);
-        BOOST_TEST(dist2(b.color, Game::wall_black) >= min_wall_color_distance * min_wall_color_distance);
+        BOOST_TEST(dist2(b.color, Game::wall_blue) >= Game::min_wall_color_distance * Game::min_wall_color_distance);
+        BOOST_TEST(dist2(b.color, Game::wall_black) >= Game::min_wall_color_distance * Game::min_wall_color_distance);
         ++checked;
       }
     }

@@ -173,19 +173,6 @@ Body body_of(const BlockSpec& b, double world_e, std::size_t entry, std::int64_t
               b.restitution.value_or(world_e), entry, index};
 }
 
-// A drawn colour too close to a wall's (blue, black) is mirrored in
-// [40, 220] (c -> 260 - c per channel): dark turns pale, blue turns yellow.
-// After the draw, so the generator consumes the same numbers.
-Color away_from_walls(Color c) {
-  const auto near = [&](Color w) {
-    const auto d = [](int a, int b) { return (a - b) * (a - b); };
-    return d(c.r, w.r) + d(c.g, w.g) + d(c.b, w.b) < min_wall_color_distance * min_wall_color_distance;
-  };
-  if (!near(Game::wall_blue) && !near(Game::wall_black)) return c;
-  const auto mirror = [](std::uint8_t v) { return static_cast<std::uint8_t>(260 - v); };
-  return {mirror(c.r), mirror(c.g), mirror(c.b), c.a};
-}
-
 void expand_random(const RandomSpec& r, double world_e, std::size_t entry, std::vector<Body>& out) {
   Random rng(r.seed);
   for (std::int64_t i = 0; i < r.count; ++i) {
@@ -210,7 +197,7 @@ void expand_random(const RandomSpec& r, double world_e, std::size_t entry, std::
       b.color.r = c();
       b.color.g = c();
       b.color.b = c();
-      b.color = away_from_walls(b.color);
+      b.color = Game::away_from_walls(b.color);
     }
     if (r.use_cells) {
       const auto col = static_cast<double>(i % r.columns), row = static_cast<double>(i / r.columns);

@@ -167,10 +167,6 @@ void validate(const SceneSpec& s, const std::string& source);
 // The scene's blocks in creation order, validated (see above).
 std::vector<Body> expand(const SceneSpec& s, const std::string& source);
 
-// Random scene colours (drawn in [40, 220] per channel) stay at least this
-// far (RGB distance) from the walls' blue and black.
-inline constexpr int min_wall_color_distance = 150;
-
 // Two blocks that overlap at the start (touching is no overlap), or none:
 // the first pair a sweep along x finds, indices into `bodies`, lower first.
 // Legitimate (the solver pushes them apart), so only warned about.
