@@ -66,7 +66,7 @@ void init_scene(World& w, std::uint64_t seed) {
     double x = 180.0 + 110.0 * (i % 5), y = 220.0 + 150.0 * (i / 5);
     x = x + rng.uniform(0.0, 50.0);
     y = y + rng.uniform(0.0, 80.0);
-    const Block::t b = Block::make(w, x, y, side, side, color, mass);
+    const Block::t b = Block::make(w, x, y, side, side, away_from_walls(color), mass);
     w.components.sum_forces[b.id] = Vector::mult(1.0 / w.params.dt, {jx, jy});
   }
   // Q9 end

@@ -18,6 +18,21 @@ inline constexpr Color wall_blue{0, 0, 255, 255};  // horizontal walls
 inline constexpr Color wall_black{0, 0, 0, 255};   // vertical walls
 inline constexpr Color red{255, 0, 0, 255};        // the block of questions 4, 5 and 9
 
+// Random colours (drawn in [40, 220] per channel) stay at least this far
+// (RGB distance) from the walls' blue and black: one too close is mirrored
+// in [40, 220] (c -> 260 - c per channel: dark turns pale, blue turns
+// yellow), after the draw, so the generator consumes the same numbers.
+inline constexpr int min_wall_color_distance = 150;
+inline Color away_from_walls(Color c) {
+  const auto near = [&](Color w) {
+    const auto d = [](int a, int b) { return (a - b) * (a - b); };
+    return d(c.r, w.r) + d(c.g, w.g) + d(c.b, w.b) < min_wall_color_distance * min_wall_color_distance;
+  };
+  if (!near(wall_blue) && !near(wall_black)) return c;
+  const auto mirror = [](std::uint8_t v) { return static_cast<std::uint8_t>(260 - v); };
+  return {mirror(c.r), mirror(c.g), mirror(c.b), c.a};
+}
+
 // Q1. Four walls of infinite mass on the edges of a width × height screen:
 // top and bottom blue and full width, left and right black and between them,
 // 40 px thick, not overlapping. Scenes with `walls: true` are built with it.

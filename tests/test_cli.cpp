@@ -190,6 +190,18 @@ BOOST_AUTO_TEST_CASE(command_line_values_override_the_scene) {
   BOOST_TEST(!parse_scene(off.out, "p.json").params.ccd);
 }
 
+// --frames 0 runs nothing: the summary says so instead of "after frame 1".
+BOOST_AUTO_TEST_CASE(zero_frames_says_no_frame_ran) {
+  const Ran r = cli({"--scene", "many", "--headless", "--frames", "0"});
+  BOOST_TEST(r.code == 0, r.err);
+  BOOST_TEST(has(r.out, "frames:          0 "), r.out);
+  BOOST_TEST(has(r.out, "kinetic energy:  0 (no frame ran)"), r.out);
+  BOOST_TEST(has(r.out, "(no frame ran)\nescaped:"), r.out);
+  BOOST_TEST(!has(r.out, "after frame 1"), r.out);
+  const Ran one = cli({"--scene", "many", "--headless", "--frames", "1"});
+  BOOST_TEST(has(one.out, "after frame 1"), one.out);
+}
+
 BOOST_AUTO_TEST_CASE(the_seed_changes_the_random_scene) {
   TempDir dir;
   const auto a = dir.file("a.csv"), b = dir.file("b.csv"), c = dir.file("c.csv");
@@ -310,6 +322,21 @@ BOOST_AUTO_TEST_CASE(a_scene_file_is_validated_once) {
   }
 }
 
+// Overlapping blocks in a file are legitimate: the run goes on, with one
+// warning line naming the first pair.
+BOOST_AUTO_TEST_CASE(overlapping_blocks_in_a_file_get_one_warning) {
+  TempDir dir;
+  const auto file = dir.file("ov.json", R"({"blocks": [{"pos": [100, 100], "size": [20, 20], "mass": 1},
+                                                     {"pos": [300, 100], "size": [20, 20], "mass": 1},
+                                                     {"pos": [110, 105], "size": [20, 20], "mass": 1},
+                                                     {"pos": [115, 105], "size": [20, 20], "mass": 1}]})");
+  const Ran r = cli({"--scene", file, "--headless", "--frames", "1"});
+  BOOST_TEST(r.code == 0);
+  BOOST_TEST(r.err == "warning: " + file + ": blocks[0] and blocks[2] overlap at the start\n");
+  BOOST_TEST(has(r.out, "frames:          1"));
+  BOOST_TEST(cli({"--scene", "stack", "--headless", "--frames", "1"}).err.empty());
+}
+
 BOOST_AUTO_TEST_CASE(unknown_scene) {
   expect_bad({"--scene", "nope"}, "unknown scene 'nope' (built-in scenes: walls, drift, impulse, bounce, many,");
 }
@@ -364,6 +391,9 @@ BOOST_AUTO_TEST_CASE(bad_values_on_the_command_line) {
   expect_bad({"--frames", "ten"}, "--frames");
   expect_bad({"--gravity", "0"}, "--gravity: must be two numbers X,Y (got '0')");
   expect_bad({"--gravity", "0,x"}, "--gravity");
+  expect_bad({"--gravity", "1,2,3"}, "--gravity: must be two numbers X,Y (got '1,2,3')");
+  expect_bad({"--screenshot", "x.jpg"}, "--screenshot: only PNG is written: the name must end in .png (got 'x.jpg')");
+  expect_bad({"--screenshot", "x"}, "--screenshot: only PNG is written");
   // Finite but beyond what a scene file accepts: the flag is named, not the scene.
   expect_bad({"--gravity", "1e7,0"}, "--gravity: must be within ±1000000 per axis (got '1e7,0')");
   expect_bad({"--dt", "1e7"}, "--dt: must be <= 1000000 ms (got '1e7')");

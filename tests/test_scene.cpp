@@ -1,6 +1,7 @@
 // Scenes as data: the built-in scenes declare their systems, generators,
 // command-line overrides, placement checks.
 #include <algorithm>
+#include <cmath>
 #include <set>
 #include <sstream>
 
@@ -57,7 +58,7 @@ void reference_q9(World& w, std::uint64_t seed) {
                     static_cast<std::uint8_t>(rng.uniform_int(40, 220)), 255};
     const double x = 180 + 110 * (i % 5) + rng.uniform(0, 50);
     const double y = 220 + 150 * (i / 5) + rng.uniform(0, 80);
-    const auto b = Block::make(w, x, y, side, side, col, mass);
+    const auto b = Block::make(w, x, y, side, side, Game::away_from_walls(col), mass);
     w.components.sum_forces[b.id] = Vector::mult(1.0 / w.params.dt, impulse);
   }
 }
@@ -279,7 +280,10 @@ BOOST_AUTO_TEST_CASE(random_draws_only_what_is_a_range_and_depends_on_the_seed) 
   // The first draws: mass, colour (r, g, b), then the position.
   Random rng(42);
   BOOST_TEST(a[0].mass == rng.uniform(1, 2));
-  BOOST_TEST(int(a[0].color.r) == rng.uniform_int(40, 220));
+  Color col{};
+  for (std::uint8_t* ch : {&col.r, &col.g, &col.b}) *ch = static_cast<std::uint8_t>(rng.uniform_int(40, 220));
+  col.a = a[0].color.a;
+  BOOST_TEST((a[0].color == Game::away_from_walls(col)));
 }
 
 BOOST_AUTO_TEST_CASE(overrides_replace_the_scenes_values) {
@@ -468,6 +472,16 @@ BOOST_AUTO_TEST_CASE(the_offscreen_picture_paints_the_drawn_blocks) {
   BOOST_TEST((px(120, 120) == Color{255, 0, 0, 255}));       // the red block
   BOOST_TEST((px(340, 310) == default_block_color));         // the platform
   BOOST_TEST((px(400, 200) == Color{255, 255, 255, 255}));   // background
+  // Each block has a darker 1 px outline inside its box: touching blocks of
+  // one colour read as separate blocks.
+  const Components& c = w.components;
+  for (EntityId e = 4; e < c.size(); ++e) {
+    const int x = static_cast<int>(std::lround(c.position[e].x)), y = static_cast<int>(std::lround(c.position[e].y));
+    BOOST_TEST((px(x, y) == outline_color(c.color[e])));
+    BOOST_TEST((px(x + c.box[e].width - 1, y + c.box[e].height / 2) == outline_color(c.color[e])));
+    BOOST_TEST((px(x + 1, y + 1) == c.color[e]));
+  }
+  BOOST_TEST((outline_color(Color{255, 0, 0, 255}) == Color{140, 0, 0, 255}));
   // Without Draw (a headless world) nothing is drawn.
   const World h = make_world(builtin("bounce"), false);
   const auto blank = Offscreen::render(h, 800, 600);
@@ -475,3 +489,96 @@ BOOST_AUTO_TEST_CASE(the_offscreen_picture_paints_the_drawn_blocks) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+// Overlapping starts are warned about, not refused: the first pair found
+// equals the all-pairs answer (whether any pair overlaps), in O(n log n).
+BOOST_AUTO_TEST_SUITE(scene_overlaps)
+
+namespace {
+Body box(double x, double y, int w, int h) {
+  Body b;
+  b.pos = {x, y};
+  b.width = w;
+  b.height = h;
+  return b;
+}
+bool overlap(const Body& a, const Body& b) {
+  return a.pos.x < b.pos.x + b.width && b.pos.x < a.pos.x + a.width && a.pos.y < b.pos.y + b.height &&
+         b.pos.y < a.pos.y + a.height;
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(touching_is_no_overlap) {
+  BOOST_TEST(!first_overlap({box(0, 0, 10, 10), box(10, 0, 10, 10), box(0, 10, 10, 10), box(10, 10, 5, 5)}));
+  const auto o = first_overlap({box(0, 0, 10, 10), box(50, 0, 10, 10), box(9, 9, 2, 2)});
+  BOOST_REQUIRE(o.has_value());
+  BOOST_TEST(o->first == 0u);
+  BOOST_TEST(o->second == 2u);
+  BOOST_TEST(first_overlap({box(0, 0, 10, 10), box(0, 0, 10, 10)}).has_value());  // the same box twice
+}
+
+BOOST_AUTO_TEST_CASE(the_sweep_agrees_with_all_pairs) {
+  Random rng(7);
+  for (int trial = 0; trial < 300; ++trial) {
+    std::vector<Body> bodies;
+    const int n = rng.uniform_int(0, 12);
+    for (int i = 0; i < n; ++i)
+      bodies.push_back(box(rng.uniform_int(0, 60), rng.uniform_int(0, 60), rng.uniform_int(1, 12), rng.uniform_int(1, 12)));
+    bool any = false;
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+      for (std::size_t j = i + 1; j < bodies.size(); ++j) any = any || overlap(bodies[i], bodies[j]);
+    const auto o = first_overlap(bodies);
+    BOOST_TEST(o.has_value() == any, "trial " << trial);
+    if (o) BOOST_TEST((o->first < o->second && overlap(bodies[o->first], bodies[o->second])));
+  }
+}
+
+BOOST_AUTO_TEST_CASE(a_100000_body_grid_is_checked_quickly) {
+  std::vector<Body> bodies;
+  for (int i = 0; i < 100000; ++i) bodies.push_back(box(i % 316 * 4.0, i / 316 * 4.0, 4, 4));  // touching
+  BOOST_TEST(!first_overlap(bodies));  // quadratic would be 5e9 checks
+  bodies.push_back(box(2, 2, 4, 4));
+  BOOST_TEST(first_overlap(bodies).has_value());
+}
+
+BOOST_AUTO_TEST_CASE(the_warning_names_the_two_blocks) {
+  SceneSpec s;
+  BlockSpec a;
+  a.pos = {100, 100};
+  a.width = a.height = 20;
+  a.mass = 1;
+  BlockSpec b = a;
+  b.pos = {300, 300};
+  BlockSpec c = a;
+  c.pos = {110, 110};
+  s.blocks = {a, b, c};
+  BOOST_TEST(overlap_warning(s, expand(s, "x.json"), "x.json") ==
+             "warning: x.json: blocks[0] and blocks[2] overlap at the start");
+  s.blocks.pop_back();
+  BOOST_TEST(overlap_warning(s, expand(s, "x.json"), "x.json").empty());
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+// Random colours keep away from the walls' blue and black (a square of
+// `many` used to come out wall-blue, another near-black).
+BOOST_AUTO_TEST_CASE(random_colours_keep_away_from_the_walls) {
+  const auto dist2 = [](Color a, Color b) {
+    const auto d = [](int x, int y) { return (x - y) * (x - y); };
+    return d(a.r, b.r) + d(a.g, b.g) + d(a.b, b.b);
+  };
+  std::size_t checked = 0;
+  for (const char* name : {"many", "gas"})
+    for (std::uint64_t seed = 0; seed < 40; ++seed) {
+      SceneSpec s = builtin(name);
+      Overrides o;
+      o.seed = seed;
+      apply(s, o);
+      for (const Body& b : expand(s, name)) {
+        BOOST_TEST(dist2(b.color, Game::wall_blue) >= Game::min_wall_color_distance * Game::min_wall_color_distance);
+        BOOST_TEST(dist2(b.color, Game::wall_black) >= Game::min_wall_color_distance * Game::min_wall_color_distance);
+        ++checked;
+      }
+    }
+  BOOST_TEST(checked > 10000u);
+}

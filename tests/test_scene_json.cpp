@@ -124,6 +124,19 @@ BOOST_AUTO_TEST_CASE(print_scene_output_reads_back_to_the_same_scene) {
   }
 }
 
+// Short arrays of numbers or strings stay on one line; the rest is indented
+// by two spaces per level, like the scene files.
+BOOST_AUTO_TEST_CASE(print_scene_keeps_short_arrays_on_one_line) {
+  const std::string j = to_json(*find_builtin("stack"));
+  BOOST_TEST(j.find("\n    \"gravity\": [0.0, 0.001],\n") != std::string::npos, j);
+  BOOST_TEST(j.find("\"systems\": [\"draw\", \"forces\", \"move\", \"collision\"]") != std::string::npos, j);
+  BOOST_TEST(j.find("\n        \"pos\": [200.0, 520.0],\n") != std::string::npos, j);
+  BOOST_TEST(j.find("\n  \"blocks\": [\n    {\n      \"grid\": {\n") != std::string::npos, j);
+  BOOST_TEST(j.rfind("{\n  \"name\": \"stack\",", 0) == 0u);
+  BOOST_TEST(j.ends_with("\n  ]\n}\n"));
+  BOOST_TEST(std::count(j.begin(), j.end(), '\n') < 30);  // was 40 with one number a line
+}
+
 BOOST_AUTO_TEST_CASE(a_ten_thousand_body_scene_is_a_few_lines) {
   const SceneSpec s = load_scene_file(scene_file("gas10k"));
   const World w = make_world(s, false);

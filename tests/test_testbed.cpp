@@ -1,5 +1,6 @@
 // The testbed's input handling without a window: events in, world changes out.
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "app/builtin_scenes.hpp"
@@ -68,7 +69,9 @@ BOOST_AUTO_TEST_CASE(r_resets_the_scene) {
   Testbed tb = on("many");
   const auto start = tb.world().components.position;
   for (int i = 0; i < 30; ++i) tb.step();
-  tb.spawn({400, 300}, {});
+  bool spawned = false;  // somewhere free of the moving squares
+  for (int x = 100; x < 700 && !spawned; x += 40)
+    for (int y = 100; y < 500 && !spawned; y += 40) spawned = tb.spawn({double(x), double(y)}, {});
   BOOST_TEST(tb.world().components.size() == 16u);
   tb.handle(press('r'));
   BOOST_TEST(tb.world().frame == 0);
@@ -87,6 +90,12 @@ BOOST_AUTO_TEST_CASE(digits_and_tab_switch_scenes) {
   BOOST_TEST(tb.scene().name == "gas");
   tb.handle(press('9'));  // there is no 9th scene: nothing changes
   BOOST_TEST(tb.scene().name == "gas");
+  // The H list says so: 1-8 with the built-ins, 9 when a scene file joins them.
+  const auto digits = [](std::size_t n) { return Testbed::key_list(n)[3]; };
+  BOOST_TEST(digits(8).starts_with("1-8    choose a scene, Tab"), digits(8));
+  BOOST_TEST(digits(9).starts_with("1-9    scene (9: the --scene file)"), digits(9));
+  tb.handle(press('h'));
+  BOOST_TEST(tb.view(60, 0).help[3] == digits(8));
   tb.handle(press(key::tab));
   BOOST_TEST(tb.scene().name == "stack");
   tb.handle(press(key::tab));
@@ -125,6 +134,8 @@ BOOST_AUTO_TEST_CASE(a_drag_flings_the_block_opposite_to_the_drag) {
   BOOST_TEST(tb.view(60, 0).sling.has_value());  // the slingshot is drawn while dragging
   tb.handle(up(300, 240));
   BOOST_TEST(!tb.view(60, 0).sling.has_value());
+  const auto keys = Testbed::key_list(8);  // the H list says which way it flies
+  BOOST_TEST(std::count(keys.begin(), keys.end(), "drag   slingshot: it flies opposite to the drag") == 1);
   const Vector v = tb.world().components.velocity[n];
   BOOST_TEST(v.x == 100 * Testbed::fling_scale);
   BOOST_TEST(v.y == -40 * Testbed::fling_scale);
@@ -148,6 +159,31 @@ BOOST_AUTO_TEST_CASE(no_block_is_spawned_in_a_wall) {
   BOOST_TEST(tb.world().components.size() == n);
 }
 
+// A click inside a body is refused like one on a wall; the message fades.
+BOOST_AUTO_TEST_CASE(no_block_is_spawned_into_a_body_and_the_message_fades) {
+  Testbed tb = on("stack");
+  const Components& c = tb.world().components;
+  const std::size_t n = c.size();
+  EntityId inside = n;
+  for (EntityId e = 0; e < n && inside == n; ++e)
+    if (std::isfinite(c.mass[e])) inside = e;
+  BOOST_REQUIRE(inside < n);
+  const Vector at = c.position[inside] + Vector{c.box[inside].width / 2.0, c.box[inside].height / 2.0};
+  const std::vector<Vector> before = c.position;
+  BOOST_TEST(!tb.spawn(at, {}));
+  BOOST_TEST(c.size() == n);
+  BOOST_TEST((c.position == before));
+  BOOST_TEST(tb.message() == "no room there: a block cannot overlap another body");
+  BOOST_TEST(tb.view(60, 0).hud.back() == tb.message());
+  tb.handle(press(key::space));  // fades in real time, paused or not
+  tb.advance(Testbed::message_ms / 2);
+  BOOST_TEST(!tb.message().empty());
+  tb.advance(Testbed::message_ms / 2 + 1);
+  BOOST_TEST(tb.message().empty());
+  // Touching is no overlap: right on top of the first tower (its top at y = 360) is room.
+  BOOST_TEST(tb.spawn({220, 360 - Testbed::spawn_size / 2.0}, {}));
+}
+
 BOOST_AUTO_TEST_CASE(overlay_keys_toggle_and_contacts_are_recorded) {
   Testbed tb = on("cradle");
   BOOST_TEST(!tb.overlays().aabb);
@@ -164,6 +200,23 @@ BOOST_AUTO_TEST_CASE(overlay_keys_toggle_and_contacts_are_recorded) {
   BOOST_TEST_REQUIRE(!v.contacts.empty());
   BOOST_TEST(std::abs(v.contacts[0].normal.x) == 1.0);
   BOOST_TEST(v.contacts[0].normal.y == 0.0);
+  // Each one drawn where its bodies meet now: on the edge they share.
+  BOOST_TEST_REQUIRE(v.contact_regions.size() == v.contacts.size());
+  const Components& c = tb.world().components;
+  for (std::size_t i = 0; i < v.contacts.size(); ++i) {
+    const ContactRegion r = v.contact_regions[i];
+    for (const EntityId e : {v.contacts[i].c, v.contacts[i].b}) {
+      BOOST_TEST(r.lo.x >= c.position[e].x);
+      BOOST_TEST(r.hi.x <= c.position[e].x + c.box[e].width);
+      BOOST_TEST(r.lo.y >= c.position[e].y);
+      BOOST_TEST(r.hi.y <= c.position[e].y + c.box[e].height);
+    }
+    BOOST_TEST((r.lo.x == r.hi.x || r.lo.y == r.hi.y));  // touching: a segment
+  }
+  // A step without contacts shows none: nothing is left behind.
+  for (int i = 0; i < 200 && !tb.view(60, 0).contacts.empty(); ++i) tb.step();
+  BOOST_TEST(tb.view(60, 0).contacts.empty());
+  BOOST_TEST(tb.view(60, 0).contact_regions.empty());
   tb.handle(press('C'));  // upper case works too
   BOOST_TEST(!tb.overlays().contacts);
   BOOST_TEST(tb.view(60, 0).contacts.empty());
@@ -171,25 +224,48 @@ BOOST_AUTO_TEST_CASE(overlay_keys_toggle_and_contacts_are_recorded) {
 
 BOOST_AUTO_TEST_CASE(hud_help_and_slow_motion) {
   Testbed tb = on("many");
-  BOOST_TEST(tb.view(60, 0).hud.size() >= 3u);
-  const std::string times = tb.view(60, 0).hud[2];
+  BOOST_TEST(tb.view(60, 0).hud.size() >= 4u);
+  const std::string times = tb.view(60, 0).hud[3];
   BOOST_TEST(times.find("collision") != std::string::npos);
   tb.handle(press('i'));
   BOOST_TEST(tb.view(60, 0).hud.empty());
   BOOST_TEST(tb.view(60, 0).help.empty());
   tb.handle(press('h'));
   const auto help = tb.view(60, 0).help;
-  BOOST_TEST(help.size() == Testbed::key_list().size());
+  BOOST_TEST(help.size() == Testbed::key_list(8).size());
   tb.handle(press('s'));
   BOOST_TEST(tb.slow());
   BOOST_TEST(tb.advance(course_dt * 3) == 0);  // a quarter of the time passes
   BOOST_TEST(tb.advance(course_dt * 1.1) == 1);
 }
 
+// The HUD says how the world is solved and which overlays are on.
+BOOST_AUTO_TEST_CASE(the_hud_shows_the_solver_substeps_ccd_and_overlays) {
+  Testbed tb = on("many");
+  BOOST_TEST(tb.view(60, 0).hud[2] == "solver course  substeps 1  CCD off  overlays: none (A, V, C)");
+  tb.handle(press('a'));
+  tb.handle(press('c'));
+  BOOST_TEST(tb.view(60, 0).hud[2] == "solver course  substeps 1  CCD off  overlays: aabb (A), contacts (C)");
+  Overrides o;
+  o.solver = Solver::stable;
+  o.iterations = 12;
+  o.substeps = 4;
+  o.ccd = true;
+  Testbed st(all_scenes(), 0, o, Overlays{.velocity = true});
+  BOOST_TEST(st.view(60, 0).hud[2] == "solver stable (12 it.)  substeps 4  CCD on  overlays: velocity (V)");
+  // Every stage's time, on lines that fit the 800 px window.
+  std::string all;
+  for (const std::string& line : st.view(60, 0).hud) {
+    BOOST_TEST(line.size() <= 100u, line);
+    all += line;
+  }
+  for (const char* stage : {"relax", "positions", "ccd", "store", "draw"}) BOOST_TEST(all.find(stage) != std::string::npos);
+}
+
 BOOST_AUTO_TEST_CASE(the_hud_shows_no_time_for_a_left_out_system) {
   Testbed tb = on("drift");
   tb.step();
-  const std::string times = tb.view(60, 0).hud[2];
+  const std::string times = tb.view(60, 0).hud[3];
   BOOST_TEST(times.find("forces off") != std::string::npos, times);
   BOOST_TEST(times.find("collision off") != std::string::npos);
   BOOST_TEST(times.find("move off") == std::string::npos);

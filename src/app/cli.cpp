@@ -1,6 +1,7 @@
 #include "app/cli.hpp"
 
 #include <boost/program_options.hpp>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -194,7 +195,8 @@ Options parse(std::span<const std::string> args) {
   if (has("gravity")) {
     const std::string g = get("gravity");
     const auto comma = g.find(',');
-    if (comma == std::string::npos) bad("--gravity", "must be two numbers X,Y", g);
+    if (comma == std::string::npos || g.find(',', comma + 1) != std::string::npos)
+      bad("--gravity", "must be two numbers X,Y", g);
     ov.gravity = Vector{real("--gravity", g.substr(0, comma)), real("--gravity", g.substr(comma + 1))};
     if (std::abs(ov.gravity->x) > max_motion || std::abs(ov.gravity->y) > max_motion)
       bad("--gravity", "must be within ±1000000 per axis", g);
@@ -219,7 +221,13 @@ Options parse(std::span<const std::string> args) {
   }
   if (has("dump")) o.dump = get("dump");
   if (has("trace")) o.trace = get("trace");
-  if (has("screenshot")) o.screenshot = get("screenshot");
+  if (has("screenshot")) {
+    o.screenshot = get("screenshot");
+    std::string ext = std::filesystem::path(o.screenshot).extension().string();
+    for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    if (!o.screenshot.empty() && ext != ".png")
+      bad("--screenshot", "only PNG is written: the name must end in .png", o.screenshot);
+  }
   for (const auto* f : {&o.dump, &o.trace, &o.screenshot})
     if (f->empty() && vm.count(f == &o.dump ? "dump" : f == &o.trace ? "trace" : "screenshot"))
       throw UsageError("an output file name must not be empty");
@@ -309,6 +317,9 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err,
     spec = resolve_scene(o.scene);
     apply(spec, o.overrides);
     bodies = expand(spec, scene_source(o.scene));
+    // Legitimate, but easy to write by mistake in a file: one line.
+    if (!find_builtin(o.scene))
+      if (const std::string w = overlap_warning(spec, bodies, o.scene); !w.empty()) err << w << "\n";
   } catch (const SceneError& e) {
     err << "game: " << e.what() << "\n";
     return 2;

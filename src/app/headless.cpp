@@ -60,9 +60,16 @@ void print_summary(std::ostream& out, const World& w, const Summary& s, const st
   }
   o << "frames:          " << s.frames << " (dt = " << w.params.dt << " ms, " << w.params.substeps << " substep(s))\n"
     << "bodies:          " << s.bodies << " (" << s.mobile << " mobile)\n"
-    << std::setprecision(9) << "kinetic energy:  " << s.ke_start << " after frame 1, " << s.ke_end << " at the end\n"
-    << "momentum:        " << vec(s.p_start) << " after frame 1, " << vec(s.p_end) << " at the end\n"
-    << "escaped:         " << escape_line(w) << "\n"
+    << std::setprecision(9);
+  if (s.frames == 0) {
+    // No frame ran: the state is the initial one (forces still pending).
+    o << "kinetic energy:  " << s.ke_end << " (no frame ran)\n"
+      << "momentum:        " << vec(s.p_end) << " (no frame ran)\n";
+  } else {
+    o << "kinetic energy:  " << s.ke_start << " after frame 1, " << s.ke_end << " at the end\n"
+      << "momentum:        " << vec(s.p_start) << " after frame 1, " << vec(s.p_end) << " at the end\n";
+  }
+  o << "escaped:         " << escape_line(w) << "\n"
     << std::setprecision(4) << "physics ms/step: " << w.times.total_ms_per_step() << " total, " << stage_times(w)
     << "\n";
   if (const std::string a = advice(w); !a.empty()) o << "note:            " << a << "\n";

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <atomic>
+#include <iterator>
+#include <set>
 #include <cmath>
 #include <sstream>
 
@@ -210,6 +212,7 @@ void expand_random(const RandomSpec& r, double world_e, std::size_t entry, std::
       b.color.r = c();
       b.color.g = c();
       b.color.b = c();
+      b.color = Game::away_from_walls(b.color);
     }
     if (r.use_cells) {
       const auto col = static_cast<double>(i % r.columns), row = static_cast<double>(i / r.columns);
@@ -310,6 +313,50 @@ void validate(const SceneSpec& s, const std::string& source) {
       check_kick(k, r->mass.lo, largest(r->force), largest(r->impulse), p.dt, At{path, ".random.mass"});
     }
   }
+}
+
+std::optional<std::pair<std::size_t, std::size_t>> first_overlap(const std::vector<Body>& bodies) {
+  // Events along x: a box opens at its left edge and closes at its right
+  // one; closings first at equal x (touching boxes do not overlap).
+  struct Event {
+    double x;
+    bool open;
+    std::size_t i;
+  };
+  std::vector<Event> events;
+  events.reserve(2 * bodies.size());
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    events.push_back({bodies[i].pos.x, true, i});
+    events.push_back({bodies[i].pos.x + bodies[i].width, false, i});
+  }
+  std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) {
+    return a.x != b.x ? a.x < b.x : a.open != b.open ? !a.open : a.i < b.i;
+  });
+  // The open boxes' y-intervals, disjoint until the first overlap (so sorted
+  // by top also sorts them by bottom): a new one overlaps one of them only
+  // if it overlaps a neighbour.
+  const auto top = [&](std::size_t i) { return bodies[i].pos.y; };
+  const auto bottom = [&](std::size_t i) { return bodies[i].pos.y + bodies[i].height; };
+  std::set<std::pair<double, std::size_t>> open;
+  const auto pair = [](std::size_t a, std::size_t b) { return std::pair{std::min(a, b), std::max(a, b)}; };
+  for (const Event& e : events) {
+    if (!e.open) {
+      open.erase({top(e.i), e.i});
+      continue;
+    }
+    const auto next = open.lower_bound({top(e.i), e.i});
+    if (next != open.end() && next->first < bottom(e.i)) return pair(e.i, next->second);
+    if (next != open.begin() && bottom(std::prev(next)->second) > top(e.i)) return pair(std::prev(next)->second, e.i);
+    open.insert(next, {top(e.i), e.i});
+  }
+  return std::nullopt;
+}
+
+std::string overlap_warning(const SceneSpec& s, const std::vector<Body>& bodies, const std::string& source) {
+  const auto o = first_overlap(bodies);
+  if (!o) return "";
+  return "warning: " + source + ": " + body_path(s, bodies[o->first]) + " and " + body_path(s, bodies[o->second]) +
+         " overlap at the start";
 }
 
 std::vector<Body> expand(const SceneSpec& s, const std::string& source) {

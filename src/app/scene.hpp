@@ -167,6 +167,14 @@ void validate(const SceneSpec& s, const std::string& source);
 // The scene's blocks in creation order, validated (see above).
 std::vector<Body> expand(const SceneSpec& s, const std::string& source);
 
+// Two blocks that overlap at the start (touching is no overlap), or none:
+// the first pair a sweep along x finds, indices into `bodies`, lower first.
+// Legitimate (the solver pushes them apart), so only warned about.
+// O(n log n): a sweep over x with the y-intervals of the open boxes.
+std::optional<std::pair<std::size_t, std::size_t>> first_overlap(const std::vector<Body>& bodies);
+// "warning: SOURCE: blocks[2] and blocks[5] overlap at the start", or "".
+std::string overlap_warning(const SceneSpec& s, const std::vector<Body>& bodies, const std::string& source);
+
 // How many times validate() has run in this process (tests check that a load
 // validates once).
 std::int64_t validation_count();

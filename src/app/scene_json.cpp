@@ -950,6 +950,37 @@ ojson entry(const BlockEntry& e) {
   return o;
 }
 
+// nlohmann's dump(2), except that a short array of numbers or strings (a
+// position, a size, a range, the systems) stays on one line: [100, 200].
+void write_pretty(const ojson& j, int indent, std::string& out) {
+  constexpr std::size_t max_inline = 8;
+  const std::string pad(static_cast<std::size_t>(indent) + 2, ' ');
+  const bool flat = std::all_of(j.begin(), j.end(), [](const ojson& e) { return e.is_primitive(); });
+  if (j.is_array() && (j.empty() || (flat && j.size() <= max_inline))) {
+    out += '[';
+    for (std::size_t i = 0; i < j.size(); ++i) out += (i ? ", " : "") + j[i].dump();
+    out += ']';
+  } else if (j.is_array()) {
+    out += "[\n";
+    for (std::size_t i = 0; i < j.size(); ++i) {
+      out += (i ? ",\n" : "") + pad;
+      write_pretty(j[i], indent + 2, out);
+    }
+    out += "\n" + std::string(static_cast<std::size_t>(indent), ' ') + ']';
+  } else if (j.is_object() && !j.empty()) {
+    out += "{\n";
+    bool first = true;
+    for (const auto& [key, value] : j.items()) {
+      out += (first ? "" : ",\n") + pad + ojson(key).dump() + ": ";
+      first = false;
+      write_pretty(value, indent + 2, out);
+    }
+    out += "\n" + std::string(static_cast<std::size_t>(indent), ' ') + '}';
+  } else {
+    out += j.dump();
+  }
+}
+
 }  // namespace
 
 std::string to_json(const SceneSpec& s) {
@@ -973,7 +1004,9 @@ std::string to_json(const SceneSpec& s) {
   ojson blocks = ojson::array();
   for (const BlockEntry& e : s.blocks) blocks.push_back(entry(e));
   o["blocks"] = blocks;
-  return o.dump(2) + "\n";
+  std::string out;
+  write_pretty(o, 0, out);
+  return out + "\n";
 }
 
 }  // namespace physics

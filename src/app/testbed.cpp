@@ -9,6 +9,25 @@
 #include "app/headless.hpp"
 
 namespace physics {
+
+namespace {
+// The stable solver's seven stages do not fit one HUD line of an 800 px
+// window: break a "a 1, b 2, ..." list after a comma once a line passes
+// `width` characters.
+std::vector<std::string> wrap(const std::string& text, std::size_t width = 88) {
+  std::vector<std::string> lines{""};
+  std::size_t from = 0;
+  while (from < text.size()) {
+    std::size_t to = text.find(", ", from);
+    to = to == std::string::npos ? text.size() : to + 2;
+    const std::string item = text.substr(from, to - from);
+    if (!lines.back().empty() && lines.back().size() + item.size() > width) lines.emplace_back("  ");
+    lines.back() += item;
+    from = to;
+  }
+  return lines;
+}
+}  // namespace
 namespace {
 
 constexpr Color spawn_color{255, 140, 0, 255};
@@ -16,6 +35,18 @@ constexpr Color spawn_color{255, 140, 0, 255};
 SceneSpec with_overrides(SceneSpec s, const Overrides& o) {
   apply(s, o);
   return s;
+}
+
+// "solver stable (8 it.)  substeps 2  CCD on  overlays: aabb, contacts"
+std::string options_line(const Params& p, const Overlays& o) {
+  std::string s = p.solver == Solver::stable ? "solver stable (" + std::to_string(p.iterations) + " it.)"
+                                             : std::string("solver course");
+  s += "  substeps " + std::to_string(p.substeps) + "  CCD " + (p.ccd ? "on" : "off") + "  overlays: ";
+  std::string list;
+  for (const auto& [on, name] : {std::pair{o.aabb, "aabb (A)"}, {o.velocity, "velocity (V)"},
+                                 {o.contacts, "contacts (C)"}})
+    if (on) list += (list.empty() ? "" : ", ") + std::string(name);
+  return s + (list.empty() ? "none (A, V, C)" : list);
 }
 
 }  // namespace
@@ -34,10 +65,11 @@ void Testbed::rebuild() {
     world_ = make_world(with_overrides(scenes_[current_], overrides_), true, scenes_[current_].name);
     message_.clear();
   } catch (const SceneError& e) {
-    message_ = e.what();  // keep the world we have
+    say(e.what(), false);  // keep the world we have
   }
   if (world_.systems.collision) world_.systems.collision->record_contacts = overlays_.contacts;
   last_contacts_.clear();
+  last_regions_.clear();
   acc_ms_ = 0.0;
   press_.reset();
   if (on_reset) on_reset(world_);
@@ -52,8 +84,21 @@ void Testbed::select(std::size_t i) {
 }
 
 void Testbed::after_step() {
-  if (world_.systems.collision && overlays_.contacts && world_.systems.collision->contact_count() > 0)
+  // The contacts of this step only (none is none: no arrows left behind by
+  // bodies that have moved apart), placed where the bodies meet now.
+  last_contacts_.clear();
+  last_regions_.clear();
+  if (world_.systems.collision && overlays_.contacts) {
+    const Components& c = world_.components;
     last_contacts_ = world_.systems.collision->contacts();
+    for (const Contact& k : last_contacts_) {
+      const Vector a = c.position[k.c], b = c.position[k.b];
+      const Vector lo{std::max(a.x, b.x), std::max(a.y, b.y)};
+      const Vector hi{std::min(a.x + c.box[k.c].width, b.x + c.box[k.b].width),
+                      std::min(a.y + c.box[k.c].height, b.y + c.box[k.b].height)};
+      last_regions_.push_back({lo, hi});
+    }
+  }
   if (on_step) on_step(world_);
 }
 
@@ -62,7 +107,14 @@ void Testbed::step() {
   after_step();
 }
 
+void Testbed::say(std::string message, bool fades) {
+  message_ = std::move(message);
+  message_left_ms_ = fades ? message_ms : std::numeric_limits<double>::infinity();
+}
+
 int Testbed::advance(double elapsed_ms, std::int64_t last_frame) {
+  // A passing message fades after message_ms of real time, paused or not.
+  if (!message_.empty() && elapsed_ms > 0.0 && (message_left_ms_ -= elapsed_ms) <= 0.0) message_.clear();
   if (paused_ || !(elapsed_ms > 0.0)) return 0;
   const double dt = world_.params.dt;
   acc_ms_ = std::min(acc_ms_ + elapsed_ms * (slow_ ? slow_motion : 1.0), max_steps_per_frame * dt);
@@ -83,8 +135,18 @@ bool Testbed::spawn(Vector centre, Vector v) {
   const Vector pos{centre.x - half, centre.y - half};
   const double t = s.walls ? wall_thickness : 0.0;
   if (!(pos.x >= t && pos.y >= t && pos.x + spawn_size <= s.width - t && pos.y + spawn_size <= s.height - t)) {
-    message_ = s.walls ? "no room there: a block cannot overlap the walls" : "no room there: outside the world";
+    say(s.walls ? "no room there: a block cannot overlap the walls" : "no room there: outside the world", true);
     return false;
+  }
+  // Nor into a body (a tower would explode): one scan per click.
+  const Components& c = world_.components;
+  for (std::size_t e = 0; e < c.size(); ++e) {
+    const Vector q = c.position[e];
+    if (pos.x < q.x + c.box[e].width && q.x < pos.x + spawn_size && pos.y < q.y + c.box[e].height &&
+        q.y < pos.y + spawn_size) {
+      say("no room there: a block cannot overlap another body", true);
+      return false;
+    }
   }
   const auto b = Block::make(world_, pos.x, pos.y, spawn_size, spawn_size, spawn_color, spawn_mass,
                              with_overrides(s, overrides_).restitution);
@@ -136,7 +198,7 @@ Testbed::Action Testbed::handle(const InputEvent& e) {
     case 'c':
       overlays_.contacts = !overlays_.contacts;
       if (world_.systems.collision) world_.systems.collision->record_contacts = overlays_.contacts;
-      if (!overlays_.contacts) last_contacts_.clear();
+      if (!overlays_.contacts) last_contacts_.clear(), last_regions_.clear();
       break;
     case 'i': overlays_.hud = !overlays_.hud; break;
     case 's': slow_ = !slow_; break;
@@ -148,12 +210,17 @@ Testbed::Action Testbed::handle(const InputEvent& e) {
   return Action::none;
 }
 
-std::vector<std::string> Testbed::key_list() {
+std::vector<std::string> Testbed::key_list(std::size_t scene_count) {
+  // The digits that choose a scene: 1-8 for the built-ins, 9 for a scene
+  // file given with --scene (it joins the list as the ninth).
+  const std::size_t n = std::clamp<std::size_t>(scene_count, 1, 9);
+  std::string digits = n == 1 ? "1      " : "1-" + std::to_string(n) + "    ";
   return {"Space  pause / resume",
           "N, ->  one step",
           "R      reset the scene",
-          "1-9    choose a scene, Tab: next scene",
-          "click  spawn a block; drag: fling it (slingshot)",
+          digits + (n == 9 ? "scene (9: the --scene file); Tab: next" : "choose a scene, Tab: next scene"),
+          "click  spawn a block",
+          "drag   slingshot: it flies opposite to the drag",
           "A      AABBs",
           "V      velocity vectors",
           "C      contact normals and penetration vectors",
@@ -166,7 +233,7 @@ std::vector<std::string> Testbed::key_list() {
 View Testbed::view(double fps, double draw_ms) const {
   View v;
   v.overlays = overlays_;
-  if (overlays_.contacts) v.contacts = last_contacts_;
+  if (overlays_.contacts) v.contacts = last_contacts_, v.contact_regions = last_regions_;
   if (press_) v.sling = std::pair{*press_, mouse_};
   if (overlays_.hud) {
     const SceneSpec& s = scene();
@@ -178,10 +245,12 @@ View Testbed::view(double fps, double draw_ms) const {
     v.hud.push_back(Headless::hud_line(world_, fps) + "  frame " + std::to_string(world_.frame));
     char draw[64];
     std::snprintf(draw, sizeof draw, "  draw %.3f ms/frame", draw_ms);
-    v.hud.push_back("ms/step: " + Headless::stage_times(world_) + (world_.systems.draw ? draw : "  draw off"));
+    v.hud.push_back(options_line(world_.params, overlays_));
+    for (std::string& line : wrap("ms/step: " + Headless::stage_times(world_) + (world_.systems.draw ? draw : "  draw off")))
+      v.hud.push_back(std::move(line));
     if (!message_.empty()) v.hud.push_back(message_);
   }
-  if (overlays_.help) v.help = key_list();
+  if (overlays_.help) v.help = key_list(scenes_.size());
   return v;
 }
 

@@ -4,8 +4,8 @@
 // everything here is tested without a window (tests/test_testbed.cpp).
 //
 //   Space        pause / resume            N or →   one step (and pause)
-//   R            reset the scene           1-9      scene 1-9; Tab: next scene
-//   left click   spawn a block             left drag  fling it (slingshot)
+//   R            reset the scene           1-9      scene 1-8, 9: a --scene file; Tab: next
+//   left click   spawn a block             left drag  fling it opposite to the drag (slingshot)
 //   A  AABBs     V  velocity vectors       C  contact normals and penetrations
 //   I  HUD on/off    S  slow motion (x1/4)   H  this key list     Esc/Q  quit
 #pragma once
@@ -42,10 +42,19 @@ struct Overlays {
   bool aabb = false, velocity = false, contacts = false, hud = true, help = false;
 };
 
+// Where a contact of the last step is: the overlap of the two boxes' x and
+// y ranges right after the step (the correction leaves them touching, so a
+// segment of their shared edge), in world coordinates.
+struct ContactRegion {
+  Vector lo, hi;
+  Vector middle() const { return 0.5 * (lo + hi); }
+};
+
 // One frame's picture beyond the blocks themselves.
 struct View {
   Overlays overlays;
-  std::span<const Contact> contacts;  // the last collisions, if shown
+  std::span<const Contact> contacts;  // the last step's collisions (none if it had none), if shown
+  std::span<const ContactRegion> contact_regions;  // where each one is, in the same order
   std::optional<std::pair<Vector, Vector>> sling;  // drag: from the press point to the mouse
   std::vector<std::string> hud;   // lines, top left
   std::vector<std::string> help;  // the key list, when H is on
@@ -60,6 +69,7 @@ class Testbed {
   static constexpr double fling_scale = 0.005;  // px/ms of velocity per px of drag
   static constexpr double max_fling = 2.0;      // px/ms: below a wall's 40 px per frame
   static constexpr int click_radius = 4;        // px: a shorter drag is a click
+  static constexpr double message_ms = 2000.0;  // real ms a "no room there" stays on the HUD
 
   // `scenes` is the list keys 1-9 and Tab walk through; `overrides` (the
   // command line's values) apply to each of them. Throws SceneError if the
@@ -89,11 +99,13 @@ class Testbed {
   const std::string& message() const { return message_; }
 
   // Spawns a block centred on (x, y) with velocity v, unless it would
-  // overlap a wall or leave the world. Returns whether it did.
+  // overlap a wall or another body or leave the world (then a message says
+  // "no room there" for message_ms). Returns whether it did.
   bool spawn(Vector centre, Vector v);
 
   View view(double fps, double draw_ms) const;
-  static std::vector<std::string> key_list();
+  // The H list; the digit line names as many scenes as there are (at most 9).
+  static std::vector<std::string> key_list(std::size_t scene_count);
 
   // Called after every physics step, and after a reset or a scene switch
   // with the new world (frame 0): the trace.
@@ -102,6 +114,8 @@ class Testbed {
  private:
   void rebuild();
   void after_step();
+  // Shows `message` on the HUD; a passing one (`fades`) for message_ms.
+  void say(std::string message, bool fades);
 
   std::vector<SceneSpec> scenes_;
   std::size_t current_;
@@ -113,7 +127,9 @@ class Testbed {
   std::optional<Vector> press_;
   Vector mouse_{};
   std::vector<Contact> last_contacts_;
+  std::vector<ContactRegion> last_regions_;
   std::string message_;
+  double message_left_ms_ = 0.0;
 };
 
 }  // namespace physics

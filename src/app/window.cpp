@@ -116,6 +116,7 @@ constexpr SDL_Color aabb_colour{0, 170, 0, 255};
 constexpr SDL_Color velocity_colour{200, 0, 200, 255};
 constexpr SDL_Color normal_colour{230, 0, 0, 255};
 constexpr SDL_Color penetration_colour{0, 120, 255, 255};
+constexpr SDL_Color contact_colour{255, 200, 0, 255};  // the shared edge
 constexpr double velocity_scale = 100.0;    // px of arrow per px/ms: the distance covered in 100 ms
 constexpr double normal_length = 24.0;      // px
 constexpr double penetration_scale = 4.0;   // penetrations are a few px: drawn 4x
@@ -145,15 +146,29 @@ Vector centre(const Components& c, EntityId e) {
   return c.position[e] + Vector{c.box[e].width / 2.0, c.box[e].height / 2.0};
 }
 
-// Where two boxes meet: the middle of the overlap of their x and y ranges
-// (after the correction they touch, so this lies on the shared edge).
-Vector contact_point(const Components& c, EntityId a, EntityId b) {
-  const auto mid = [](double lo1, double hi1, double lo2, double hi2) {
-    return (std::max(lo1, lo2) + std::min(hi1, hi2)) / 2.0;
-  };
-  const Vector pa = c.position[a], pb = c.position[b];
-  return {mid(pa.x, pa.x + c.box[a].width, pb.x, pb.x + c.box[b].width),
-          mid(pa.y, pa.y + c.box[a].height, pb.y, pb.y + c.box[b].height)};
+// An arrow on a white halo, so that it reads on a block of its own colour
+// (a red normal on the red block).
+void haloed_arrow(SDL_Renderer* r, Vector from, Vector to, SDL_Color col) {
+  set_colour(r, SDL_Color{255, 255, 255, 255});
+  for (const Vector d : {Vector{1, 0}, Vector{-1, 0}, Vector{0, 1}, Vector{0, -1}}) arrow(r, from + d, to + d);
+  set_colour(r, col);
+  arrow(r, from, to);
+}
+
+// The last step's contacts where the bodies met: the shared edge (a thick
+// segment) and, from its middle, the normal and the penetration.
+void draw_contacts(SDL_Renderer* r, const View& view) {
+  for (std::size_t i = 0; i < view.contacts.size() && i < view.contact_regions.size(); ++i) {
+    const Contact& k = view.contacts[i];
+    const ContactRegion& g = view.contact_regions[i];
+    if (!drawable(g.lo) || !drawable(g.hi)) continue;
+    set_colour(r, contact_colour);
+    const SDL_FRect edge{float(g.lo.x - 1), float(g.lo.y - 1), float(g.hi.x - g.lo.x + 2), float(g.hi.y - g.lo.y + 2)};
+    SDL_RenderFillRectF(r, &edge);
+    const Vector at = g.middle();
+    haloed_arrow(r, at, at + penetration_scale * k.penetration, penetration_colour);
+    haloed_arrow(r, at, at + normal_length * k.normal, normal_colour);
+  }
 }
 
 // Draw's bodies and the overlays drawn over them (boxes, velocities).
@@ -210,17 +225,9 @@ double Window::render(const World& world, const View& view) {
   SDL_RenderClear(r);
   // A scene without Draw shows no body, but the HUD, key list and contacts
   // still show (the HUD says "draw off").
-  const Components& c = world.components;
   double draw_ms = 0.0;
   if (world.systems.draw) draw_ms = render_bodies(world, view, r);
-  for (const Contact& k : view.contacts) {
-    if (k.c >= c.size() || k.b >= c.size()) continue;
-    const Vector at = contact_point(c, k.c, k.b);
-    set_colour(r, penetration_colour);
-    arrow(r, at, at + penetration_scale * k.penetration);
-    set_colour(r, normal_colour);
-    arrow(r, at, at + normal_length * k.normal);
-  }
+  draw_contacts(r, view);
   if (view.sling) {
     const auto [from, to] = *view.sling;
     set_colour(r, SDL_Color{255, 140, 0, 255});

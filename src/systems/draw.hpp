@@ -1,5 +1,5 @@
 // Draw system (course: systems/draw.ml): fills each block's box in its
-// colour, on a Canvas: the course's Gfx layer. The window gives an SDL
+// colour (and outlines it), on a Canvas: the course's Gfx layer. The window gives an SDL
 // canvas (app/window.cpp), headless screenshots a pixel buffer
 // (app/offscreen.cpp); the system itself needs no SDL.
 #pragma once
@@ -14,6 +14,13 @@ class Canvas {
   // Fills the box of size r whose top-left corner is at p.
   virtual void fill_rect(Vector p, Rect r, Color c) = 0;
 };
+
+// Each block also gets a 1 px outline inside its box, a darker shade of its
+// colour, so that touching blocks of one colour (a stack, the cradle) read
+// as separate blocks; not on blocks narrower than min_outlined px.
+inline constexpr int min_outlined = 6;
+Color outline_color(Color c);
+void outline(Vector p, Rect r, Color c, Canvas& canvas);
 
 class Draw : public System<component::position, component::box, component::color> {
  public:
