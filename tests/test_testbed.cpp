@@ -222,6 +222,22 @@ BOOST_AUTO_TEST_CASE(overlay_keys_toggle_and_contacts_are_recorded) {
   BOOST_TEST(tb.view(60, 0).contacts.empty());
 }
 
+BOOST_AUTO_TEST_CASE(a_non_finite_body_pauses_the_window_with_a_banner) {
+  Testbed tb = on("many");
+  tb.advance(3 * course_dt, 1000);
+  tb.world().components.velocity[5] = {std::nan(""), 0.0};
+  tb.advance(10 * course_dt, 1000);
+  BOOST_TEST(tb.paused());
+  const std::int64_t frame = tb.world().frame;
+  const auto hud = tb.view(60, 0).hud;
+  BOOST_TEST(hud.back().find("stopped: body 5 has a non-finite position") == 0u, hud.back());
+  tb.handle(press(' '));  // resume: still stopped
+  tb.advance(10 * course_dt, 1000);
+  BOOST_TEST(tb.world().frame == frame);
+  tb.handle(press('r'));  // a reset starts again
+  BOOST_TEST(!tb.world().health.non_finite.has_value());
+}
+
 BOOST_AUTO_TEST_CASE(hud_help_and_slow_motion) {
   Testbed tb = on("many");
   BOOST_TEST(tb.view(60, 0).hud.size() >= 4u);

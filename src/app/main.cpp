@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/cli.hpp"
+#include "app/headless.hpp"
 #include "app/testbed.hpp"
 #include "app/window.hpp"
 
@@ -51,6 +52,13 @@ int run_window(Cli::Session& s) {
       running = false;
     }
     win->present();
+  }
+  // Nothing is written as if it were fine after a non-finite state (exit 3,
+  // as headless).
+  if (tb.world().health.non_finite) {
+    rec.abandon();
+    *s.err << "game: " << Headless::non_finite_line(tb.world()) << "\n";
+    return 3;
   }
   rec.finish(tb.world());
   return 0;

@@ -103,8 +103,14 @@ void Testbed::after_step() {
 }
 
 void Testbed::step() {
+  // A world with a non-finite body is stopped: nothing after it is physics.
+  if (world_.health.non_finite) return;
   Game::step(world_);
   after_step();
+  if (world_.health.non_finite) {
+    paused_ = true;
+    say("stopped: " + Headless::non_finite_line(world_) + " (R: reset)", false);
+  }
 }
 
 void Testbed::say(std::string message, bool fades) {
