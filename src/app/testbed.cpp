@@ -243,12 +243,14 @@ View Testbed::view(double fps, double draw_ms) const {
   if (press_) v.sling = std::pair{*press_, mouse_};
   if (overlays_.hud) {
     const SceneSpec& s = scene();
-    std::string title = "scene " + std::to_string(current_ + 1) + "/" + std::to_string(scenes_.size()) + " " + s.name;
+    // The frame number on the title line: the measures' line is full in an 800 px window.
+    std::string title = "scene " + std::to_string(current_ + 1) + "/" + std::to_string(scenes_.size()) + " " + s.name +
+                        "  frame " + std::to_string(world_.frame);
     if (paused_) title += "  [paused]";
     if (slow_) title += "  [slow x0.25]";
     title += "   H: keys";
     v.hud.push_back(title);
-    v.hud.push_back(Headless::hud_line(world_, fps) + "  frame " + std::to_string(world_.frame));
+    v.hud.push_back(Headless::hud_line(world_, fps));
     char draw[64];
     std::snprintf(draw, sizeof draw, "  draw %.3f ms/frame", draw_ms);
     v.hud.push_back(options_line(world_.params, overlays_));
