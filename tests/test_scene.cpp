@@ -517,7 +517,7 @@ BOOST_AUTO_TEST_CASE(touching_is_no_overlap) {
   BOOST_TEST(first_overlap({box(0, 0, 10, 10), box(0, 0, 10, 10)}).has_value());  // the same box twice
 }
 
-BOOST_AUTO_TEST_CASE(the_sweep_agrees_with_all_pairs) {
+BOOST_AUTO_TEST_CASE(the_broad_phase_agrees_with_all_pairs) {
   Random rng(7);
   for (int trial = 0; trial < 300; ++trial) {
     std::vector<Body> bodies;

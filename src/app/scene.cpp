@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <atomic>
 #include <iterator>
-#include <set>
 #include <cmath>
 #include <sstream>
 
+#include "engine/broadphase.hpp"
 #include "entities/block.hpp"
 
 namespace physics {
@@ -316,38 +316,20 @@ void validate(const SceneSpec& s, const std::string& source) {
 }
 
 std::optional<std::pair<std::size_t, std::size_t>> first_overlap(const std::vector<Body>& bodies) {
-  // Events along x: a box opens at its left edge and closes at its right
-  // one; closings first at equal x (touching boxes do not overlap).
-  struct Event {
-    double x;
-    bool open;
-    std::size_t i;
-  };
-  std::vector<Event> events;
-  events.reserve(2 * bodies.size());
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    events.push_back({bodies[i].pos.x, true, i});
-    events.push_back({bodies[i].pos.x + bodies[i].width, false, i});
-  }
-  std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) {
-    return a.x != b.x ? a.x < b.x : a.open != b.open ? !a.open : a.i < b.i;
-  });
-  // The open boxes' y-intervals, disjoint until the first overlap (so sorted
-  // by top also sorts them by bottom): a new one overlaps one of them only
-  // if it overlaps a neighbour.
-  const auto top = [&](std::size_t i) { return bodies[i].pos.y; };
-  const auto bottom = [&](std::size_t i) { return bodies[i].pos.y + bodies[i].height; };
-  std::set<std::pair<double, std::size_t>> open;
-  const auto pair = [](std::size_t a, std::size_t b) { return std::pair{std::min(a, b), std::max(a, b)}; };
-  for (const Event& e : events) {
-    if (!e.open) {
-      open.erase({top(e.i), e.i});
-      continue;
-    }
-    const auto next = open.lower_bound({top(e.i), e.i});
-    if (next != open.end() && next->first < bottom(e.i)) return pair(e.i, next->second);
-    if (next != open.begin() && bottom(std::prev(next)->second) > top(e.i)) return pair(std::prev(next)->second, e.i);
-    open.insert(next, {top(e.i), e.i});
+  // The engine's broad phase (its grid) lists the candidate pairs, sorted by
+  // the first then the second body; the sheet's strict test (mdiff,
+  // has_origin: touching boxes do not overlap) keeps the real ones.
+  std::vector<Aabb> boxes;
+  boxes.reserve(bodies.size());
+  for (const Body& b : bodies) boxes.push_back(Aabb::outward(b.pos.x, b.pos.y, b.pos.x + b.width, b.pos.y + b.height));
+  const std::vector<std::uint8_t> fixed(bodies.size(), 0);
+  UniformGrid grid;
+  grid.build(boxes, fixed);
+  for (const PairKey key : grid.pairs()) {
+    const Body& c = bodies[pair_first(key)];
+    const Body& b = bodies[pair_second(key)];
+    const auto [s_pos, s] = Rect::mdiff(c.pos, Rect{c.width, c.height}, b.pos, Rect{b.width, b.height});
+    if (Rect::has_origin(s_pos, s)) return std::pair{std::size_t{pair_first(key)}, std::size_t{pair_second(key)}};
   }
   return std::nullopt;
 }

@@ -144,12 +144,13 @@ bool Testbed::spawn(Vector centre, Vector v) {
     say(s.walls ? "no room there: a block cannot overlap the walls" : "no room there: outside the world", true);
     return false;
   }
-  // Nor into a body (a tower would explode): one scan per click.
+  // Nor into a body (a tower would explode): one scan per click, with the
+  // sheet's test (mdiff, has_origin), so a block is refused exactly where
+  // Collision would see it overlap.
   const Components& c = world_.components;
   for (std::size_t e = 0; e < c.size(); ++e) {
-    const Vector q = c.position[e];
-    if (pos.x < q.x + c.box[e].width && q.x < pos.x + spawn_size && pos.y < q.y + c.box[e].height &&
-        q.y < pos.y + spawn_size) {
+    const auto [s_pos, s_box] = Rect::mdiff(pos, Rect{spawn_size, spawn_size}, c.position[e], c.box[e]);
+    if (Rect::has_origin(s_pos, s_box)) {
       say("no room there: a block cannot overlap another body", true);
       return false;
     }

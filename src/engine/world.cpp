@@ -75,8 +75,7 @@ void World::check_health() {
   }
   health.suspect.reset();
   double deepest = Health::deep_overlap;
-  for (const Pair p : course_pairs()) {
-    if (!std::isfinite(components.mass[p.c]) && !std::isfinite(components.mass[p.b])) continue;
+  for (const Pair p : course_pairs()) {  // (never two infinite masses)
     const double d = overlap_depth(components, p.c, p.b);
     if (d > deepest) {
       deepest = d;
