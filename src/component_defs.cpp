@@ -15,6 +15,8 @@ EntityId Components::create() {
   velocity.push_back(component::velocity::def);
   sum_forces.push_back(component::sum_forces::def);
   restitution.push_back(component::restitution::def);
+  friction.push_back(component::friction::def);
+  rules_.emplace_back();
   return id;
 }
 
@@ -26,6 +28,14 @@ void Components::reserve(std::size_t n) {
   velocity.reserve(n);
   sum_forces.reserve(n);
   restitution.reserve(n);
+  friction.reserve(n);
+  rules_.reserve(n);
+}
+
+void Components::set_rules(EntityId e, const ContactRules& r) {
+  ruled_ -= rules_[e].plain() ? 0 : 1;
+  ruled_ += r.plain() ? 0 : 1;
+  rules_[e] = r;
 }
 
 }  // namespace physics

@@ -6,6 +6,7 @@
 #include <queue>
 
 #include "engine/contact.hpp"
+#include "engine/rules.hpp"
 #include "systems/collision.hpp"
 #include "utils/rect.hpp"
 
@@ -66,7 +67,11 @@ void impact(Components& k, EntityId c, EntityId b, Vector n, double t, double h,
   const double kick = std::max((1.0 + e) * Vector::dot(ac - ab, n) * (h - t), e * vn);
   const double dv = -(1.0 + e) * vn + kick;
   Vector vc2 = vc, vb2 = vb;
-  change_normal_velocity(vc2, vb2, n, dv, inverse_mass(k.mass[c]), inverse_mass(k.mass[b]));
+  const double wc = inverse_mass(k.mass[c]), wb = inverse_mass(k.mass[b]);
+  change_normal_velocity(vc2, vb2, n, dv, wc, wb);
+  // Coulomb friction with this impact's normal impulse (engine/contact.hpp).
+  const double mu = pair_friction(k.friction[c], k.friction[b]);
+  if (mu > 0.0) apply_friction(vc2, vb2, n, mu * (dv / (wc + wb)), wc, wb);
   // Keep position + t·velocity continuous at t (see the header).
   k.position[c] = k.position[c] + t * (vc - vc2);
   k.position[b] = k.position[b] + t * (vb - vb2);
@@ -116,8 +121,10 @@ void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h, V
   std::vector<std::uint32_t> version(count, 0);
   std::priority_queue<Event, std::vector<Event>, Later> queue;
 
+  const bool rules = k.any_rules();
   const auto predict = [&](std::uint32_t ic, std::uint32_t ib, double t0) {
     if (ic > ib) std::swap(ic, ib);
+    if (rules && !solvable(k, entities[ic], entities[ib], h)) return;  // as the broad phase's pairs
     if (const auto hit = time_of_impact(k, entities[ic], entities[ib], t0, h))
       queue.push(Event{hit->t, ic, ib, version[ic], version[ib]});
   };

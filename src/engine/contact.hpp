@@ -16,6 +16,8 @@ struct Contact {
   Vector penetration;  // moves c out of b (the shortest of the four vectors of the sheet's figure 2)
   Vector normal;       // unit, along penetration
   bool approaching;    // whether an impulse was applied (v·n < 0)
+  double jn = 0.0;     // normal impulse applied (0 if not approaching)
+  double jt = 0.0;     // tangential (friction) impulse applied, along tangent(normal)
 };
 
 // w = 1/M, and 0 for an infinite mass (a wall is not moved by any impulse).
@@ -34,6 +36,33 @@ inline void apply_normal_impulse(Vector& vc, Vector& vb, Vector n, double j, dou
 // reverses the normal velocity bit for bit) or the masses are equal (1/2).
 inline void change_normal_velocity(Vector& vc, Vector& vb, Vector n, double dv, double wc, double wb) {
   apply_normal_impulse(vc, vb, n, dv, wc / (wc + wb), wb / (wc + wb));
+}
+
+// ---- Friction (beyond the sheet; docs/game-physics.md) ----
+
+// A pair's coefficient: sqrt(mu_a mu_b), Box2D's mixing rule (so a
+// frictionless body, mu = 0, slides on anything).
+inline double pair_friction(double mu_a, double mu_b) { return std::sqrt(mu_a * mu_b); }
+
+// The unit tangent of a contact: the normal turned a quarter turn. Friction
+// impulses are signed along it.
+inline Vector tangent(Vector n) { return {-n.y, n.x}; }
+
+// Coulomb's law after a normal impulse: the tangential impulse that stops
+// the relative sliding along t if it needs at most `limit` = mu·|j_n|
+// (sticking: applied as a velocity change, so a wall stops a block bit for
+// bit), otherwise `limit` against the sliding. Returns the impulse applied.
+inline double apply_friction(Vector& vc, Vector& vb, Vector n, double limit, double wc, double wb) {
+  const Vector t = tangent(n);
+  const double vt = Vector::dot(vc - vb, t);
+  const double stop = -vt / (wc + wb);
+  if (std::abs(stop) <= limit) {
+    change_normal_velocity(vc, vb, t, -vt, wc, wb);
+    return stop;
+  }
+  const double jt = stop > 0.0 ? limit : -limit;
+  apply_normal_impulse(vc, vb, t, jt, wc, wb);
+  return jt;
 }
 
 }  // namespace physics

@@ -52,6 +52,11 @@ inline void apply(Components& k, const ContactConstraint& ct, double impulse) {
   apply_normal_impulse(k.velocity[ct.c], k.velocity[ct.b], axis_normal[ct.axis], impulse, ct.wc, ct.wb);
 }
 
+// The same law along the contact's tangent (friction).
+inline void apply_tangent(Components& k, const ContactConstraint& ct, double impulse) {
+  apply_normal_impulse(k.velocity[ct.c], k.velocity[ct.b], tangent(axis_normal[ct.axis]), impulse, ct.wc, ct.wb);
+}
+
 // Which body of a contact bears the other's weight: the one lying in the
 // direction of gravity. 0: neither (side contact, or no gravity).
 // +1: b is below c (c rests on b). -1: c is below b.
@@ -182,6 +187,7 @@ void ContactSolver::prepare(const Components& k, double h, Vector g, const Solve
     contacts_.push_back(ct);
   }
   stats.contacts += static_cast<std::int64_t>(contacts_.size());
+  prepare_friction(k);
   // Velocities before any impulse, for the energy guard and the impact time.
   v_start_.resize(k.size());
   v_inelastic_.resize(k.size());
@@ -198,7 +204,7 @@ void ContactSolver::warm_start(Components& k) {
   for (ContactConstraint& ct : contacts_) {
     if (!ct.resting) continue;
     const auto kk = key(ct.c, ct.b);
-    const auto probe = std::make_tuple(kk, ct.axis, -infinity);
+    const auto probe = std::make_tuple(kk, ct.axis, -infinity, -infinity);
     if (from != warm_.begin() && !(*std::prev(from) < probe)) from = warm_.begin();
     // Galloping: the answer is usually a step or two ahead.
     auto hi = from;
@@ -211,6 +217,12 @@ void ContactSolver::warm_start(Components& k) {
     if (it != warm_.end() && std::get<0>(*it) == kk && std::get<1>(*it) == ct.axis) {
       ct.lambda = std::get<2>(*it);
       apply(k, ct, ct.lambda);
+      if (!friction_.empty()) {
+        FrictionRow& f = friction_[static_cast<std::size_t>(&ct - contacts_.data())];
+        // Within the cone of this substep's start (mu may be 0 for a pair that had none).
+        f.lambda = std::clamp(std::get<3>(*it), -f.mu * ct.lambda, f.mu * ct.lambda);
+        if (f.lambda != 0.0) apply_tangent(k, ct, f.lambda);
+      }
     }
   }
 }
@@ -223,16 +235,12 @@ void ContactSolver::warm_start(Components& k) {
 template <bool after_bounce>
 void ContactSolver::relax(Components& k, Vector g, const SolverSettings& s) {
   for (ContactConstraint& ct : contacts_) ct.lambda2 = 0.0;
+  for (FrictionRow& f : friction_) f.lambda2 = 0.0;
   const auto target = [&](const ContactConstraint& ct) { return after_bounce && !ct.resting ? 0.0 : ct.target; };
-  for (int it = 0; it < s.iterations; ++it) {
-    for (ContactConstraint& ct : contacts_) {
-      const double vn = Vector::dot(k.velocity[ct.c] - k.velocity[ct.b], axis_normal[ct.axis]);
-      double& acc = after_bounce ? ct.lambda2 : ct.lambda;
-      const double lambda = std::max(acc - (vn - target(ct)) * ct.inv_w, 0.0);
-      apply(k, ct, lambda - acc);
-      acc = lambda;
-    }
-  }
+  if (friction_.empty())
+    iterate<after_bounce, false>(k, s);
+  else
+    iterate<after_bounce, true>(k, s);
   if (!s.shock_propagation || Vector::is_zero(g)) return;
   if (!have_order_) support_order_ = bottom_up(k, contacts_, g), have_order_ = true;
   for (const std::size_t i : support_order_) {
@@ -247,6 +255,47 @@ void ContactSolver::relax(Components& k, Vector g, const SolverSettings& s) {
       if (ct.wb > 0.0) k.velocity[ct.b] = k.velocity[ct.b] - (target(ct) - vn) * n;
     }
   }
+}
+
+// Sequential impulses with accumulated clamping: the normal impulse never
+// pulls; with friction, the tangential one then stays within mu times the
+// normal impulse accumulated so far (Coulomb's cone, as Box2D clamps it).
+// `friction` is a compile-time constant: the frictionless loop is the one
+// that ran before friction existed.
+template <bool after_bounce, bool friction>
+void ContactSolver::iterate(Components& k, const SolverSettings& s) {
+  const auto target = [&](const ContactConstraint& ct) { return after_bounce && !ct.resting ? 0.0 : ct.target; };
+  for (int it = 0; it < s.iterations; ++it) {
+    for (std::size_t i = 0; i < contacts_.size(); ++i) {
+      ContactConstraint& ct = contacts_[i];
+      const double vn = Vector::dot(k.velocity[ct.c] - k.velocity[ct.b], axis_normal[ct.axis]);
+      double& acc = after_bounce ? ct.lambda2 : ct.lambda;
+      const double lambda = std::max(acc - (vn - target(ct)) * ct.inv_w, 0.0);
+      apply(k, ct, lambda - acc);
+      acc = lambda;
+      if constexpr (friction) {
+        FrictionRow& f = friction_[i];
+        if (f.mu == 0.0) continue;
+        const double vt = Vector::dot(k.velocity[ct.c] - k.velocity[ct.b], tangent(axis_normal[ct.axis]));
+        double& acc_t = after_bounce ? f.lambda2 : f.lambda;
+        const double limit = f.mu * acc;
+        const double lt = std::clamp(acc_t - vt * ct.inv_w, -limit, limit);
+        apply_tangent(k, ct, lt - acc_t);
+        acc_t = lt;
+      }
+    }
+  }
+}
+
+// One friction row per contact if any contact has friction, none otherwise.
+void ContactSolver::prepare_friction(const Components& k) {
+  friction_.clear();
+  bool any = false;
+  for (const ContactConstraint& ct : contacts_) any = any || (k.friction[ct.c] > 0.0 && k.friction[ct.b] > 0.0);
+  if (!any) return;
+  friction_.reserve(contacts_.size());
+  for (const ContactConstraint& ct : contacts_)
+    friction_.push_back({pair_friction(k.friction[ct.c], k.friction[ct.b]), 0.0, 0.0});
 }
 
 // Restitution, Poisson's way: each impact gets e times the impulse that
@@ -310,9 +359,12 @@ void ContactSolver::impact_time(Components& k, double h, Vector g) {
 
 // The resting contacts' impulses, for the next substep's warm start.
 void ContactSolver::store() {
-  std::vector<std::tuple<std::uint64_t, int, double>> next_warm;
-  for (const ContactConstraint& ct : contacts_)
-    if (ct.resting && ct.lambda + ct.lambda2 > 0.0) next_warm.emplace_back(key(ct.c, ct.b), ct.axis, ct.lambda + ct.lambda2);
+  std::vector<std::tuple<std::uint64_t, int, double, double>> next_warm;
+  for (std::size_t i = 0; i < contacts_.size(); ++i) {
+    const ContactConstraint& ct = contacts_[i];
+    const double jt = friction_.empty() ? 0.0 : friction_[i].lambda + friction_[i].lambda2;
+    if (ct.resting && ct.lambda + ct.lambda2 > 0.0) next_warm.emplace_back(key(ct.c, ct.b), ct.axis, ct.lambda + ct.lambda2, jt);
+  }
   if (!std::is_sorted(next_warm.begin(), next_warm.end())) std::sort(next_warm.begin(), next_warm.end());
   warm_ = std::move(next_warm);
 }

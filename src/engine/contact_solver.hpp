@@ -72,6 +72,15 @@ struct ContactConstraint {
   bool resting;      // no restitution target: its impulse may warm start the next substep
 };
 
+// A contact's friction, beside its ContactConstraint (same index), kept only
+// while some contact of the substep has friction: the frictionless loop
+// reads no more memory than before friction existed.
+struct FrictionRow {
+  double mu;         // the pair's coefficient, sqrt(mu_c mu_b)
+  double lambda;     // accumulated tangential impulse, along tangent(n), |.| <= mu × normal
+  double lambda2;    // the same in the relaxation after the bounces
+};
+
 class ContactSolver {
  public:
   void solve_velocities(Components& k, std::span<const EntityId> entities, double h, Vector gravity,
@@ -81,12 +90,20 @@ class ContactSolver {
 
   SolverStats stats;
 
+  // The last substep's contacts (velocity stage) and their friction rows
+  // (empty when no contact had friction), for contact events.
+  std::span<const ContactConstraint> constraints() const { return contacts_; }
+  std::span<const FrictionRow> friction_rows() const { return friction_; }
+
  private:
   // The stages of solve_velocities, in order.
   void prepare(const Components& k, double h, Vector g, const SolverSettings& s);
   void warm_start(Components& k);
   template <bool after_bounce>
   void relax(Components& k, Vector g, const SolverSettings& s);
+  template <bool after_bounce, bool friction>
+  void iterate(Components& k, const SolverSettings& s);
+  void prepare_friction(const Components& k);
   void restitution(Components& k, Vector g, const SolverSettings& s);
   void guard_energy(Components& k);
   bool any_body_gained(const Components& k) const;
@@ -99,6 +116,7 @@ class ContactSolver {
 
   std::vector<Pair> pairs_;
   std::vector<ContactConstraint> contacts_;
+  std::vector<FrictionRow> friction_;          // empty, or one per contact
   std::vector<std::size_t> support_order_;     // bottom-up order of this substep's contacts
   bool have_order_ = false;
   std::vector<Vector> v_start_, v_inelastic_;  // indexed by entity id
@@ -116,8 +134,8 @@ class ContactSolver {
   std::vector<std::uint32_t> root_index_;      // guard_energy: island of each root
   std::vector<double> toi_;                    // earliest impact time per body, indexed by entity id
   // Impulses of the previous substep's resting contacts: (pair key, axis,
-  // impulse), sorted.
-  std::vector<std::tuple<std::uint64_t, int, double>> warm_;
+  // normal impulse, tangential impulse), sorted.
+  std::vector<std::tuple<std::uint64_t, int, double, double>> warm_;
 };
 
 }  // namespace physics

@@ -21,8 +21,11 @@ Bounds swept(const Components& k, EntityId e, double h, double reach) {
 
 // ---- the course pass ----
 
-BroadPhase::CoursePairs BroadPhase::course_pairs(const Components& k, std::span<const EntityId> entities) {
+BroadPhase::CoursePairs BroadPhase::course_pairs(const Components& k, std::span<const EntityId> entities,
+                                                 double h) {
   course_entities_ = entities;
+  course_rules_ = k.any_rules();
+  course_h_ = h;
   stats_ = {};
   found_late_.clear();
   course_build(k);
@@ -130,6 +133,7 @@ void BroadPhase::find(const Components& k, std::span<const EntityId> entities, d
     // bound fails it, so a lost body has no pair.
     if (a.x0 <= b.x1 && b.x0 <= a.x1 && a.y0 <= b.y1 && b.y0 <= a.y1) out.push_back({entities[i], entities[j]});
   }
+  if (k.any_rules()) std::erase_if(out, [&](Pair p) { return !solvable(k, p.c, p.b, h); });
 }
 
 void BroadPhase::fat_rebuild(const Components& k, std::span<const EntityId> entities) {
@@ -163,6 +167,7 @@ void brute_force_pairs(const Components& k, std::span<const EntityId> entities, 
     const Bounds bi = swept(k, entities[i], h, reach);
     for (std::size_t j = i + 1; j < n; ++j) {
       if (!std::isfinite(k.mass[entities[i]]) && !std::isfinite(k.mass[entities[j]])) continue;
+      if (!solvable(k, entities[i], entities[j], h)) continue;
       const Bounds bj = swept(k, entities[j], h, reach);
       if (bi.x0 <= bj.x1 && bj.x0 <= bi.x1 && bi.y0 <= bj.y1 && bj.y0 <= bi.y1) out.push_back({entities[i], entities[j]});
     }

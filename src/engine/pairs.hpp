@@ -15,7 +15,9 @@
 //    definition brute_force_pairs() keeps for the tests. The grid is built
 //    on boxes grown by `fat_margin` and kept while every body stays inside
 //    its fat box: a resting pile costs a filter per call, not a grid.
-// Pairs of two infinite masses are never listed (two walls never collide).
+// Pairs of two infinite masses are never listed (two walls never collide),
+// nor pairs the bodies' contact rules exclude (engine/rules.hpp: filters,
+// sensors, one-way platforms), tested only while some body has rules.
 #pragma once
 
 #include <cstdint>
@@ -24,6 +26,7 @@
 
 #include "component_defs.hpp"
 #include "engine/broadphase.hpp"
+#include "engine/rules.hpp"
 
 namespace physics {
 
@@ -38,8 +41,9 @@ struct Pair {
 class BroadPhase {
  public:
   class CoursePairs;
-  // The course pass's pairs; valid until the next call on this broad phase.
-  CoursePairs course_pairs(const Components& k, std::span<const EntityId> entities);
+  // The course pass's pairs in a step of h ms (h: for one-way platforms);
+  // valid until the next call on this broad phase.
+  CoursePairs course_pairs(const Components& k, std::span<const EntityId> entities, double h);
 
   void find(const Components& k, std::span<const EntityId> entities, double h, double reach, std::vector<Pair>& out);
 
@@ -89,6 +93,8 @@ class BroadPhase {
 
   // Course pass state.
   std::span<const EntityId> course_entities_;  // the Collision system's bodies, during its pass
+  bool course_rules_ = false;  // some body has contact rules: test each pair
+  double course_h_ = 0.0;
   std::vector<PairKey> found_late_;  // min-heap: pairs found after a body left its box
   std::size_t next_ = 0, moved_ = 0, rebuild_after_ = 0;
   PairKey last_ = ~PairKey{0};
@@ -110,7 +116,8 @@ class BroadPhase::CoursePairs {
    public:
     Pair operator*() const { return pair_; }
     Iterator& operator++() {
-      done_ = !bp_->course_next(*k_, pair_);
+      do done_ = !bp_->course_next(*k_, pair_);
+      while (!done_ && bp_->course_rules_ && !solvable(*k_, pair_.c, pair_.b, bp_->course_h_));
       return *this;
     }
     bool operator!=(End) const { return !done_; }

@@ -85,7 +85,7 @@ void World::check_health() {
 }
 
 BroadPhase::CoursePairs World::course_pairs() {
-  return broadphase.course_pairs(components, systems.collision->entities());
+  return broadphase.course_pairs(components, systems.collision->entities(), params.dt / params.substeps);
 }
 
 double World::kinetic_energy() const {

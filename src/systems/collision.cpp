@@ -38,7 +38,7 @@ bool Collision::resolve(Components& k, EntityId c, EntityId b, Contact* out) {
   // Q8 stub: // (v . n < 0), apply j = -(1 + e)(v . n) / (1/M_c + 1/M_b) with
   // Q8 stub: // e = min(restitution of c, of b): v_c += n j / M_c, v_b -= n j / M_b
   // Q8 stub: // (engine/contact.hpp has change_normal_velocity and inverse_mass). If out is not
-  // Q8 stub: // null, fill it: Contact{c, b, penetration, normalised n, approaching}. Return true.
+  // Q8 stub: // null, fill it: Contact{c, b, penetration, normalised n, approaching, j}. Return true.
   // Q8 stub: (void)k, (void)c, (void)b, (void)out;
   // Q8 stub: return false;
   const double mc = k.mass[c];
@@ -80,6 +80,7 @@ bool Collision::resolve(Components& k, EntityId c, EntityId b, Contact* out) {
   // separating (it was pushed apart last frame but still overlaps) gets the
   // position correction alone: applying j there would pull it back together.
   const bool approaching = vn < 0.0;
+  double jn = 0.0, jt = 0.0;
   if (approaching) {
     // The pair's restitution is the smaller of the two materials': a body made
     // of clay stays dead whatever it hits. Default 1 (the sheet's e).
@@ -95,9 +96,15 @@ bool Collision::resolve(Components& k, EntityId c, EntityId b, Contact* out) {
     // one pass meets the second one with the velocity the first gave it
     // (sequential impulses), so nothing is counted twice.
     const double dv = -(1.0 + e) * vn;
-    change_normal_velocity(k.velocity[c], k.velocity[b], n, dv, inverse_mass(mc), inverse_mass(mb));
+    const double wc = inverse_mass(mc), wb = inverse_mass(mb);
+    change_normal_velocity(k.velocity[c], k.velocity[b], n, dv, wc, wb);
+    jn = dv / (wc + wb);
+    // Beyond the sheet: Coulomb friction, when both bodies have some
+    // (engine/contact.hpp); without it the pair is the sheet's.
+    const double mu = pair_friction(k.friction[c], k.friction[b]);
+    if (mu > 0.0) jt = apply_friction(k.velocity[c], k.velocity[b], n, mu * jn, wc, wb);
   }
-  if (out) *out = Contact{c, b, pen, n, approaching};
+  if (out) *out = Contact{c, b, pen, n, approaching, jn, jt};
   return true;
   // Q8 end
 }
