@@ -80,14 +80,18 @@ void step(World& w) {
     w.before_move(h);  // the engine's numerics options (docs/numerics.md); nothing in the course mode
     if (s.move) w.times.time(Stage::move, [&] { s.move->update(w.components, h); });
     if (!s.collision) continue;
-    if (w.params.solver == Solver::stable)
+    if (w.params.solver == Solver::stable) {
       w.after_move();  // the stable solver projects overlaps apart instead of the course's pass
-    else
+    } else {
       w.times.time(Stage::collision, [&] { s.collision->update(w.components, w.course_pairs()); });
+      w.record_contacts();  // the pass's contacts, for contact events (engine/events.hpp), if enabled
+    }
   }
   ++w.times.steps;
   ++w.frame;
-  // Not part of the sheet: the engine's look at the state it left (engine/health.hpp).
+  // Not part of the sheet: the contact events of the step, and the engine's
+  // look at the state it left (engine/health.hpp).
+  w.finish_events();
   w.times.time(Stage::health, [&] { w.check_health(); });
 }
 

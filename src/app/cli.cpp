@@ -13,6 +13,7 @@
 #include "app/dump.hpp"
 #include "app/headless.hpp"
 #include "app/offscreen.hpp"
+#include "app/save.hpp"
 #include "app/scene_json.hpp"
 
 namespace physics::Cli {
@@ -78,6 +79,8 @@ po::options_description descriptions() {
       ("gravity", po::value<std::string>()->value_name("X,Y"), "gravity, px/ms^2 (y grows downwards), e.g. 0,0.001")
       ("restitution", po::value<std::string>()->value_name("E"),
        "restitution in [0, 1] of the walls and every block")
+      ("friction", po::value<std::string>()->value_name("MU"),
+       "friction coefficient (>= 0) of the walls and every block; a pair uses sqrt(mu_a mu_b)")
       ("seed", po::value<std::string>()->value_name("S"),
        "seed of the random generators (the k-th generator gets S + k)")
       ("ccd", po::value<std::string>()->value_name("on|off")->implicit_value("on"),
@@ -87,6 +90,10 @@ po::options_description descriptions() {
       ("iterations", po::value<std::string>()->value_name("N"), "iterations of the stable solver (1-1000)")
       ("dump", po::value<std::string>()->value_name("FILE.csv"),
        "write the final state as CSV: id,x,y,w,h,vx,vy,mass")
+      ("events", po::value<std::string>()->value_name("FILE.csv"),
+       "write the contact events of every step as CSV: frame,event,a,b,nx,ny,depth,jn,jt")
+      ("save", po::value<std::string>()->value_name("FILE.json"),
+       "write the final state as a scene file that runs on bit for bit (--scene FILE.json)")
       ("trace", po::value<std::string>()->value_name("FILE.csv"),
        "write every frame as CSV: frame,id,x,y,w,h,vx,vy,mass (frame 0 = the initial state)")
       ("screenshot", po::value<std::string>()->value_name("FILE.png"),
@@ -118,7 +125,7 @@ int headless_run(const SceneSpec& spec, const std::vector<Body>& bodies, const O
     return 3;
   }
   Headless::print_summary(out, w, summary, why, spec.name);
-  rec.finish(w);
+  rec.finish(w, spec);
   if (o.strict && w.health.escaped > 0) {
     err << "game: --strict: " << w.health.escaped << " bod" << (w.health.escaped == 1 ? "y" : "ies")
         << " left the world (the first: body " << w.health.first_escape->id << ", by frame "
@@ -205,6 +212,11 @@ Options parse(std::span<const std::string> args) {
     ov.restitution = real("--restitution", get("restitution"));
     if (*ov.restitution < 0 || *ov.restitution > 1) bad("--restitution", "must be in [0, 1]", get("restitution"));
   }
+  if (has("friction")) {
+    ov.friction = real("--friction", get("friction"));
+    if (!(*ov.friction >= 0 && *ov.friction <= max_friction))
+      bad("--friction", "must be in [0, 1000]", get("friction"));
+  }
   if (has("seed")) {
     const std::string s = get("seed");
     std::uint64_t v = 0;
@@ -221,6 +233,8 @@ Options parse(std::span<const std::string> args) {
   }
   if (has("dump")) o.dump = get("dump");
   if (has("trace")) o.trace = get("trace");
+  if (has("events")) o.events = get("events");
+  if (has("save")) o.save = get("save");
   if (has("screenshot")) {
     o.screenshot = get("screenshot");
     std::string ext = std::filesystem::path(o.screenshot).extension().string();
@@ -228,9 +242,8 @@ Options parse(std::span<const std::string> args) {
     if (!o.screenshot.empty() && ext != ".png")
       bad("--screenshot", "only PNG is written: the name must end in .png", o.screenshot);
   }
-  for (const auto* f : {&o.dump, &o.trace, &o.screenshot})
-    if (f->empty() && vm.count(f == &o.dump ? "dump" : f == &o.trace ? "trace" : "screenshot"))
-      throw UsageError("an output file name must not be empty");
+  for (const char* flag : {"dump", "trace", "screenshot", "events", "save"})
+    if (vm.count(flag) && get(flag).empty()) throw UsageError("an output file name must not be empty");
   if (has("overlays")) o.overlays = overlays(get("overlays"));
   return o;
 }
@@ -247,18 +260,25 @@ SceneSpec resolve_scene(const std::string& name) {
   return read_scene_file(name);
 }
 
-Recorder::Recorder(const std::string& dump, const std::string& trace) : dump_path_(dump), trace_path_(trace) {
+Recorder::Recorder(const Options& o)
+    : dump_path_(o.dump), trace_path_(o.trace), events_path_(o.events), save_path_(o.save) {
   const auto open = [](std::ofstream& f, const std::string& path, const char* flag) {
     if (path.empty()) return;
     f.open(path, std::ios::binary | std::ios::trunc);
     if (!f) throw UsageError(std::string(flag) + ": cannot write " + path + ": " + std::strerror(errno));
     f.precision(17);
   };
-  open(dump_, dump, "--dump");
-  open(trace_, trace, "--trace");
+  open(dump_, dump_path_, "--dump");
+  open(trace_, trace_path_, "--trace");
+  open(events_, events_path_, "--events");
+  open(save_, save_path_, "--save");
 }
 
-void Recorder::start(const World& w) {
+void Recorder::start(World& w) {
+  if (events_.is_open()) {
+    w.enable_events();
+    Dump::write_events_header(events_);
+  }
   if (!trace_.is_open()) return;
   Dump::write_trace_header(trace_);
   Dump::write_trace_rows(trace_, w);
@@ -266,26 +286,31 @@ void Recorder::start(const World& w) {
 
 void Recorder::after_step(const World& w) {
   if (trace_.is_open()) Dump::write_trace_rows(trace_, w);
+  if (events_.is_open()) Dump::write_events(events_, w);
 }
 
-void Recorder::restart(const World& w) { after_step(w); }
+void Recorder::restart(World& w) {
+  if (events_.is_open()) w.enable_events();
+  if (trace_.is_open()) Dump::write_trace_rows(trace_, w);
+}
 
 void Recorder::abandon() {
-  if (!dump_.is_open()) return;
-  dump_.close();
   std::error_code ec;
-  std::filesystem::remove(dump_path_, ec);
+  for (auto [file, path] : {std::pair{&dump_, &dump_path_}, {&save_, &save_path_}}) {
+    if (!file->is_open()) continue;
+    file->close();
+    std::filesystem::remove(*path, ec);
+  }
 }
 
-void Recorder::finish(const World& w) {
-  if (dump_.is_open()) {
-    Dump::write_state(dump_, w);
-    dump_.flush();
-    if (!dump_) throw std::runtime_error("cannot write " + dump_path_);
-  }
-  if (trace_.is_open()) {
-    trace_.flush();
-    if (!trace_) throw std::runtime_error("cannot write " + trace_path_);
+void Recorder::finish(const World& w, const SceneSpec& scene) {
+  if (dump_.is_open()) Dump::write_state(dump_, w);
+  if (save_.is_open()) save_ << to_json(Save::scene_of(w, scene));
+  for (auto [file, path] : {std::pair{&dump_, &dump_path_}, {&trace_, &trace_path_}, {&events_, &events_path_},
+                            {&save_, &save_path_}}) {
+    if (!file->is_open()) continue;
+    file->flush();
+    if (!*file) throw std::runtime_error("cannot write " + *path);
   }
 }
 
@@ -339,7 +364,7 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err,
     return 2;
   }
   try {
-    Recorder rec(o.dump, o.trace);
+    Recorder rec(o);
     std::string why = "--headless given";
     if (!o.headless) {
       if (!window) {
@@ -362,7 +387,7 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err,
         } catch (const NoWindow& e) {
           err << "game: " << e.what() << "; running headless\n";
           why = std::string("window failed: ") + e.what();
-          rec = Recorder(o.dump, o.trace);  // start the files again
+          rec = Recorder(o);  // start the files again
         }
       }
     }

@@ -32,7 +32,7 @@ struct Options {
   std::string scene{"many"};
   std::optional<std::int64_t> frames;
   Overrides overrides;
-  std::string dump, trace, screenshot;
+  std::string dump, trace, screenshot, events, save;
   Overlays overlays;
 };
 
@@ -50,20 +50,22 @@ std::string usage();
 // SceneError.
 SceneSpec resolve_scene(const std::string& name_or_file);
 
-// --dump and --trace files, opened before the run so that a bad path is bad
-// input (exit 2) rather than a lost run.
+// --dump, --trace, --events and --save files, opened before the run so that
+// a bad path is bad input (exit 2) rather than a lost run.
 class Recorder {
  public:
-  Recorder(const std::string& dump, const std::string& trace);  // throws UsageError
-  void start(const World& w);       // trace: header and frame 0
-  void after_step(const World& w);  // trace: this frame
-  void restart(const World& w);     // trace: a new world's frame 0 (testbed reset)
-  void finish(const World& w);      // dump: the final state; throws std::runtime_error on I/O error
-  void abandon();                   // dump: removed, the run ended on a non-finite state
+  explicit Recorder(const Options& o);  // throws UsageError
+  void start(World& w);             // trace: header and frame 0; events: enabled in w, header
+  void after_step(const World& w);  // trace: this frame; events: this step's
+  void restart(World& w);           // a new world (testbed reset): its frame 0, its events
+  // dump: the final state; save: the world as the scene `scene` (it was made
+  // from, after overrides) continued. Throws std::runtime_error on I/O error.
+  void finish(const World& w, const SceneSpec& scene);
+  void abandon();                   // dump and save: removed, the run ended on a non-finite state
 
  private:
-  std::string dump_path_, trace_path_;
-  std::ofstream dump_, trace_;
+  std::string dump_path_, trace_path_, events_path_, save_path_;
+  std::ofstream dump_, trace_, events_, save_;
 };
 
 // What the window front end runs: the testbed over `scenes`, starting at

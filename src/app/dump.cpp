@@ -26,16 +26,27 @@ std::string number(double v) {
 
 void write_state(std::ostream& out, const World& w) {
   out << header << '\n';
-  for (std::size_t e = 0; e < w.components.size(); ++e) row(out, w, e);
+  for (std::size_t e = 0; e < w.components.size(); ++e)
+    if (w.alive(static_cast<EntityId>(e))) row(out, w, e);
 }
 
 void write_trace_header(std::ostream& out) { out << trace_header << '\n'; }
 
 void write_trace_rows(std::ostream& out, const World& w) {
   for (std::size_t e = 0; e < w.components.size(); ++e) {
+    if (!w.alive(static_cast<EntityId>(e))) continue;
     out << w.frame << ',';
     row(out, w, e);
   }
+}
+
+void write_events_header(std::ostream& out) { out << events_header << '\n'; }
+
+void write_events(std::ostream& out, const World& w) {
+  for (const ContactEvent& e : w.events.events())
+    out << e.frame << ',' << (e.kind == EventKind::begin ? "begin" : "end") << ',' << e.a << ',' << e.b << ','
+        << number(e.normal.x) << ',' << number(e.normal.y) << ',' << number(e.depth) << ',' << number(e.jn) << ','
+        << number(e.jt) << '\n';
 }
 
 }  // namespace physics::Dump

@@ -1,5 +1,6 @@
 // CSV state of a world, for --dump (final state) and --trace (every frame).
 //   id,x,y,w,h,vx,vy,mass            one row per entity in creation order
+//                                    (a destroyed body has none; ids are kept)
 //   frame,id,x,y,w,h,vx,vy,mass      the trace: the same, for frame 0 (the
 //                                    initial state) and after every step
 // Numbers are the shortest text that reads back as the same double (so a
@@ -22,5 +23,11 @@ std::string number(double v);
 void write_state(std::ostream& out, const World& w);        // header + rows
 void write_trace_header(std::ostream& out);
 void write_trace_rows(std::ostream& out, const World& w);   // rows of w.frame
+
+// --events: the contact events of each step (engine/events.hpp).
+//   frame,event,a,b,nx,ny,depth,jn,jt   event: begin or end; ids as in the dump
+inline constexpr const char* events_header = "frame,event,a,b,nx,ny,depth,jn,jt";
+void write_events_header(std::ostream& out);
+void write_events(std::ostream& out, const World& w);  // the last step's
 
 }  // namespace physics::Dump

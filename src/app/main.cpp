@@ -31,7 +31,7 @@ int run_window(Cli::Session& s) {
   Cli::Recorder& rec = *s.recorder;
   rec.start(tb.world());
   tb.on_step = [&](const World& w) { rec.after_step(w); };
-  tb.on_reset = [&](const World& w) { rec.restart(w); };
+  tb.on_reset = [&](const World&) { rec.restart(tb.world()); };
   std::optional<std::int64_t> frames = o.frames;
   if (!o.screenshot.empty() && !frames) frames = Cli::screenshot_frames;
 
@@ -60,7 +60,9 @@ int run_window(Cli::Session& s) {
     *s.err << "game: " << Headless::non_finite_line(tb.world()) << "\n";
     return 3;
   }
-  rec.finish(tb.world());
+  SceneSpec scene = tb.scene();
+  apply(scene, o.overrides);
+  rec.finish(tb.world(), scene);
   return 0;
 }
 

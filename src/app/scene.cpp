@@ -66,6 +66,9 @@ struct Checker {
   void mass(double m, At at) const {
     if (std::isnan(m) || m <= 0.0 || m == -infinity) fail(at, "must be > 0 or \"inf\" (got " + num(m) + ")");
   }
+  void friction(double mu, At at) const {
+    if (!(mu >= 0.0 && mu <= max_friction)) fail(at, "must be in [0, " + num(max_friction) + "] (got " + num(mu) + ")");
+  }
   void restitution(double e, At at) const {
     if (!(e >= 0.0 && e <= 1.0)) fail(at, "must be in [0, 1] (got " + num(e) + ")");
   }
@@ -110,6 +113,24 @@ void check_block(const Checker& k, const BlockSpec& b, const std::string& p) {
   k.motion(b.force, At{p, ".force"});
   k.motion(b.impulse, At{p, ".impulse"});
   if (b.restitution) k.restitution(*b.restitution, At{p, ".restitution"});
+  if (b.contact.friction) k.friction(*b.contact.friction, At{p, ".friction"});
+}
+
+// A saved world's state: the warm-start impulses name bodies of the scene
+// (walls first, then blocks, as the ids of --dump), on one of the four axes.
+void check_state(const Checker& k, const SceneSpec& s) {
+  if (s.state->frame < 0) k.fail("state.frame", "must be >= 0 (got " + std::to_string(s.state->frame) + ")");
+  const std::int64_t bodies = body_count(s) + (s.walls ? 4 : 0);
+  for (std::size_t i = 0; i < s.state->warm_start.size(); ++i) {
+    const WarmImpulse& w = s.state->warm_start[i];
+    const std::string at = "state.warm_start[" + std::to_string(i) + "]";
+    if (!(w.pair.c < w.pair.b && w.pair.b < bodies))
+      k.fail(at, "must name two bodies c < b < " + std::to_string(bodies) + " (got " + std::to_string(w.pair.c) +
+                     ", " + std::to_string(w.pair.b) + ")");
+    if (w.axis < 0 || w.axis > 3) k.fail(at, "axis must be 0-3 (got " + std::to_string(w.axis) + ")");
+    if (!(std::isfinite(w.jn) && w.jn > 0.0 && std::isfinite(w.jt)))
+      k.fail(at, "impulses must be finite, the normal one > 0 (got " + num(w.jn) + ", " + num(w.jt) + ")");
+  }
 }
 
 void check_random(const Checker& k, const RandomSpec& r, const std::string& p) {
@@ -134,6 +155,7 @@ void check_random(const Checker& k, const RandomSpec& r, const std::string& p) {
     k.restitution(r.restitution->lo, At{p, ".restitution"});
     k.restitution(r.restitution->hi, At{p, ".restitution"});
   }
+  if (r.contact.friction) k.friction(*r.contact.friction, At{p, ".friction"});
   k.finite(r.origin, At{p, (r.use_cells ? ".cells.pos" : ".area.pos")});
   const int max_w = r.side ? r.side->hi : r.width.hi, max_h = r.side ? r.side->hi : r.height.hi;
   if (r.use_cells) {
@@ -167,6 +189,9 @@ void check_placement(const Checker& k, const SceneSpec& s, const std::vector<Bod
   const double x0 = t, y0 = t, x1 = s.width - t, y1 = s.height - t;
   for (const Body& b : bodies)
     if (!std::isfinite(b.pos.x) || !std::isfinite(b.pos.y)) k.finite(b.pos, At{body_path(s, b) + " position"});
+  // A saved world (--save) is loaded as it was: its bodies may overlap a
+  // wall or have left the world, which a scene's start may not.
+  if (s.state) return;
   for (const Body& b : bodies) {
     const double l = b.pos.x, top = b.pos.y, r = b.pos.x + b.width, bot = b.pos.y + b.height;
     const bool outside = l < 0 || top < 0 || r > s.width || bot > s.height;
@@ -183,12 +208,24 @@ void check_placement(const Checker& k, const SceneSpec& s, const std::vector<Bod
   }
 }
 
-Body body_of(const BlockSpec& b, double world_e, std::size_t entry, std::int64_t index) {
-  return Body{b.pos, b.width, b.height, b.mass, b.velocity, b.force, b.impulse, b.color,
-              b.restitution.value_or(world_e), entry, index};
+Body body_of(const BlockSpec& b, const SceneSpec& s, std::size_t entry, std::int64_t index) {
+  return Body{b.pos,
+              b.width,
+              b.height,
+              b.mass,
+              b.velocity,
+              b.force,
+              b.impulse,
+              b.color,
+              b.restitution.value_or(s.restitution),
+              b.contact.friction.value_or(s.friction),
+              b.contact.rules,
+              entry,
+              index};
 }
 
-void expand_random(const RandomSpec& r, double world_e, std::size_t entry, std::vector<Body>& out) {
+void expand_random(const RandomSpec& r, const SceneSpec& s, std::size_t entry, std::vector<Body>& out) {
+  const double world_e = s.restitution;
   Random rng(r.seed);
   for (std::int64_t i = 0; i < r.count; ++i) {
     Body b;
@@ -205,6 +242,8 @@ void expand_random(const RandomSpec& r, double world_e, std::size_t entry, std::
     b.force = r.force.get(rng);
     b.impulse = r.impulse.get(rng);
     b.restitution = r.restitution ? r.restitution->get(rng) : world_e;
+    b.friction = r.contact.friction.value_or(s.friction);
+    b.rules = r.contact.rules;
     if (r.color) {
       b.color = *r.color;
     } else {
@@ -239,6 +278,11 @@ void apply(SceneSpec& s, const Overrides& o) {
   if (o.iterations) s.params.iterations = *o.iterations;
   std::uint64_t k = 0;
   for (BlockEntry& e : s.blocks) {
+    if (o.friction) {
+      if (auto* b = std::get_if<BlockSpec>(&e)) b->contact.friction.reset();
+      if (auto* g = std::get_if<GridSpec>(&e)) g->first.contact.friction.reset();
+      if (auto* r = std::get_if<RandomSpec>(&e)) r->contact.friction.reset();
+    }
     if (o.restitution) {
       if (auto* b = std::get_if<BlockSpec>(&e)) b->restitution.reset();
       if (auto* g = std::get_if<GridSpec>(&e)) g->first.restitution.reset();
@@ -247,6 +291,7 @@ void apply(SceneSpec& s, const Overrides& o) {
     if (auto* r = std::get_if<RandomSpec>(&e); r && o.seed) r->seed = *o.seed + k++;
   }
   if (o.restitution) s.restitution = *o.restitution;
+  if (o.friction) s.friction = *o.friction;
 }
 
 std::int64_t body_count(const SceneSpec& s) {
@@ -291,8 +336,10 @@ void validate(const SceneSpec& s, const std::string& source) {
   k.motion(p.gravity, At{std::string("world.gravity")});
   if (p.dt > max_dt) k.fail("world.dt", "must be <= " + num(max_dt) + " ms (got " + num(p.dt) + ")");
   k.restitution(s.restitution, At{std::string("world.restitution")});
+  k.friction(s.friction, At{std::string("world.friction")});
   if (body_count(s) > max_bodies)
     k.fail("blocks", "too many bodies (more than " + std::to_string(max_bodies) + ")");
+  if (s.state) check_state(k, s);
   for (std::size_t i = 0; i < s.blocks.size(); ++i) {
     const std::string path = entry_path(i);
     const BlockEntry& e = s.blocks[i];
@@ -347,17 +394,17 @@ std::vector<Body> expand(const SceneSpec& s, const std::string& source) {
   out.reserve(static_cast<std::size_t>(body_count(s)));
   for (std::size_t i = 0; i < s.blocks.size(); ++i) {
     const BlockEntry& e = s.blocks[i];
-    if (const auto* b = std::get_if<BlockSpec>(&e)) out.push_back(body_of(*b, s.restitution, i, 0));
+    if (const auto* b = std::get_if<BlockSpec>(&e)) out.push_back(body_of(*b, s, i, 0));
     if (const auto* g = std::get_if<GridSpec>(&e)) {
       std::int64_t n = 0;
       for (int r = 0; r < g->rows; ++r)
         for (int c = 0; c < g->columns; ++c) {
           BlockSpec b = g->first;
           b.pos = Vector{g->first.pos.x + g->step.x * c, g->first.pos.y + g->step.y * r};
-          out.push_back(body_of(b, s.restitution, i, n++));
+          out.push_back(body_of(b, s, i, n++));
         }
     }
-    if (const auto* r = std::get_if<RandomSpec>(&e)) expand_random(*r, s.restitution, i, out);
+    if (const auto* r = std::get_if<RandomSpec>(&e)) expand_random(*r, s, i, out);
   }
   check_placement(Checker{source}, s, out);
   return out;
@@ -365,7 +412,11 @@ std::vector<Body> expand(const SceneSpec& s, const std::string& source) {
 
 void populate(World& w, const SceneSpec& s, const std::vector<Body>& bodies) {
   w.components.reserve(w.components.size() + bodies.size() + (s.walls ? 4 : 0));
-  if (s.walls) Game::init_walls(w, s.width, s.height, s.restitution);
+  if (s.walls) {
+    const auto first = static_cast<EntityId>(w.components.size());
+    Game::init_walls(w, s.width, s.height, s.restitution);
+    for (EntityId e = first; e < w.components.size(); ++e) w.components.friction[e] = s.friction;
+  }
   const double t = s.walls ? wall_thickness : 0.0;
   w.health.watch(t, t, s.width - t, s.height - t, static_cast<EntityId>(w.components.size()));
   for (const Body& b : bodies) {
@@ -374,6 +425,12 @@ void populate(World& w, const SceneSpec& s, const std::vector<Body>& bodies) {
     // An impulse J changes the velocity by J/m. Forces applies Σf·dt/m on the
     // first frame, so the initial force J/dt is exactly that impulse.
     w.components.sum_forces[e.id] = b.force + Vector::mult(1.0 / w.params.dt, b.impulse);
+    w.components.friction[e.id] = b.friction;
+    if (!b.rules.plain()) w.components.set_rules(e.id, b.rules);
+  }
+  if (s.state) {
+    w.frame = s.state->frame;
+    w.contact_solver.restore(s.state->warm_start);
   }
 }
 

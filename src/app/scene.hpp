@@ -63,6 +63,14 @@ struct VecSpec {
   friend bool operator==(const VecSpec&, const VecSpec&) = default;
 };
 
+// A block's contact properties beyond the sheet (docs/game-physics.md):
+// scene keys "friction", "category", "mask", "sensor", "one_way".
+struct ContactSpec {
+  std::optional<double> friction;  // >= 0; unset: the world's
+  ContactRules rules;
+  friend bool operator==(const ContactSpec&, const ContactSpec&) = default;
+};
+
 // One block, as in Block::make, plus its initial motion.
 //   velocity  px/ms at start
 //   force     initial sum_forces (the sheet's Q5 "force instead of velocity")
@@ -75,6 +83,7 @@ struct BlockSpec {
   Vector velocity{}, force{}, impulse{};
   Color color = default_block_color;
   std::optional<double> restitution;  // unset: the world's
+  ContactSpec contact;
   friend bool operator==(const BlockSpec&, const BlockSpec&) = default;
 };
 
@@ -108,10 +117,20 @@ struct RandomSpec {
   int columns = 1;
   Vector step{}, jitter{};  // cells
   Vector extent{};          // area
+  ContactSpec contact;      // the same for every body (never drawn)
   friend bool operator==(const RandomSpec&, const RandomSpec&) = default;
 };
 
 using BlockEntry = std::variant<BlockSpec, GridSpec, RandomSpec>;
+
+// What a saved world (--save) adds to its scene: the frame it was saved
+// after and the state the next step reads beyond the bodies (the stable
+// solver's warm-start impulses, by body index in the file).
+struct SavedState {
+  std::int64_t frame = 0;
+  std::vector<WarmImpulse> warm_start;
+  friend bool operator==(const SavedState&, const SavedState&) = default;
+};
 
 struct SceneSpec {
   std::string name;
@@ -119,9 +138,11 @@ struct SceneSpec {
   int width = default_width, height = default_height;
   Params params;
   double restitution = 1.0;  // walls, and blocks that give none
+  double friction = 0.0;     // the same, for friction
   bool walls = true;
   SystemSet systems;
   std::vector<BlockEntry> blocks;
+  std::optional<SavedState> state;  // a saved world's (scene key "state")
 };
 
 // Command-line values; each set one replaces the scene's.
@@ -130,6 +151,7 @@ struct Overrides {
   std::optional<int> substeps;
   std::optional<Vector> gravity;
   std::optional<double> restitution;  // also replaces every block's own
+  std::optional<double> friction;     // the same
   std::optional<std::uint64_t> seed;  // random generator k gets seed + k
   std::optional<bool> ccd;
   std::optional<Solver> solver;
@@ -146,6 +168,8 @@ struct Body {
   Vector velocity{}, force{}, impulse{};
   Color color{};
   double restitution = 1.0;
+  double friction = 0.0;
+  ContactRules rules;
   std::size_t entry = 0;
   std::int64_t index = 0;
 };

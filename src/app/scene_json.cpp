@@ -474,6 +474,9 @@ class Reader {
 
   // Unknown keys are errors, with the nearest known key as a hint.
   void keys(const json& v, const Path& path, std::initializer_list<std::string_view> allowed) const {
+    keys(v, path, std::span<const std::string_view>(allowed.begin(), allowed.size()));
+  }
+  void keys(const json& v, const Path& path, std::span<const std::string_view> allowed) const {
     object(v, path);
     for (const auto& item : v.items()) {
       const std::string& k = item.key();
@@ -612,8 +615,8 @@ const json* find(const json& obj, const char* key) {
 
 void read_world(const Reader& r, const json& w, SceneSpec& s) {
   r.keys(w, "world",
-         {"width", "height", "dt", "substeps", "gravity", "restitution", "walls", "systems", "ccd", "solver",
-          "iterations"});
+         {"width", "height", "dt", "substeps", "gravity", "restitution", "friction", "walls", "systems", "ccd",
+          "solver", "iterations"});
   if (const json* v = find(w, "width")) s.width = static_cast<int>(r.integer(*v, "world.width", 1, max_world_size));
   if (const json* v = find(w, "height")) s.height = static_cast<int>(r.integer(*v, "world.height", 1, max_world_size));
   if (const json* v = find(w, "dt")) {
@@ -623,6 +626,7 @@ void read_world(const Reader& r, const json& w, SceneSpec& s) {
     s.params.substeps = static_cast<int>(r.integer(*v, "world.substeps", 1, max_substeps));
   if (const json* v = find(w, "gravity")) s.params.gravity = r.vec(*v, "world.gravity");
   if (const json* v = find(w, "restitution")) s.restitution = r.restitution(*v, "world.restitution");
+  if (const json* v = find(w, "friction")) s.friction = r.number(*v, "world.friction");  // >= 0: validate()
   if (const json* v = find(w, "walls")) s.walls = r.boolean(*v, "world.walls");
   if (const json* v = find(w, "ccd")) s.params.ccd = r.boolean(*v, "world.ccd");
   if (const json* v = find(w, "solver")) {
@@ -648,6 +652,36 @@ void read_world(const Reader& r, const json& w, SceneSpec& s) {
   }
 }
 
+// The contact keys beyond the sheet, which blocks, grids and random
+// generators share (docs/game-physics.md).
+constexpr std::array<std::string_view, 5> contact_key_names{"friction", "category", "mask", "sensor", "one_way"};
+
+Face face_named(const Reader& r, const json& v, const Path& path) {
+  const std::string name = r.text(v, path);
+  if (name == "up") return Face::up;
+  if (name == "down") return Face::down;
+  if (name == "left") return Face::left;
+  if (name == "right") return Face::right;
+  r.fail(path, "must be \"up\", \"down\", \"left\" or \"right\" (got " + r.got(v) + ")");
+}
+
+void read_contact_keys(const Reader& r, const json& b, const Path& p, ContactSpec& out) {
+  constexpr std::int64_t bits = 0xFFFFFFFF;
+  if (const json* v = find(b, "friction")) out.friction = r.number(*v, p + ".friction");  // >= 0: validate()
+  if (const json* v = find(b, "category"))
+    out.rules.category = static_cast<std::uint32_t>(r.integer(*v, p + ".category", 0, bits));
+  if (const json* v = find(b, "mask")) out.rules.mask = static_cast<std::uint32_t>(r.integer(*v, p + ".mask", 0, bits));
+  if (const json* v = find(b, "sensor")) out.rules.sensor = r.boolean(*v, p + ".sensor");
+  if (const json* v = find(b, "one_way")) out.rules.one_way = face_named(r, *v, p + ".one_way");
+}
+
+// `base` and the contact keys.
+std::vector<std::string_view> with_contact_keys(std::initializer_list<std::string_view> base) {
+  std::vector<std::string_view> out(base);
+  out.insert(out.end(), contact_key_names.begin(), contact_key_names.end());
+  return out;
+}
+
 // The keys a block and a grid share: everything but the placement.
 void read_block_keys(const Reader& r, const json& b, const Path& p, BlockSpec& out) {
   const json* pos = find(b, "pos");
@@ -666,17 +700,19 @@ void read_block_keys(const Reader& r, const json& b, const Path& p, BlockSpec& o
   if (const json* v = find(b, "impulse")) out.impulse = r.vec(*v, p + ".impulse");
   if (const json* v = find(b, "color")) out.color = r.color(*v, p + ".color");
   if (const json* v = find(b, "restitution")) out.restitution = r.restitution(*v, p + ".restitution");
+  read_contact_keys(r, b, p, out.contact);
 }
 
 BlockSpec read_block(const Reader& r, const json& b, const Path& p) {
-  r.keys(b, p, {"pos", "size", "mass", "velocity", "force", "impulse", "color", "restitution"});
+  r.keys(b, p, with_contact_keys({"pos", "size", "mass", "velocity", "force", "impulse", "color", "restitution"}));
   BlockSpec out;
   read_block_keys(r, b, p, out);
   return out;
 }
 
 GridSpec read_grid(const Reader& r, const json& g, const Path& p) {
-  r.keys(g, p, {"pos", "size", "mass", "velocity", "force", "impulse", "color", "restitution", "count", "step"});
+  r.keys(g, p,
+         with_contact_keys({"pos", "size", "mass", "velocity", "force", "impulse", "color", "restitution", "count", "step"}));
   GridSpec out;
   read_block_keys(r, g, p, out.first);
   const json* count = find(g, "count");
@@ -692,8 +728,10 @@ GridSpec read_grid(const Reader& r, const json& g, const Path& p) {
 
 RandomSpec read_random(const Reader& r, const json& g, const Path& p) {
   r.keys(g, p,
-         {"count", "side", "size", "mass", "velocity", "force", "impulse", "restitution", "color", "cells", "area"});
+         with_contact_keys(
+             {"count", "side", "size", "mass", "velocity", "force", "impulse", "restitution", "color", "cells", "area"}));
   RandomSpec out;
+  read_contact_keys(r, g, p, out.contact);
   const json* count = find(g, "count");
   if (!count) r.fail(p, "missing key \"count\" (the number of blocks)");
   out.count = r.integer(*count, p + ".count", 1, max_bodies);
@@ -749,6 +787,26 @@ RandomSpec read_random(const Reader& r, const json& g, const Path& p) {
       if (const json* v = find(*area, "pos")) out.origin = r.vec(*v, a + ".pos");
       if (const json* v = find(*area, "size")) out.extent = r.vec(*v, a + ".size");
     }
+  }
+  return out;
+}
+
+// A saved world's "state": {"frame": n, "warm_start": [[c, b, axis, jn, jt], ...]}.
+SavedState read_state(const Reader& r, const json& v) {
+  r.keys(v, "state", {"frame", "warm_start"});
+  SavedState out;
+  if (const json* f = find(v, "frame")) out.frame = r.integer(*f, "state.frame", 0, std::int64_t{1} << 53);
+  const json* warm = find(v, "warm_start");
+  if (!warm) return out;
+  if (!warm->is_array()) r.fail("state.warm_start", "must be an array (got " + r.got(*warm) + ")");
+  const Path list = "state.warm_start";
+  for (std::size_t i = 0; i < warm->size(); ++i) {
+    const json& e = (*warm)[i];
+    const Path p(list, i);
+    if (!e.is_array() || e.size() != 5) r.fail(p, "must be [c, b, axis, jn, jt] (got " + r.got(e) + ")");
+    const auto id = [&](std::size_t k) { return static_cast<EntityId>(r.integer(e[k], p, 0, max_bodies + 4)); };
+    out.warm_start.push_back(
+        {{id(0), id(1)}, static_cast<int>(r.integer(e[2], p, 0, 3)), r.number(e[3], p), r.number(e[4], p)});
   }
   return out;
 }
@@ -833,11 +891,12 @@ SceneSpec read_scene(std::string_view text, const std::string& source) {
   }
   const json& doc = dom.root;
   if (!doc.is_object()) r.fail("", "a scene file must hold one JSON object {...} (got " + r.got(doc) + ")");
-  r.keys(doc, "", {"name", "description", "world", "blocks"});
+  r.keys(doc, "", {"name", "description", "world", "blocks", "state"});
   s.name = stem(source);
   if (const json* v = find(doc, "name")) s.name = r.text(*v, "name");
   if (const json* v = find(doc, "description")) s.description = r.text(*v, "description");
   if (const json* v = find(doc, "world")) read_world(r, *v, s);
+  if (const json* v = find(doc, "state")) s.state = read_state(r, *v);
   if (const json* v = find(doc, "blocks"); v && !v->is_array())
     r.fail("blocks", "must be an array of blocks (got " + r.got(*v) + ")");
   if (block_error) throw *block_error;
@@ -906,6 +965,17 @@ ojson integer(const IntSpec& r) { return r.drawn ? ojson::array({r.lo, r.hi}) : 
 ojson vec(const VecSpec& v) { return ojson::array({real(v.x), real(v.y)}); }
 bool zero(const VecSpec& v) { return v == VecSpec{}; }
 
+// Only the keys that differ from their defaults.
+void contact_keys(ojson& o, const ContactSpec& c) {
+  static constexpr const char* faces[] = {"none", "up", "down", "left", "right"};
+  const ContactRules plain;
+  if (c.friction) o["friction"] = *c.friction;
+  if (c.rules.category != plain.category) o["category"] = c.rules.category;
+  if (c.rules.mask != plain.mask) o["mask"] = c.rules.mask;
+  if (c.rules.sensor) o["sensor"] = true;
+  if (c.rules.one_way != Face::none) o["one_way"] = faces[static_cast<int>(c.rules.one_way)];
+}
+
 void block_keys(ojson& o, const BlockSpec& b) {
   o["pos"] = vec(b.pos);
   o["size"] = ojson::array({b.width, b.height});
@@ -915,6 +985,7 @@ void block_keys(ojson& o, const BlockSpec& b) {
   if (!Vector::is_zero(b.impulse)) o["impulse"] = vec(b.impulse);
   if (!(b.color == default_block_color)) o["color"] = hex(b.color);
   if (b.restitution) o["restitution"] = *b.restitution;
+  contact_keys(o, b.contact);
 }
 
 ojson entry(const BlockEntry& e) {
@@ -937,6 +1008,7 @@ ojson entry(const BlockEntry& e) {
     if (!zero(r->force)) gen["force"] = vec(r->force);
     if (!zero(r->impulse)) gen["impulse"] = vec(r->impulse);
     if (r->restitution) gen["restitution"] = real(*r->restitution);
+    contact_keys(gen, r->contact);
     gen["color"] = r->color ? ojson(hex(*r->color)) : ojson("random");
     if (r->use_cells) {
       gen["cells"] = {{"pos", vec(r->origin)}, {"columns", r->columns}, {"step", vec(r->step)},
@@ -1001,9 +1073,15 @@ std::string to_json(const SceneSpec& s) {
                 {"ccd", s.params.ccd},
                 {"solver", s.params.solver == Solver::stable ? "stable" : "course"},
                 {"iterations", s.params.iterations}};
+  if (s.friction != 0.0) o["world"]["friction"] = s.friction;  // beyond the sheet: only when used
   ojson blocks = ojson::array();
   for (const BlockEntry& e : s.blocks) blocks.push_back(entry(e));
   o["blocks"] = blocks;
+  if (s.state) {
+    ojson warm = ojson::array();
+    for (const WarmImpulse& w : s.state->warm_start) warm.push_back({w.pair.c, w.pair.b, w.axis, w.jn, w.jt});
+    o["state"] = {{"frame", s.state->frame}, {"warm_start", warm}};
+  }
   std::string out;
   write_pretty(o, 0, out);
   return out + "\n";

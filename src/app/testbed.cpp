@@ -57,7 +57,7 @@ Testbed::Testbed(std::vector<SceneSpec> scenes, std::size_t current, Overrides o
       overrides_(overrides),
       overlays_(overlays),
       world_(make_world(with_overrides(scenes_.at(current_), overrides_), true, scenes_.at(current_).name)) {
-  if (world_.systems.collision) world_.systems.collision->record_contacts = overlays_.contacts;
+  if (world_.systems.collision) world_.systems.collision->record_contacts = overlays_.contacts || world_.events.enabled;
 }
 
 void Testbed::rebuild() {
@@ -67,7 +67,7 @@ void Testbed::rebuild() {
   } catch (const SceneError& e) {
     say(e.what(), false);  // keep the world we have
   }
-  if (world_.systems.collision) world_.systems.collision->record_contacts = overlays_.contacts;
+  if (world_.systems.collision) world_.systems.collision->record_contacts = overlays_.contacts || world_.events.enabled;
   last_contacts_.clear();
   last_regions_.clear();
   acc_ms_ = 0.0;
@@ -204,7 +204,7 @@ Testbed::Action Testbed::handle(const InputEvent& e) {
     case 'v': overlays_.velocity = !overlays_.velocity; break;
     case 'c':
       overlays_.contacts = !overlays_.contacts;
-      if (world_.systems.collision) world_.systems.collision->record_contacts = overlays_.contacts;
+      if (world_.systems.collision) world_.systems.collision->record_contacts = overlays_.contacts || world_.events.enabled;
       if (!overlays_.contacts) last_contacts_.clear(), last_regions_.clear();
       break;
     case 'i': overlays_.hud = !overlays_.hud; break;

@@ -58,7 +58,8 @@ struct Later {
 // substep and each bounce gains or loses m(g·n)(v·n)(h - 2t) of energy, a
 // random walk that drifts up; with it, it rests. Never enough to turn the
 // pair back towards each other.
-void impact(Components& k, EntityId c, EntityId b, Vector n, double t, double h, Vector gravity) {
+// Returns the normal and tangential impulses.
+std::pair<double, double> impact(Components& k, EntityId c, EntityId b, Vector n, double t, double h, Vector gravity) {
   const Vector vc = k.velocity[c], vb = k.velocity[b];
   const double vn = Vector::dot(vc - vb, n);
   const double e = std::min(k.restitution[c], k.restitution[b]);
@@ -71,12 +72,14 @@ void impact(Components& k, EntityId c, EntityId b, Vector n, double t, double h,
   change_normal_velocity(vc2, vb2, n, dv, wc, wb);
   // Coulomb friction with this impact's normal impulse (engine/contact.hpp).
   const double mu = pair_friction(k.friction[c], k.friction[b]);
-  if (mu > 0.0) apply_friction(vc2, vb2, n, mu * (dv / (wc + wb)), wc, wb);
+  const double jn = dv / (wc + wb);
+  const double jt = mu > 0.0 ? apply_friction(vc2, vb2, n, mu * jn, wc, wb) : 0.0;
   // Keep position + t·velocity continuous at t (see the header).
   k.position[c] = k.position[c] + t * (vc - vc2);
   k.position[b] = k.position[b] + t * (vb - vb2);
   k.velocity[c] = vc2;
   k.velocity[b] = vb2;
+  return {jn, jt};
 }
 
 }  // namespace
@@ -108,7 +111,7 @@ std::optional<Impact> Ccd::time_of_impact(const Components& k, EntityId c, Entit
 }
 
 void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h, Vector gravity,
-                  BroadPhase& broadphase) {
+                  BroadPhase& broadphase, ContactEvents& events) {
   const std::size_t count = entities.size();
   if (count < 2) return;
   broadphase.find(k, entities, h, 0.0, pairs_);
@@ -150,7 +153,8 @@ void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h, V
     // normal at the event's time (the function is deterministic).
     const auto hit = time_of_impact(k, c, b, ev.t, h);
     if (!hit || hit->t != ev.t) continue;
-    impact(k, c, b, hit->n, ev.t, h, gravity);
+    const auto [jn, jt] = impact(k, c, b, hit->n, ev.t, h, gravity);
+    events.touch(c, b, hit->n, jn, jt);
     ++resolved;
     ++stats.impacts;
     // Both bodies changed course: predict their impacts with everything again

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "component_defs.hpp"
+#include "engine/events.hpp"
 #include "engine/pairs.hpp"
 
 namespace physics {
@@ -45,7 +46,9 @@ class Ccd {
   // ones, which takes ~π·sqrt(M/m) impacts) every body stops where it is at
   // that moment for the rest of the substep: no tunnelling, no energy or
   // momentum error, but lost time, counted in stats.capped_substeps.
-  void resolve(Components& k, std::span<const EntityId> entities, double h, Vector gravity, BroadPhase& broadphase);
+  // Each impact is reported to `events` (which keeps it only if enabled).
+  void resolve(Components& k, std::span<const EntityId> entities, double h, Vector gravity, BroadPhase& broadphase,
+               ContactEvents& events);
 
   // First time in [t0, t1] at which the boxes of c and b, moving at their
   // current velocities from their positions extrapolated to time 0

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cmath>
+#include <utility>
 
 #include "component_defs.hpp"
 
@@ -36,6 +37,27 @@ inline void apply_normal_impulse(Vector& vc, Vector& vb, Vector n, double j, dou
 // reverses the normal velocity bit for bit) or the masses are equal (1/2).
 inline void change_normal_velocity(Vector& vc, Vector& vb, Vector n, double dv, double wc, double wb) {
   apply_normal_impulse(vc, vb, n, dv, wc / (wc + wb), wb / (wc + wb));
+}
+
+// ---- Separation along the four axes ----
+
+// The four normals of a box contact, in the tie order of the sheet's
+// penetration vectors: 0: -x, 1: +x, 2: -y, 3: +y (the normal that moves c
+// away from b).
+inline constexpr Vector axis_normal[4] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};
+
+// The separating axis with the largest gap; for overlapping boxes that is the
+// shortest way out, with Collision::penetration's tie order (-x, +x, -y, +y).
+inline std::pair<int, double> best_axis(const Components& k, EntityId c, EntityId b) {
+  const Vector pc = k.position[c], pb = k.position[b];
+  const Rect rc = k.box[c], rb = k.box[b];
+  // The sums of Rect::mdiff, written out (the stable solver calls this per contact).
+  const double sx = pb.x - pc.x - rc.width, sy = pb.y - pc.y - rc.height;
+  const double gaps[4] = {sx, -(sx + (rb.width + rc.width)), sy, -(sy + (rb.height + rc.height))};
+  int best = 0;
+  for (int a = 1; a < 4; ++a)
+    if (gaps[a] > gaps[best]) best = a;
+  return {best, gaps[best]};
 }
 
 // ---- Friction (beyond the sheet; docs/game-physics.md) ----

@@ -13,8 +13,6 @@ namespace physics {
 
 namespace {
 
-constexpr Vector axis_normal[4] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};
-
 // Signed distance between the boxes of c and b along an axis (negative:
 // overlap), from their Minkowski difference s = b ⊖ c (the sheet's mdiff):
 // -x: s.x, +x: -(s.x + s.w), -y: s.y, +y: -(s.y + s.h). Rect::mdiff's
@@ -30,19 +28,6 @@ double gap_along(const Components& k, EntityId c, EntityId b, int axis) {
     case 2: return pb.y - pc.y - rc.height;
     default: return -((pb.y - pc.y - rc.height) + (rb.height + rc.height));
   }
-}
-
-// The separating axis with the largest gap; for overlapping boxes that is the
-// shortest way out, with Collision::penetration's tie order (-x, +x, -y, +y).
-std::pair<int, double> best_axis(const Components& k, EntityId c, EntityId b) {
-  const Vector pc = k.position[c], pb = k.position[b];
-  const Rect rc = k.box[c], rb = k.box[b];
-  const double sx = pb.x - pc.x - rc.width, sy = pb.y - pc.y - rc.height;  // gap_along's sums
-  const double gaps[4] = {sx, -(sx + (rb.width + rc.width)), sy, -(sy + (rb.height + rc.height))};
-  int best = 0;
-  for (int a = 1; a < 4; ++a)
-    if (gaps[a] > gaps[best]) best = a;
-  return {best, gaps[best]};
 }
 
 std::uint64_t key(EntityId c, EntityId b) { return Pair{c, b}.key(); }
@@ -367,6 +352,20 @@ void ContactSolver::store() {
   }
   if (!std::is_sorted(next_warm.begin(), next_warm.end())) std::sort(next_warm.begin(), next_warm.end());
   warm_ = std::move(next_warm);
+}
+
+std::vector<WarmImpulse> ContactSolver::warm_impulses() const {
+  std::vector<WarmImpulse> out;
+  out.reserve(warm_.size());
+  for (const auto& [kk, axis, jn, jt] : warm_)
+    out.push_back({{static_cast<EntityId>(kk >> 32), static_cast<EntityId>(kk & 0xFFFFFFFFu)}, axis, jn, jt});
+  return out;
+}
+
+void ContactSolver::restore(std::span<const WarmImpulse> impulses) {
+  warm_.clear();
+  for (const WarmImpulse& w : impulses) warm_.emplace_back(w.pair.key(), w.axis, w.jn, w.jt);
+  std::sort(warm_.begin(), warm_.end());
 }
 
 // Poisson's restitution keeps the energy from growing only when the

@@ -52,6 +52,16 @@ struct SolverSettings {
   bool impacts = true;        // false with CCD on: impacts are left to it
 };
 
+// A resting contact's impulses at the end of a substep: what the next
+// substep's warm start reads, and so what a saved world must keep.
+struct WarmImpulse {
+  Pair pair;
+  int axis;   // as ContactConstraint::axis
+  double jn;  // normal impulse, > 0
+  double jt;  // tangential impulse
+  friend bool operator==(const WarmImpulse&, const WarmImpulse&) = default;
+};
+
 struct SolverStats {
   std::int64_t contacts = 0;       // contacts solved, summed over substeps
   std::int64_t energy_clamps = 0;  // body velocities the energy guard scaled back
@@ -94,6 +104,10 @@ class ContactSolver {
   // (empty when no contact had friction), for contact events.
   std::span<const ContactConstraint> constraints() const { return contacts_; }
   std::span<const FrictionRow> friction_rows() const { return friction_; }
+
+  // The warm-start impulses the next substep reads (save and restore).
+  std::vector<WarmImpulse> warm_impulses() const;
+  void restore(std::span<const WarmImpulse> impulses);
 
  private:
   // The stages of solve_velocities, in order.

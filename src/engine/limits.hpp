@@ -21,5 +21,8 @@ inline constexpr double max_dt = 1e6;      // ms
 // The smallest dt: below it, impulse/dt (the first frame's force) and the
 // Forces' divisions overflow or lose all precision (--dt 1e-320 gave NaN).
 inline constexpr double min_dt = 1e-6;     // ms
+// The largest friction coefficient (rubber on rubber is about 1; beyond a
+// few, every contact sticks anyway).
+inline constexpr double max_friction = 1e3;
 
 }  // namespace physics

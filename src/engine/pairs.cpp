@@ -110,7 +110,7 @@ bool BroadPhase::course_next_slow(Pair& out) {
 // ---- find() ----
 
 void BroadPhase::find(const Components& k, std::span<const EntityId> entities, double h, double reach,
-                      std::vector<Pair>& out) {
+                      std::vector<Pair>& out, PairRule rule) {
   const std::size_t n = entities.size();
   current_.resize(n);
   bool reuse = fat_built_ && n == entities_.size() && std::equal(entities.begin(), entities.end(), entities_.begin());
@@ -133,7 +133,7 @@ void BroadPhase::find(const Components& k, std::span<const EntityId> entities, d
     // bound fails it, so a lost body has no pair.
     if (a.x0 <= b.x1 && b.x0 <= a.x1 && a.y0 <= b.y1 && b.y0 <= a.y1) out.push_back({entities[i], entities[j]});
   }
-  if (k.any_rules()) std::erase_if(out, [&](Pair p) { return !solvable(k, p.c, p.b, h); });
+  if (k.any_rules()) std::erase_if(out, [&](Pair p) { return !keeps(rule, k, p.c, p.b, h); });
 }
 
 void BroadPhase::fat_rebuild(const Components& k, std::span<const EntityId> entities) {

@@ -45,7 +45,8 @@ class BroadPhase {
   // valid until the next call on this broad phase.
   CoursePairs course_pairs(const Components& k, std::span<const EntityId> entities, double h);
 
-  void find(const Components& k, std::span<const EntityId> entities, double h, double reach, std::vector<Pair>& out);
+  void find(const Components& k, std::span<const EntityId> entities, double h, double reach, std::vector<Pair>& out,
+            PairRule rule = PairRule::solvable);
 
   // px. How far a correction may push a body before its pairs are looked up
   // again; any value >= 0 gives the same pairs, this one was the fastest on

@@ -28,4 +28,11 @@ bool solvable(const Components& k, EntityId c, EntityId b, double h) {
   return one_way_stops(k, c, b, h) && one_way_stops(k, b, c, h);
 }
 
+bool reported(const Components& k, EntityId c, EntityId b, double h) {
+  const ContactRules& rc = k.rules(c);
+  const ContactRules& rb = k.rules(b);
+  if (!filters_meet(rc, rb)) return false;
+  return rc.sensor || rb.sensor || solvable(k, c, b, h);
+}
+
 }  // namespace physics

@@ -4,6 +4,8 @@
 // passing through a one-way platform never enters a solver's pair list.
 #pragma once
 
+#include <cstdint>
+
 #include "component_defs.hpp"
 
 namespace physics {
@@ -27,5 +29,15 @@ bool one_way_stops(const Components& k, EntityId p, EntityId b, double h);
 // meet, neither is a sensor, and each one-way platform of the pair stops
 // the other.
 bool solvable(const Components& k, EntityId c, EntityId b, double h);
+
+// Whether contact events report the pair: the filters meet, and a solver
+// sees it or one of the two is a sensor.
+bool reported(const Components& k, EntityId c, EntityId b, double h);
+
+// Which of the two a pair list keeps.
+enum class PairRule : std::uint8_t { solvable, reported };
+inline bool keeps(PairRule rule, const Components& k, EntityId c, EntityId b, double h) {
+  return rule == PairRule::solvable ? solvable(k, c, b, h) : reported(k, c, b, h);
+}
 
 }  // namespace physics

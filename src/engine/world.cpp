@@ -1,5 +1,7 @@
 #include "engine/world.hpp"
 
+#include "engine/contact.hpp"
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -36,6 +38,16 @@ double StageTimes::total_ms_per_step() const {
 
 World::World(SystemSet set, Params p) : systems(set), params(p) { validate(params); }
 
+void World::destroy(EntityId e) {
+  if (e >= components.size() || !alive(e)) return;
+  if (systems.draw) systems.draw->unregister(e);
+  if (systems.forces) systems.forces->unregister(e);
+  if (systems.move) systems.move->unregister(e);
+  if (systems.collision) systems.collision->unregister(e);
+  destroyed_.resize(components.size(), 0);
+  destroyed_[e] = 1;
+}
+
 namespace {
 SolverSettings solver_settings(const Params& p) {
   SolverSettings s;
@@ -48,9 +60,40 @@ SolverSettings solver_settings(const Params& p) {
 void World::before_move(double h) {
   if (!systems.collision) return;
   const auto bodies = systems.collision->entities();
-  if (params.solver == Solver::stable)
+  if (params.solver == Solver::stable) {
     contact_solver.solve_velocities(components, bodies, h, params.gravity, solver_settings(params), broadphase, times);
-  if (params.ccd) times.time(Stage::ccd, [&] { ccd.resolve(components, bodies, h, params.gravity, broadphase); });
+    record_solver_contacts();
+  }
+  if (params.ccd) times.time(Stage::ccd, [&] { ccd.resolve(components, bodies, h, params.gravity, broadphase, events); });
+}
+
+void World::enable_events() {
+  events.enabled = true;
+  if (systems.collision) systems.collision->record_contacts = true;
+}
+
+// The course pass's contacts, recorded by Collision::update.
+void World::record_contacts() {
+  if (!events.enabled || !systems.collision) return;
+  for (const Contact& c : systems.collision->contacts()) events.touch(c.c, c.b, c.normal, c.jn, c.jt);
+}
+
+// The stable solver's velocity contacts, with their accumulated impulses
+// (the bounce's included): those that exchanged one touched.
+void World::record_solver_contacts() {
+  if (!events.enabled) return;
+  const auto rows = contact_solver.friction_rows();
+  const auto constraints = contact_solver.constraints();
+  for (std::size_t i = 0; i < constraints.size(); ++i) {
+    const ContactConstraint& ct = constraints[i];
+    const double jn = ct.lambda + ct.lambda2 + (ct.resting ? 0.0 : ct.restitution * ct.lambda);
+    const double jt = rows.empty() ? 0.0 : rows[i].lambda + rows[i].lambda2;
+    if (jn > 0.0) events.touch(ct.c, ct.b, axis_normal[ct.axis], jn, jt);
+  }
+}
+
+void World::finish_events() {
+  if (events.enabled && systems.collision) events.finish(components, systems.collision->entities(), frame);
 }
 
 void World::after_move() {
@@ -92,7 +135,7 @@ double World::kinetic_energy() const {
   double ke = 0.0;
   for (std::size_t e = 0; e < components.size(); ++e) {
     const double m = components.mass[e];
-    if (!std::isfinite(m)) continue;
+    if (!std::isfinite(m) || !alive(static_cast<EntityId>(e))) continue;
     ke += 0.5 * m * Vector::dot(components.velocity[e], components.velocity[e]);
   }
   return ke;
@@ -102,7 +145,7 @@ Vector World::momentum() const {
   Vector p{};
   for (std::size_t e = 0; e < components.size(); ++e) {
     const double m = components.mass[e];
-    if (!std::isfinite(m)) continue;
+    if (!std::isfinite(m) || !alive(static_cast<EntityId>(e))) continue;
     p = p + m * components.velocity[e];
   }
   return p;
@@ -110,7 +153,8 @@ Vector World::momentum() const {
 
 std::size_t World::finite_bodies() const {
   std::size_t n = 0;
-  for (const double m : components.mass) n += std::isfinite(m) ? 1 : 0;
+  for (std::size_t e = 0; e < components.size(); ++e)
+    n += std::isfinite(components.mass[e]) && alive(static_cast<EntityId>(e)) ? 1 : 0;
   return n;
 }
 

@@ -56,8 +56,16 @@ struct World {
   ContactSolver contact_solver;
   // What the checks after each step found (engine/health.hpp).
   Health health;
+  // Contact events (engine/events.hpp), if enabled (enable_events).
+  ContactEvents events;
 
   explicit World(SystemSet set = {}, Params p = {});
+
+  // The archive's `unregister`, from every system: the body no longer
+  // moves, collides or is drawn, its id is not reused (its slot stays in the
+  // component arrays), and dumps and diagnostics leave it out.
+  void destroy(EntityId e);
+  bool alive(EntityId e) const { return e >= destroyed_.size() || destroyed_[e] == 0; }
 
   // The engine's stages around Move in a substep of h ms (Game::step calls
   // them; they do nothing in the course mode): before Move, the stable
@@ -68,6 +76,18 @@ struct World {
   // The checks after a step (Game::step runs them, timed as Stage::health):
   // non-finite values, escapes, persistent deep overlaps (course solver).
   void check_health();
+  // Contact events (nothing unless enable_events() was called): the course
+  // pass's contacts of a substep (Game::step calls it after the pass; the
+  // stable solver's and CCD's are recorded in before_move), and the events
+  // of the step, after it.
+  void enable_events();
+  void record_contacts();
+  void finish_events();
+
+ private:
+  void record_solver_contacts();
+
+ public:
   // The pairs of the Collision system's bodies, for its pass.
   BroadPhase::CoursePairs course_pairs();
 
@@ -76,6 +96,9 @@ struct World {
   double kinetic_energy() const;
   Vector momentum() const;
   std::size_t finite_bodies() const;
+
+ private:
+  std::vector<std::uint8_t> destroyed_;  // by id; shorter than the arrays until a body is destroyed
 };
 
 }  // namespace physics

@@ -1,0 +1,57 @@
+#include "app/save.hpp"
+
+#include <string>
+
+namespace physics::Save {
+namespace {
+
+// A body as a block entry; restitution and friction only where they differ
+// from the world's (which the walls and unset blocks take).
+BlockSpec block_of(const Components& k, EntityId e, const SceneSpec& from) {
+  BlockSpec b;
+  b.pos = k.position[e];
+  b.width = k.box[e].width;
+  b.height = k.box[e].height;
+  b.mass = k.mass[e];
+  b.velocity = k.velocity[e];
+  b.force = k.sum_forces[e];
+  b.color = k.color[e];
+  if (k.restitution[e] != from.restitution) b.restitution = k.restitution[e];
+  if (k.friction[e] != from.friction) b.contact.friction = k.friction[e];
+  b.contact.rules = k.rules(e);
+  return b;
+}
+
+}  // namespace
+
+SceneSpec scene_of(const World& w, const SceneSpec& from) {
+  SceneSpec s = from;
+  s.params = w.params;
+  s.blocks.clear();
+  s.description = "saved after frame " + std::to_string(w.frame) + " of " + from.name;
+  const Components& k = w.components;
+  // The walls are the first four bodies (populate makes them first) and are
+  // made again by the "walls" key; the other alive bodies get new ids in order.
+  const EntityId first = from.walls ? 4 : 0;
+  std::vector<EntityId> new_id(k.size(), 0);
+  EntityId next = first;
+  for (EntityId e = 0; e < k.size(); ++e) {
+    if (e < first) {
+      new_id[e] = e;
+    } else if (w.alive(e)) {
+      new_id[e] = next++;
+      s.blocks.push_back(block_of(k, e, from));
+    }
+  }
+  SavedState state;
+  state.frame = w.frame;
+  for (WarmImpulse imp : w.contact_solver.warm_impulses()) {
+    if (!w.alive(imp.pair.c) || !w.alive(imp.pair.b)) continue;
+    imp.pair = {new_id[imp.pair.c], new_id[imp.pair.b]};
+    state.warm_start.push_back(imp);
+  }
+  s.state = state;
+  return s;
+}
+
+}  // namespace physics::Save
