@@ -153,7 +153,7 @@ BOOST_AUTO_TEST_CASE(help_documents_every_flag) {
   BOOST_TEST(r.code == 0);
   for (const char* flag : {"--scene", "--headless", "--frames", "--dt", "--substeps", "--gravity", "--restitution",
                            "--seed", "--dump", "--trace", "--screenshot", "--ccd", "--solver", "--iterations",
-                           "--list-scenes", "--print-scene", "--overlays"})
+                           "--list-scenes", "--print-scene", "--overlays", "--friction", "--events", "--save"})
     BOOST_TEST(has(r.out, flag), flag);
 }
 
@@ -240,6 +240,46 @@ BOOST_AUTO_TEST_CASE(dump_is_the_final_state_exactly) {
     BOOST_TEST(number(row[6]) == w.components.velocity[e].y);
     if (e < 4) BOOST_TEST(row[7] == "inf");
     else BOOST_TEST(number(row[7]) == w.components.mass[e]);
+  }
+}
+
+// --events: the CSV of the contact events, in the header's columns; two
+// blocks meeting head on give one begin and one end for their pair.
+BOOST_AUTO_TEST_CASE(events_are_written_as_csv) {
+  TempDir dir;
+  const auto scene = dir.file("two.json", R"({"world": {"walls": false}, "blocks": [
+    {"pos": [100, 100], "size": [40, 40], "mass": 1, "velocity": [0.3, 0]},
+    {"pos": [300, 100], "size": [40, 40], "mass": 1, "velocity": [-0.3, 0]}]})");
+  const auto path = dir.file("events.csv");
+  const Ran r = cli({"--scene", scene, "--frames", "120", "--solver", "stable", "--events", path});
+  BOOST_TEST_REQUIRE(r.code == 0);
+  const auto rows = csv(read(path));
+  BOOST_TEST_REQUIRE(rows.size() == 3u);
+  const std::vector<std::string> header{"frame", "event", "a", "b", "nx", "ny", "depth", "jn", "jt"};
+  BOOST_TEST(rows[0] == header, boost::test_tools::per_element());
+  BOOST_TEST(rows[1][1] == "begin");
+  BOOST_TEST(rows[2][1] == "end");
+  BOOST_TEST((rows[1][2] == "0" && rows[1][3] == "1" && rows[1][4] == "-1" && rows[1][5] == "0"));
+  BOOST_TEST(number(rows[1][7]) == 0.6);  // m·2v, exchanged in the step it began
+  BOOST_TEST(std::stoi(rows[1][0]) < std::stoi(rows[2][0]));
+}
+
+// --save writes a scene file; --scene on it runs on to the same dump as a
+// run that never stopped.
+BOOST_AUTO_TEST_CASE(a_saved_run_continues_bit_for_bit) {
+  TempDir dir;
+  for (const std::vector<std::string>& mode : {std::vector<std::string>{"--solver", "course"},
+                                              {"--solver", "stable", "--friction", "0.5"}, {"--ccd", "on"}}) {
+    const auto whole = dir.file("whole.csv"), rest = dir.file("rest.csv"), saved = dir.file("saved.json");
+    std::vector<std::string> a{"--scene", "stack", "--frames", "600", "--dump", whole};
+    std::vector<std::string> b{"--scene", "stack", "--frames", "300", "--save", saved};
+    a.insert(a.end(), mode.begin(), mode.end());
+    b.insert(b.end(), mode.begin(), mode.end());
+    BOOST_TEST_REQUIRE(cli(a).code == 0);
+    BOOST_TEST_REQUIRE(cli(b).code == 0);
+    BOOST_TEST(has(read(saved), "\"state\""));
+    BOOST_TEST_REQUIRE(cli({"--scene", saved, "--frames", "300", "--dump", rest}).code == 0);
+    BOOST_TEST(read(rest) == read(whole));
   }
 }
 
@@ -401,6 +441,8 @@ BOOST_AUTO_TEST_CASE(bad_values_on_the_command_line) {
   expect_bad({"--solver", "fast"}, "--solver: must be course or stable (got 'fast')");
   expect_bad({"--ccd=maybe"}, "--ccd: must be on or off");
   expect_bad({"--overlays", "aabb,boxes"}, "--overlays");
+  expect_bad({"--friction", "-1"}, "--friction: must be in [0, 1000] (got '-1')");
+  expect_bad({"--friction", "slippery"}, "--friction: must be a number (got 'slippery')");
 }
 
 BOOST_AUTO_TEST_CASE(unwritable_outputs_fail_before_the_run) {
@@ -408,6 +450,9 @@ BOOST_AUTO_TEST_CASE(unwritable_outputs_fail_before_the_run) {
   expect_bad({"--trace", "/nonexistent/dir/x.csv"}, "--trace: cannot write");
   expect_bad({"--screenshot", "/nonexistent/dir/x.png", "--headless"}, "--screenshot: cannot write /nonexistent/dir/x.png");
   expect_bad({"--dump", ""}, "must not be empty");
+  expect_bad({"--events", "/nonexistent/dir/x.csv"}, "--events: cannot write /nonexistent/dir/x.csv");
+  expect_bad({"--save", "/nonexistent/dir/x.json"}, "--save: cannot write /nonexistent/dir/x.json");
+  expect_bad({"--save", ""}, "must not be empty");
 }
 
 BOOST_AUTO_TEST_SUITE_END()
