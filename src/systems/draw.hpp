@@ -22,6 +22,13 @@ inline constexpr int min_outlined = 6;
 Color outline_color(Color c);
 void outline(Vector p, Rect r, Color c, Canvas& canvas);
 
+// Beyond the sheet (docs/game-physics.md): a sensor is drawn as its outline
+// only, 2 px in its colour (nothing stops there); a one-way platform gets
+// its solid face drawn `solid_face` px thick in the outline's shade.
+inline constexpr int solid_face = 4;
+void draw_sensor(Vector p, Rect r, Color c, Canvas& canvas);
+void draw_solid_face(Vector p, Rect r, Face face, Color c, Canvas& canvas);
+
 class Draw : public System<component::position, component::box, component::color> {
  public:
   void update(const Components& c, Canvas& canvas) const;
