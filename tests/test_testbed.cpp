@@ -1,6 +1,7 @@
 // The testbed's input handling without a window: events in, world changes out.
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "app/builtin_scenes.hpp"
@@ -144,6 +145,40 @@ BOOST_AUTO_TEST_CASE(a_drag_flings_the_block_opposite_to_the_drag) {
   tb.handle(up(-5000, 300));
   BOOST_TEST(Vector::norm(tb.world().components.velocity[n + 1]) <= Testbed::max_fling + 1e-12);
   BOOST_TEST(tb.world().components.velocity[n + 1].x > 0.0);
+}
+
+// Right drag: a ray from the press point to the mouse, with the first body
+// it enters as ray_cast finds it; nothing is spawned.
+BOOST_AUTO_TEST_CASE(a_right_drag_shows_a_ray_and_its_hit) {
+  Testbed tb = on("bounce");
+  const std::size_t n = tb.world().components.size();
+  const InputEvent right_down{InputEvent::Kind::mouse_down, 0, 200, 100, 3};
+  tb.handle(right_down);
+  tb.handle(move(200, 590));
+  const View v = tb.view(60, 0);
+  BOOST_TEST(!v.sling.has_value());
+  BOOST_TEST_REQUIRE(v.ray.has_value());
+  BOOST_TEST((v.ray->from == Vector{200, 100}));
+  BOOST_TEST((v.ray->to == Vector{200, 590}));
+  BOOST_TEST_REQUIRE(v.ray->hit.has_value());
+  const auto want = ray_cast(tb.world(), {200, 100}, {0, 490}, 490);
+  BOOST_TEST_REQUIRE(want.has_value());
+  BOOST_TEST(v.ray->hit->body == want->body);
+  BOOST_TEST((v.ray->hit->point == want->point));
+  BOOST_TEST(v.ray->hit->fraction == want->fraction);
+  BOOST_TEST((v.ray->hit->point == Vector{200, 560}));  // the floor's top
+  BOOST_TEST((v.ray->hit->normal == Vector{0, -1}));
+  const auto ray_line = [](const std::string& l) { return l.starts_with("ray: body 1 at (200.0, 560.0)"); };
+  BOOST_TEST(std::count_if(v.hud.begin(), v.hud.end(), ray_line) == 1);  // the HUD says what was hit
+  // Short of the floor: the ray is drawn whole, with no hit.
+  tb.handle(move(200, 300));
+  BOOST_TEST_REQUIRE(tb.view(60, 0).ray.has_value());
+  BOOST_TEST(!tb.view(60, 0).ray->hit.has_value());
+  tb.handle(InputEvent{InputEvent::Kind::mouse_up, 0, 200, 300, 3});
+  BOOST_TEST(!tb.view(60, 0).ray.has_value());
+  BOOST_TEST(tb.world().components.size() == n);  // the right button spawns nothing
+  const auto keys = Testbed::key_list(8);
+  BOOST_TEST(std::count(keys.begin(), keys.end(), "right drag: ray, first body hit, normal") == 1);
 }
 
 BOOST_AUTO_TEST_CASE(no_block_is_spawned_in_a_wall) {

@@ -49,6 +49,14 @@ std::string options_line(const Params& p, const Overlays& o) {
   return s + (list.empty() ? "none (A, V, C)" : list);
 }
 
+// "ray: body 1 at (200.0, 560.0), normal (0, -1), 93.9% of the drag"
+std::string ray_line(const RayHit& h) {
+  char line[128];
+  std::snprintf(line, sizeof line, "ray: body %u at (%.1f, %.1f), normal (%g, %g), %.1f%% of the drag",
+                static_cast<unsigned>(h.body), h.point.x, h.point.y, h.normal.x, h.normal.y, 100.0 * h.fraction);
+  return line;
+}
+
 }  // namespace
 
 Testbed::Testbed(std::vector<SceneSpec> scenes, std::size_t current, Overrides overrides, Overlays overlays)
@@ -168,11 +176,13 @@ Testbed::Action Testbed::handle(const InputEvent& e) {
     case Kind::quit: return Action::quit;
     case Kind::mouse_down:
       if (e.button == 1) press_ = mouse_ = Vector{double(e.x), double(e.y)};
+      if (e.button == 3) ray_from_ = mouse_ = Vector{double(e.x), double(e.y)};
       return Action::none;
     case Kind::mouse_move:
       mouse_ = {double(e.x), double(e.y)};
       return Action::none;
     case Kind::mouse_up: {
+      if (e.button == 3) ray_from_.reset();
       if (e.button != 1 || !press_) return Action::none;
       const Vector from = *press_;
       press_.reset();
@@ -228,6 +238,7 @@ std::vector<std::string> Testbed::key_list(std::size_t scene_count) {
           digits + (n == 9 ? "scene (9: the --scene file); Tab: next" : "choose a scene, Tab: next scene"),
           "click  spawn a block",
           "drag   slingshot: it flies opposite to the drag",
+          "right drag: ray, first body hit, normal",
           "A      AABBs",
           "V      velocity vectors",
           "C      contact normals and penetration vectors",
@@ -242,6 +253,11 @@ View Testbed::view(double fps, double draw_ms) const {
   v.overlays = overlays_;
   if (overlays_.contacts) v.contacts = last_contacts_, v.contact_regions = last_regions_;
   if (press_) v.sling = std::pair{*press_, mouse_};
+  if (ray_from_) {
+    // Cast on every view: the bodies move under a ray held still.
+    const Vector d = mouse_ - *ray_from_;
+    v.ray = RayView{*ray_from_, mouse_, ray_cast(world_, *ray_from_, d, Vector::norm(d))};
+  }
   if (overlays_.hud) {
     const SceneSpec& s = scene();
     // The frame number on the title line: the measures' line is full in an 800 px window.
@@ -257,6 +273,7 @@ View Testbed::view(double fps, double draw_ms) const {
     v.hud.push_back(options_line(world_.params, overlays_));
     for (std::string& line : wrap("ms/step: " + Headless::stage_times(world_) + (world_.systems.draw ? draw : "  draw off")))
       v.hud.push_back(std::move(line));
+    if (v.ray && v.ray->hit) v.hud.push_back(ray_line(*v.ray->hit));
     if (!message_.empty()) v.hud.push_back(message_);
   }
   if (overlays_.help) v.help = key_list(scenes_.size());

@@ -6,6 +6,7 @@
 //   Space        pause / resume            N or →   one step (and pause)
 //   R            reset the scene           1-9      scene 1-8, 9: a --scene file; Tab: next
 //   left click   spawn a block             left drag  fling it opposite to the drag (slingshot)
+//   right drag   a ray from the press point to the mouse: the first body it enters, point and normal
 //   A  AABBs     V  velocity vectors       C  contact normals and penetrations
 //   I  HUD on/off    S  slow motion (x1/4)   H  this key list     Esc/Q  quit
 #pragma once
@@ -19,6 +20,7 @@
 #include <vector>
 
 #include "app/scene.hpp"
+#include "engine/query.hpp"
 #include "engine/world.hpp"
 
 namespace physics {
@@ -50,12 +52,20 @@ struct ContactRegion {
   Vector middle() const { return 0.5 * (lo + hi); }
 };
 
+// The right drag's ray, from the press point to the mouse, and the first
+// body it enters (ray_cast on the world as it is now), if any.
+struct RayView {
+  Vector from, to;
+  std::optional<RayHit> hit;
+};
+
 // One frame's picture beyond the blocks themselves.
 struct View {
   Overlays overlays;
   std::span<const Contact> contacts;  // the last step's collisions (none if it had none), if shown
   std::span<const ContactRegion> contact_regions;  // where each one is, in the same order
   std::optional<std::pair<Vector, Vector>> sling;  // drag: from the press point to the mouse
+  std::optional<RayView> ray;                      // right drag
   std::vector<std::string> hud;   // lines, top left
   std::vector<std::string> help;  // the key list, when H is on
 };
@@ -124,7 +134,8 @@ class Testbed {
   World world_;
   bool paused_ = false, slow_ = false;
   double acc_ms_ = 0.0;
-  std::optional<Vector> press_;
+  std::optional<Vector> press_;      // left button down: the slingshot
+  std::optional<Vector> ray_from_;   // right button down: the ray
   Vector mouse_{};
   std::vector<Contact> last_contacts_;
   std::vector<ContactRegion> last_regions_;

@@ -117,6 +117,7 @@ constexpr SDL_Color velocity_colour{200, 0, 200, 255};
 constexpr SDL_Color normal_colour{230, 0, 0, 255};
 constexpr SDL_Color penetration_colour{0, 120, 255, 255};
 constexpr SDL_Color contact_colour{255, 200, 0, 255};  // the shared edge
+constexpr SDL_Color ray_colour{0, 150, 150, 255};
 constexpr double velocity_scale = 100.0;    // px of arrow per px/ms: the distance covered in 100 ms
 constexpr double normal_length = 24.0;      // px
 constexpr double penetration_scale = 4.0;   // penetrations are a few px: drawn 4x
@@ -169,6 +170,23 @@ void draw_contacts(SDL_Renderer* r, const View& view) {
     haloed_arrow(r, at, at + penetration_scale * k.penetration, penetration_colour);
     haloed_arrow(r, at, at + normal_length * k.normal, normal_colour);
   }
+}
+
+// The right drag's ray: solid up to the first body it enters, faint beyond
+// (the whole drag solid when it hits nothing), a small square on the hit
+// and the normal of the face hit.
+void draw_ray(SDL_Renderer* r, const RayView& ray) {
+  const Vector end = ray.hit ? ray.hit->point : ray.to;
+  set_colour(r, ray_colour);
+  line(r, ray.from, end);
+  if (!ray.hit || !drawable(end)) return;
+  set_colour(r, SDL_Color{ray_colour.r, ray_colour.g, ray_colour.b, 80});
+  line(r, end, ray.to);
+  haloed_arrow(r, end, end + normal_length * ray.hit->normal, ray_colour);
+  // The square over the arrow's foot, so that the halo does not hide it.
+  set_colour(r, ray_colour);
+  const SDL_FRect mark{float(end.x - 3), float(end.y - 3), 7, 7};
+  SDL_RenderFillRectF(r, &mark);
 }
 
 // Draw's bodies and the overlays drawn over them (boxes, velocities).
@@ -236,6 +254,7 @@ double Window::render(const World& world, const View& view) {
                           float(Testbed::spawn_size), float(Testbed::spawn_size)};
     SDL_RenderDrawRectF(r, &ghost);
   }
+  if (view.ray) draw_ray(r, *view.ray);
 
   if (!impl_->font) return draw_ms;
   // Text on a pale backdrop, readable over a crowded scene.

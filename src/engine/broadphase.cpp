@@ -130,6 +130,17 @@ void UniformGrid::build(std::span<const Aabb> boxes, std::span<const std::uint8_
   sort_pairs(n);
 }
 
+void UniformGrid::index(std::span<const Aabb> boxes) {
+  if (boxes.size() >= (std::size_t{1} << 32) - 1) throw std::length_error("broadphase: too many bodies");
+  fixed_.clear();
+  found_.clear();
+  pairs_.clear();
+  double max_extent = 0.0;
+  const std::size_t small = classify(boxes, max_extent);
+  size_grid(boxes, small, max_extent);
+  fill_cells(boxes, small);
+}
+
 // Sorts the bodies into small (in the grid) and large (aside); boxes with a
 // NaN bound are in neither and collide with nothing. Afterwards cell_of_ says
 // which bodies are small (nonzero). Returns how many are small.

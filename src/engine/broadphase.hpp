@@ -79,6 +79,9 @@ class UniformGrid {
   // O(n + pairs); the result is in pairs(), sorted.
   void build(std::span<const Aabb> boxes, std::span<const std::uint8_t> fixed);
   const std::vector<PairKey>& pairs() const { return pairs_; }
+  // The cells of build() without its pairs (pairs() is left empty), for
+  // queries that only ask which boxes lie somewhere (engine/query.hpp).
+  void index(std::span<const Aabb> boxes);
 
   // Body i now has the box `box` for later queries. The pairs of build() are
   // left as they are; the box i had when the grid was built stays in its cell

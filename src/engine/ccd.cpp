@@ -2,30 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <queue>
 
 #include "engine/contact.hpp"
 #include "engine/rules.hpp"
+#include "engine/sweep.hpp"
 #include "systems/collision.hpp"
 #include "utils/rect.hpp"
 
 namespace physics {
 
 namespace {
-
-constexpr double inf = std::numeric_limits<double>::infinity();
-
-// Open interval of times at which s + d·t < 0 < s + size + d·t: the origin is
-// strictly inside the moving Minkowski box along one axis.
-struct Interval {
-  double lo, hi;
-};
-Interval slab(double s, double size, double d) {
-  if (d == 0.0) return (s < 0.0 && 0.0 < s + size) ? Interval{-inf, inf} : Interval{inf, -inf};
-  const double a = -s / d, b = -(s + size) / d;
-  return d > 0.0 ? Interval{b, a} : Interval{a, b};
-}
 
 // A relative speed this small next to the bodies' own is rounding left over
 // from an impulse that zeroed it (e = 0): it must not count as approaching,
@@ -88,15 +75,11 @@ std::optional<Impact> Ccd::time_of_impact(const Components& k, EntityId c, Entit
   const Vector vc = k.velocity[c], vb = k.velocity[b];
   const auto [s, size] = Rect::mdiff(k.position[c], k.box[c], k.position[b], k.box[b]);
   const Vector d = vb - vc;  // the Minkowski box moves at v_b - v_c
-  const Interval ix = slab(s.x, size.width, d.x);
-  const Interval iy = slab(s.y, size.height, d.y);
-  const double enter = std::max(ix.lo, iy.lo);
-  const double exit = std::min(ix.hi, iy.hi);
+  const auto [enter, exit, along_x] = sweep(s, size, d);  // engine/sweep.hpp, shared with the ray cast
   if (!(enter < exit) || exit <= t0 || enter > t1) return std::nullopt;
   const double floor = speed_floor(vc, vb);
   if (enter >= t0) {
-    // x wins a tie, as the course's penetration vector does.
-    const bool along_x = ix.lo >= iy.lo;
+    // x wins a tie (along_x), as the course's penetration vector does.
     const double dn = along_x ? d.x : d.y;
     if (std::abs(dn) <= floor) return std::nullopt;
     const Vector n = along_x ? Vector{dn > 0.0 ? 1.0 : -1.0, 0.0} : Vector{0.0, dn > 0.0 ? 1.0 : -1.0};

@@ -1,0 +1,196 @@
+#include "engine/query.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+#include "engine/sweep.hpp"
+
+namespace physics {
+
+namespace {
+
+using Bounds = BroadPhase::Bounds;
+
+void require_finite(Vector v, const char* what) {
+  if (!std::isfinite(v.x) || !std::isfinite(v.y))
+    throw std::invalid_argument(std::string("query: ") + what + " must be finite");
+}
+
+// Keeps the earlier hit; at the same fraction the lower id, so the answer
+// does not depend on the order bodies are tested in.
+void keep_first(std::optional<RayHit>& best, const std::optional<RayHit>& hit) {
+  if (hit && (!best || hit->fraction < best->fraction || (hit->fraction == best->fraction && hit->body < best->body)))
+    best = hit;
+}
+
+// The closed interval of fractions f at which o + f·t lies in [lo, hi].
+Interval clip(double o, double t, double lo, double hi) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  if (t == 0.0) return (lo <= o && o <= hi) ? Interval{-inf, inf} : Interval{inf, -inf};
+  const double a = (lo - o) / t, b = (hi - o) / t;
+  return t > 0.0 ? Interval{a, b} : Interval{b, a};
+}
+
+}  // namespace
+
+std::vector<EntityId> query_bodies(const World& w) {
+  if (w.systems.collision) {
+    const auto e = w.systems.collision->entities();
+    return {e.begin(), e.end()};
+  }
+  std::vector<EntityId> all(w.components.size());
+  std::iota(all.begin(), all.end(), EntityId{0});
+  return all;
+}
+
+Vector ray_travel(Vector origin, Vector direction, double max_distance) {
+  require_finite(origin, "the ray's origin");
+  require_finite(direction, "the ray's direction");
+  if (!std::isfinite(max_distance) || max_distance < 0.0)
+    throw std::invalid_argument("query: the ray's max_distance must be finite and >= 0");
+  // Divided by its larger component first, so that its length cannot
+  // overflow (a direction (1e308, 1e308)), and an axis stays exactly (0, ±1).
+  const double big = std::max(std::abs(direction.x), std::abs(direction.y));
+  if (big == 0.0) return {};
+  const Vector u{direction.x / big, direction.y / big};
+  const double len = Vector::norm(u);
+  return {max_distance * (u.x / len), max_distance * (u.y / len)};
+}
+
+std::optional<RayHit> ray_hit(Vector origin, Vector travel, EntityId body, Vector p, Rect r) {
+  // CCD's sweep with a point for one body: the body's Minkowski difference
+  // with a box of size 0 at the origin moves by -travel while the ray's
+  // fraction goes from 0 to 1; the ray enters the body when the difference
+  // takes in the origin.
+  const auto [s, size] = Rect::mdiff(origin, Rect{}, p, r);
+  const Vector d = -travel;
+  const auto [enter, exit, along_x] = sweep(s, size, d);
+  // enter < 0 < exit: the ray starts inside, and ignores the body.
+  if (!(enter < exit) || !(enter >= 0.0) || enter > 1.0) return std::nullopt;
+  // As in Ccd::time_of_impact: the face the difference moves in by.
+  const double dn = along_x ? d.x : d.y;
+  const double sign = dn > 0.0 ? 1.0 : -1.0;
+  // On the face exactly (not origin + enter·travel, which rounding puts a
+  // hair off it), and within it.
+  const Vector along = origin + enter * travel;
+  const Vector point = along_x ? Vector{dn > 0.0 ? p.x + r.width : p.x, std::clamp(along.y, p.y, p.y + r.height)}
+                               : Vector{std::clamp(along.x, p.x, p.x + r.width), dn > 0.0 ? p.y + r.height : p.y};
+  const Vector normal = along_x ? Vector{sign, 0.0} : Vector{0.0, sign};
+  return RayHit{body, point, normal, enter + 0.0};  // + 0.0: a fraction -0 reads 0
+}
+
+bool overlaps_region(Vector p, Rect r, Vector lo, Vector hi) {
+  // Open on both sides, as Rect::has_origin: touching is not overlapping.
+  return lo.x < p.x + r.width && p.x < hi.x && lo.y < p.y + r.height && p.y < hi.y;
+}
+
+bool contains_point(Vector p, Rect r, Vector q) { return overlaps_region(p, r, q, q); }
+
+QueryIndex::QueryIndex(const World& w) : ids_(query_bodies(w)) {
+  const Components& k = w.components;
+  const std::size_t n = ids_.size();
+  position_.reserve(n);
+  size_.reserve(n);
+  std::vector<Aabb> boxes;
+  boxes.reserve(n);
+  bool any = false;
+  for (const EntityId e : ids_) {
+    position_.push_back(k.position[e]);
+    size_.push_back(k.box[e]);
+    const Aabb b = boxes.emplace_back(Aabb::around(k.position[e], k.box[e], 0.0));
+    if (!b.valid()) continue;  // a body at NaN, which nothing finds
+    const Bounds f{b.min_x, b.min_y, b.max_x, b.max_y};
+    bounds_ = any ? Bounds{std::min(bounds_.x0, f.x0), std::min(bounds_.y0, f.y0), std::max(bounds_.x1, f.x1),
+                           std::max(bounds_.y1, f.y1)}
+                  : f;
+    any = true;
+  }
+  grid_.index(boxes);
+  finite_bounds_ = any && std::isfinite(bounds_.x0) && std::isfinite(bounds_.y0) && std::isfinite(bounds_.x1) &&
+                   std::isfinite(bounds_.y1);
+}
+
+std::optional<RayHit> QueryIndex::ray_cast(Vector origin, Vector direction, double max_distance) const {
+  const Vector travel = ray_travel(origin, direction, max_distance);
+  if (Vector::is_zero(travel)) return std::nullopt;  // enters nothing: the bodies holding the origin are ignored
+  return finite_bounds_ ? walk_grid(origin, travel) : test_all(origin, travel);
+}
+
+std::optional<RayHit> QueryIndex::test_all(Vector origin, Vector travel) const {
+  std::optional<RayHit> best;
+  for (std::size_t i = 0; i < ids_.size(); ++i)
+    keep_first(best, ray_hit(origin, travel, ids_[i], position_[i], size_[i]));
+  return best;
+}
+
+// The ray cut into pieces at most a cell long on each axis, in order; each
+// piece's box (grown by a slack) asks the grid for the bodies near it, which
+// get the exact test. A body the grid has not reported by the end of a piece
+// lies more than the slack away from the ray so far, so the ray enters it
+// after that piece: once a hit lies within the pieces walked, it is the
+// first. (Ties: a hit at the piece's very end does not stop the walk.)
+std::optional<RayHit> QueryIndex::walk_grid(Vector origin, Vector travel) const {
+  std::optional<RayHit> best;
+  const auto test = [&](std::uint32_t i) {
+    keep_first(best, ray_hit(origin, travel, ids_[i], position_[i], size_[i]));
+  };
+  const Bounds& b = bounds_;
+  // Points along the ray are computed to a few ulps of these coordinates;
+  // 2^-32 of them is far more, and still a tiny fraction of a pixel.
+  const double slack = (std::abs(origin.x) + std::abs(origin.y) + std::max(std::abs(b.x0), std::abs(b.x1)) +
+                        std::max(std::abs(b.y0), std::abs(b.y1))) * 0x1p-32 + 0x1p-32;
+  // Only the part [f0, f1] of the ray within the bodies' bounds can hit.
+  const Interval cx = clip(origin.x, travel.x, b.x0 - slack, b.x1 + slack);
+  const Interval cy = clip(origin.y, travel.y, b.y0 - slack, b.y1 + slack);
+  const double f0 = std::max({0.0, cx.lo, cy.lo}), f1 = std::min({1.0, cx.hi, cy.hi});
+  if (!(f0 <= f1)) return best;
+  const double span = (f1 - f0) * std::max(std::abs(travel.x), std::abs(travel.y));
+  const double pieces = std::max(1.0, std::ceil(span / grid_.cell_size()));
+  // More pieces than cells walks cells again and again (bodies in a line far
+  // from a huge one): testing every body is then cheaper.
+  if (!(pieces <= 2.0 * static_cast<double>(grid_.cells()) + 64.0)) return test_all(origin, travel);
+  const int n = static_cast<int>(pieces);
+  for (int c = 0; c < n; ++c) {
+    const double fa = f0 + (f1 - f0) * c / n;
+    const double fb = c + 1 == n ? f1 : f0 + (f1 - f0) * (c + 1) / n;
+    const Vector pa = origin + fa * travel, pb = origin + fb * travel;
+    grid_.query(Aabb::outward(std::min(pa.x, pb.x) - slack, std::min(pa.y, pb.y) - slack,
+                              std::max(pa.x, pb.x) + slack, std::max(pa.y, pb.y) + slack),
+                test);
+    if (best && best->fraction < fb) break;
+  }
+  return best;
+}
+
+std::vector<EntityId> QueryIndex::query_box(Vector lo, Vector hi) const {
+  require_finite(lo, "query_box's lo");
+  require_finite(hi, "query_box's hi");
+  if (lo.x > hi.x || lo.y > hi.y) throw std::invalid_argument("query: query_box's lo must not exceed hi on an axis");
+  std::vector<EntityId> out;
+  // The grid's closed float boxes hold the open ones: it reports a superset.
+  grid_.query(Aabb::outward(lo.x, lo.y, hi.x, hi.y), [&](std::uint32_t i) {
+    if (overlaps_region(position_[i], size_[i], lo, hi)) out.push_back(ids_[i]);
+  });
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+std::vector<EntityId> QueryIndex::query_point(Vector p) const {
+  require_finite(p, "query_point's point");
+  return query_box(p, p);
+}
+
+std::optional<RayHit> ray_cast(const World& w, Vector origin, Vector direction, double max_distance) {
+  return QueryIndex(w).ray_cast(origin, direction, max_distance);
+}
+
+std::vector<EntityId> query_box(const World& w, Vector lo, Vector hi) { return QueryIndex(w).query_box(lo, hi); }
+
+std::vector<EntityId> query_point(const World& w, Vector p) { return QueryIndex(w).query_point(p); }
+
+}  // namespace physics
