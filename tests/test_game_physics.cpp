@@ -8,6 +8,7 @@
 #include "app/dump.hpp"
 #include "app/save.hpp"
 #include "app/scene_json.hpp"
+#include "entities/block.hpp"
 #include "helpers.hpp"
 
 using namespace physics;
@@ -497,6 +498,57 @@ BOOST_AUTO_TEST_CASE(bad_values_are_named) {
   BOOST_TEST(error_of(R"({"world": {"friction": 2000}})") == "bad.json: world.friction: must be in [0, 1000] (got 2000)");
   BOOST_TEST(error_of(R"({"state": {"warm_start": [[3, 2, 0, 1, 0]]}})") ==
              "bad.json: state.warm_start[0]: must name two bodies c < b < 4 (got 3, 2)");
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(game_physics_drawing)
+
+namespace {
+// Records what the Draw system fills.
+struct Recorder : Canvas {
+  struct Fill {
+    Vector p;
+    Rect r;
+    Color c;
+  };
+  std::vector<Fill> fills;
+  void fill_rect(Vector p, Rect r, Color c) override { fills.push_back({p, r, c}); }
+  // Whether some fill covers the pixel (x, y).
+  bool covers(double x, double y) const {
+    for (const Fill& f : fills)
+      if (x >= f.p.x && x < f.p.x + f.r.width && y >= f.p.y && y < f.p.y + f.r.height) return true;
+    return false;
+  }
+};
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(a_sensor_is_drawn_as_its_outline_and_a_platform_with_a_thick_solid_face) {
+  World w(SystemSet{true, false, false, false});
+  const auto sensor = Block::make(w, 100, 100, 60, 40, Color{200, 0, 0, 255}, 1.0);
+  ContactRules r;
+  r.sensor = true;
+  w.components.set_rules(sensor.id, r);
+  Recorder canvas;
+  Game::draw(w, canvas);
+  BOOST_TEST(canvas.covers(100, 100));   // the outline
+  BOOST_TEST(canvas.covers(159, 139));
+  BOOST_TEST(!canvas.covers(130, 120));  // not the inside
+  for (const auto& f : canvas.fills) BOOST_TEST((f.c == Color{200, 0, 0, 255}));
+
+  World p(SystemSet{true, false, false, false});
+  const auto platform = Block::make(p, 100, 100, 60, 20, Color{100, 100, 100, 255}, infinity);
+  ContactRules up;
+  up.one_way = Face::up;
+  p.components.set_rules(platform.id, up);
+  Recorder drawn;
+  Game::draw(p, drawn);
+  // The last fill is the solid face: the top band, solid_face px thick, in the outline's shade.
+  const auto& face = drawn.fills.back();
+  BOOST_TEST((face.p == Vector{100, 100}));
+  BOOST_TEST(face.r.width == 60);
+  BOOST_TEST(face.r.height == solid_face);
+  BOOST_TEST((face.c == outline_color(Color{100, 100, 100, 255})));
 }
 
 BOOST_AUTO_TEST_SUITE_END()
