@@ -58,9 +58,10 @@ std::pair<double, double> impact(Components& k, EntityId c, EntityId b, Vector n
   const double wc = inverse_mass(k.mass[c]), wb = inverse_mass(k.mass[b]);
   change_normal_velocity(vc2, vb2, n, dv, wc, wb);
   // Coulomb friction with this impact's normal impulse (engine/contact.hpp).
-  const double mu = pair_friction(k.friction[c], k.friction[b]);
   const double jn = dv / (wc + wb);
-  const double jt = mu > 0.0 ? apply_friction(vc2, vb2, n, mu * jn, wc, wb) : 0.0;
+  const bool friction = k.friction[c] > 0.0 && k.friction[b] > 0.0;
+  const double jt =
+      friction ? apply_friction(vc2, vb2, n, pair_friction(k.friction[c], k.friction[b]) * jn, wc, wb) : 0.0;
   // Keep position + t·velocity continuous at t (see the header).
   k.position[c] = k.position[c] + t * (vc - vc2);
   k.position[b] = k.position[b] + t * (vb - vb2);
@@ -107,14 +108,28 @@ void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h, V
   std::vector<std::uint32_t> version(count, 0);
   std::priority_queue<Event, std::vector<Event>, Later> queue;
 
-  const bool rules = k.any_rules();
   const auto predict = [&](std::uint32_t ic, std::uint32_t ib, double t0) {
     if (ic > ib) std::swap(ic, ib);
-    if (rules && !solvable(k, entities[ic], entities[ib], h)) return;  // as the broad phase's pairs
     if (const auto hit = time_of_impact(k, entities[ic], entities[ib], t0, h))
       queue.push(Event{hit->t, ic, ib, version[ic], version[ib]});
   };
   for (const Pair& p : pairs_) predict(index[p.c], index[p.b], 0.0);
+  // After an impact, the impacts of its bodies c and b with everything again
+  // (not only the candidates, whose sweeps assumed the old velocities). With
+  // contact rules, only with the bodies the broad phase would pair them with
+  // (its pairs above are filtered already): a compile-time switch, so the
+  // loop without rules tests nothing more.
+  const auto predict_again = [&]<bool with_rules>(const Event& ev, EntityId c, EntityId b) {
+    const bool c_fixed = !std::isfinite(k.mass[c]), b_fixed = !std::isfinite(k.mass[b]);
+    for (std::uint32_t j = 0; j < count; ++j) {
+      const bool j_fixed = !std::isfinite(k.mass[entities[j]]);
+      if (j != ev.ic && !(c_fixed && j_fixed) && (!with_rules || solvable(k, c, entities[j], h)))
+        predict(ev.ic, j, ev.t);
+      if (j != ev.ib && j != ev.ic && !(b_fixed && j_fixed) && (!with_rules || solvable(k, b, entities[j], h)))
+        predict(ev.ib, j, ev.t);
+    }
+  };
+  const bool rules = k.any_rules();
 
   const std::int64_t budget = 16 * static_cast<std::int64_t>(count) + 128;
   std::int64_t resolved = 0;
@@ -140,16 +155,13 @@ void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h, V
     events.touch(c, b, hit->n, jn, jt);
     ++resolved;
     ++stats.impacts;
-    // Both bodies changed course: predict their impacts with everything again
-    // (not only the candidates, whose sweeps assumed the old velocities).
+    // Both bodies changed course.
     ++version[ev.ic];
     ++version[ev.ib];
-    const bool c_fixed = !std::isfinite(k.mass[c]), b_fixed = !std::isfinite(k.mass[b]);
-    for (std::uint32_t j = 0; j < count; ++j) {
-      const bool j_fixed = !std::isfinite(k.mass[entities[j]]);
-      if (j != ev.ic && !(c_fixed && j_fixed)) predict(ev.ic, j, ev.t);
-      if (j != ev.ib && j != ev.ic && !(b_fixed && j_fixed)) predict(ev.ib, j, ev.t);
-    }
+    if (rules)
+      predict_again.template operator()<true>(ev, c, b);
+    else
+      predict_again.template operator()<false>(ev, c, b);
   }
 }
 

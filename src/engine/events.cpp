@@ -6,10 +6,6 @@
 
 namespace physics {
 
-void ContactEvents::touch(EntityId c, EntityId b, Vector normal, double jn, double jt) {
-  if (enabled) step_.push_back({{c, b}, normal, 0.0, jn, jt});
-}
-
 // The pairs whose boxes overlap or lie within `gap` at the end of the step,
 // with their normal and depth (engine/contact.hpp's best_axis).
 void ContactEvents::add_resting(const Components& k, std::span<const EntityId> bodies) {

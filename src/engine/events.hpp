@@ -40,7 +40,9 @@ class ContactEvents {
   bool enabled = false;
 
   // A solver's contact during the step; the impulses of one pair add up.
-  void touch(EntityId c, EntityId b, Vector normal, double jn, double jt);
+  void touch(EntityId c, EntityId b, Vector normal, double jn, double jt) {
+    if (enabled) step_.push_back({{c, b}, normal, 0.0, jn, jt});
+  }
   // After the step: this step's events from the touches and the boxes.
   void finish(const Components& k, std::span<const EntityId> bodies, std::int64_t frame);
 

@@ -107,6 +107,11 @@ bool BroadPhase::course_next_slow(Pair& out) {
   }
 }
 
+bool BroadPhase::course_skip_unsolvable(const Components& k, Pair& out, bool done) {
+  while (!done && !solvable(k, out.c, out.b, course_h_)) done = !course_next(k, out);
+  return !done;
+}
+
 // ---- find() ----
 
 void BroadPhase::find(const Components& k, std::span<const EntityId> entities, double h, double reach,

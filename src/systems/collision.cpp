@@ -98,11 +98,12 @@ bool Collision::resolve(Components& k, EntityId c, EntityId b, Contact* out) {
     const double dv = -(1.0 + e) * vn;
     const double wc = inverse_mass(mc), wb = inverse_mass(mb);
     change_normal_velocity(k.velocity[c], k.velocity[b], n, dv, wc, wb);
-    jn = dv / (wc + wb);
     // Beyond the sheet: Coulomb friction, when both bodies have some
     // (engine/contact.hpp); without it the pair is the sheet's.
-    const double mu = pair_friction(k.friction[c], k.friction[b]);
-    if (mu > 0.0) jt = apply_friction(k.velocity[c], k.velocity[b], n, mu * jn, wc, wb);
+    const bool friction = k.friction[c] > 0.0 && k.friction[b] > 0.0;
+    if (friction || out) jn = dv / (wc + wb);
+    if (friction)
+      jt = apply_friction(k.velocity[c], k.velocity[b], n, pair_friction(k.friction[c], k.friction[b]) * jn, wc, wb);
   }
   if (out) *out = Contact{c, b, pen, n, approaching, jn, jt};
   return true;
