@@ -27,6 +27,7 @@ struct Scene {
   double height = 0;
   double gravity = 0;        // m/s², pointing down (-y)
   double restitution = 1.0;  // every body, every engine
+  double friction = 0.0;     // every body, every engine (a pair's: sqrt(mu_a mu_b), so this value)
   double dt = 1.0 / 60.0;    // s per step
   bool resting = false;      // bodies come to rest in contact (ours: stable solver)
   std::vector<Body> bodies;  // fixed bodies (walls) first
@@ -42,6 +43,8 @@ Scene make_rain(std::size_t n);
 // pyramid: Box2D's large_pyramid, a base of 100 squares, 5050 in all,
 // resting on the floor; fixed rotation, e = 0.
 Scene make_pyramid(std::size_t base = 100);
+// pyramid_friction: the same with friction 0.6 on every body and the walls.
+Scene make_pyramid_friction(std::size_t base = 100);
 
 // One engine running one scene. Bodies keep the scene's order.
 class Engine {
@@ -53,7 +56,7 @@ class Engine {
   virtual void read(std::vector<Body>& out) const = 0;
 };
 
-// Each adapter sets every body's mass to 1 (fixed: static), friction 0,
+// Each adapter sets every body's mass to 1 (fixed: static), the scene's friction (0 but in pyramid_friction),
 // fixed rotation, sleeping off, and keeps the engine's default iterations.
 // Ours runs the course's solver on scenes without resting contact and the
 // stable solver on the others, unless `course` forces the course's solver.

@@ -41,7 +41,7 @@ class Box2dEngine final : public Engine {
       fix.shape = &box;
       // Static bodies ignore density; dynamic ones get mass exactly 1.
       fix.density = static_cast<float>(1.0 / (4.0 * b.hx * b.hy));
-      fix.friction = 0.0f;
+      fix.friction = static_cast<float>(s.friction);  // Box2D mixes sqrt(a b): the pair gets s.friction
       fix.restitution = static_cast<float>(s.restitution);
       if (s.restitution == 1.0) fix.restitutionThreshold = 0.0f;
       body->CreateFixture(&fix);

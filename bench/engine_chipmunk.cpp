@@ -48,7 +48,7 @@ class ChipmunkEngine final : public Engine {
       cpSpaceAddBody(space_.get(), body);
 
       cpShape* shape = shapes_.emplace_back(cpBoxShapeNew(body, 2.0 * b.hx, 2.0 * b.hy, 0.0)).get();
-      cpShapeSetFriction(shape, 0.0);
+      cpShapeSetFriction(shape, std::sqrt(s.friction));  // Chipmunk multiplies the two: the pair gets s.friction
       cpShapeSetElasticity(shape, elasticity);
       cpSpaceAddShape(space_.get(), shape);  // shapes of static bodies go to the static index
     }

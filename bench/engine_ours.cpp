@@ -25,6 +25,7 @@ class Ours final : public Engine {
           static_cast<int>(2 * b.hy * px_per_m), physics::Color{200, 200, 200, 255},
           b.fixed ? physics::infinity : 1.0, s.restitution);
       w.components.velocity[e.id] = {b.vx * px_per_m / 1000.0, -b.vy * px_per_m / 1000.0};
+      w.components.friction[e.id] = s.friction;
       ids_.push_back(e.id);
     }
   }

@@ -31,7 +31,7 @@ using bench::Body;
 using bench::Scene;
 
 struct Options {
-  std::vector<std::string> scenes{"gas", "rain", "pyramid"};
+  std::vector<std::string> scenes{"gas", "rain", "pyramid", "pyramid_friction"};
   std::vector<std::size_t> sizes{1000, 10000, 100000};
   std::vector<std::string> engines{"ours", "box2d", "chipmunk"};
   int steps = 600, warmup = 60;
@@ -113,7 +113,8 @@ Scene make_scene(const std::string& name, std::size_t n) {
   if (name == "gas") return bench::make_gas(n);
   if (name == "rain") return bench::make_rain(n);
   if (name == "pyramid") return bench::make_pyramid();
-  throw std::invalid_argument("unknown scene '" + name + "' (gas, rain, pyramid)");
+  if (name == "pyramid_friction") return bench::make_pyramid_friction();
+  throw std::invalid_argument("unknown scene '" + name + "' (gas, rain, pyramid, pyramid_friction)");
 }
 
 double percentile(std::vector<double> v, double p) {
@@ -150,7 +151,7 @@ Result run(const std::string& engine, const Scene& s, const Options& o) {
   r.q = measure(s, end);
   const double e0 = kinetic_energy(s.bodies);
   if (s.name == "gas" && e0 > 0) r.q.energy_drift = (kinetic_energy(end) - e0) / e0;
-  if (s.name == "pyramid") {
+  if (s.name.starts_with("pyramid")) {
     const Body &a = s.bodies.back(), &b = end.back();
     r.q.top_moved = std::hypot(b.cx - a.cx, b.cy - a.cy);
   }
@@ -212,7 +213,7 @@ std::string machine_line() {
 
 
 const char* usage =
-    "usage: bench [--scenes gas,rain,pyramid] [--sizes 1000,10000,100000] [--engines ours,box2d,chipmunk]\n"
+    "usage: bench [--scenes gas,rain,pyramid,pyramid_friction] [--sizes 1000,10000,100000] [--engines ours,box2d,chipmunk]\n"
     "             [--steps 600] [--warmup 60] [--out bench/RESULTS.md]\n"
     "             [--compare 0|1] [--budget 40 (s per run)] [--isolate 0|1]   (engines also: ours-course, our course solver on every scene)\n";
 
@@ -265,11 +266,11 @@ int main(int argc, char** argv) try {
   table << "| engine | scene | N | median ms/step | p95 ms/step | ns/body/step | time ÷ ours | escaped | max overlap "
            "(block) | KE drift (gas) | top block moved (pyramid, m) |\n"
            "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-  std::printf("%-18s %-8s %7s %9s %9s %9s %7s %7s %9s %10s %9s\n", "engine", "scene", "N", "median", "p95", "ns/body",
+  std::printf("%-18s %-16s %7s %9s %9s %9s %7s %7s %9s %10s %9s\n", "engine", "scene", "N", "median", "p95", "ns/body",
               "÷ours", "escaped", "overlap", "KE drift", "top moved");
   for (const std::string& name : o.scenes) {
     std::vector<std::size_t> sizes = o.sizes;
-    if (name == "pyramid") sizes = {5050};
+    if (name.starts_with("pyramid")) sizes = {5050};
     for (const std::size_t n : sizes) {
       const Scene s = make_scene(name, n);
       double ours_ms = 0;
@@ -279,11 +280,11 @@ int main(int argc, char** argv) try {
         const double ns_body = r.median_ms * 1e6 / static_cast<double>(r.n);
         const std::string ratio = ours_ms > 0 ? fmt("%.2f", r.median_ms / ours_ms) : "-";
         const std::string drift = name == "gas" ? fmt("%+.2e", r.q.energy_drift) : "-";
-        const std::string top = name == "pyramid" ? fmt("%.4f", r.q.top_moved) : "-";
+        const std::string top = name.starts_with("pyramid") ? fmt("%.4f", r.q.top_moved) : "-";
         // A run cut short by the budget says how far it got.
         const std::string label =
             r.steps_run < o.steps ? engine + " (" + std::to_string(r.steps_run) + " steps)" : engine;
-        std::printf("%-18s %-8s %7zu %9.3f %9.3f %9.1f %7s %7zu %9.4f %10s %9s\n", label.c_str(), name.c_str(), r.n,
+        std::printf("%-18s %-16s %7zu %9.3f %9.3f %9.1f %7s %7zu %9.4f %10s %9s\n", label.c_str(), name.c_str(), r.n,
                     r.median_ms, r.p95_ms, ns_body, ratio.c_str(), r.q.escaped, r.q.max_overlap, drift.c_str(),
                     top.c_str());
         std::fflush(stdout);
@@ -324,11 +325,13 @@ int main(int argc, char** argv) try {
      << " discarded; times are per step, single thread, each run in a fresh process. A run that passes " << o.budget
      << " s stops early: its row says after how many steps (its statistics then cover the steps past the warm-up, "
         "or all of them if it did not get that far; its quality is the state where it stopped).\n\n"
-     << "Scenes (bench/scenes.cpp): unit squares of mass 1, fixed rotation, friction 0, sleeping off, each "
+     << "Scenes (bench/scenes.cpp): unit squares of mass 1, fixed rotation, friction 0 (but in pyramid_friction), sleeping off, each "
         "engine's default iterations; 1 m = 10 px in our engine. `gas`: area fraction 0.10, random velocities up "
         "to 5 m/s per axis (seed 42), no gravity, e = 1, our course solver. `rain`: a grid at area fraction 0.25 "
         "falls under 10 m/s² into a walled box, e = 0.5, our stable solver. `pyramid`: Box2D's large_pyramid "
-        "(base 100, 5050 blocks), e = 0, our stable solver. Engine settings: bench/engine_*.cpp.\n\n"
+        "(base 100, 5050 blocks), e = 0, our stable solver; `pyramid_friction`: the same with friction 0.6 on every "
+        "body and wall (Box2D's and our mixing rule, sqrt(mu_a mu_b), give the pair 0.6; Chipmunk multiplies, so "
+        "it gets sqrt(0.6) per shape). Engine settings: bench/engine_*.cpp.\n\n"
      << "Columns: *time ÷ ours* is the engine's median over ours (above 1: ours is faster); *escaped* counts "
         "bodies whose centre left the box; *max overlap* is the deepest overlap of two boxes, or of a box into a "
         "wall, at the last step, in block sides; *KE drift* is (E_end − E_start)/E_start; *top block moved* is the "

@@ -102,4 +102,11 @@ Scene make_pyramid(std::size_t base) {
   return s;
 }
 
+Scene make_pyramid_friction(std::size_t base) {
+  Scene s = make_pyramid(base);
+  s.name = "pyramid_friction";
+  s.friction = 0.6;
+  return s;
+}
+
 }  // namespace bench
