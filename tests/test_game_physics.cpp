@@ -3,6 +3,7 @@
 // saving a world to run it on. Closed forms where there are some; bit for
 // bit comparisons where a feature must change nothing else.
 #include <cmath>
+#include <map>
 #include <sstream>
 
 #include "app/dump.hpp"
@@ -10,6 +11,7 @@
 #include "app/scene_json.hpp"
 #include "entities/block.hpp"
 #include "helpers.hpp"
+#include "numerics/friction.hpp"
 
 using namespace physics;
 
@@ -71,6 +73,22 @@ BOOST_AUTO_TEST_CASE(a_block_launched_along_the_floor_stops_after_v0_squared_ove
     BOOST_TEST_CONTEXT("solver " << (solver == Solver::stable ? "stable" : "course") << ", ccd " << ccd) {
       BOOST_TEST(std::abs(d - exact) / exact < 0.03, "stopped after " << d << " px, exact " << exact);
     }
+  }
+}
+
+// The report's friction table (make report): the stop distance's error is
+// first order in dt for every solver, so it shrinks as dt does.
+BOOST_AUTO_TEST_CASE(the_stop_distance_error_falls_with_dt_in_every_solver) {
+  std::map<std::string, std::vector<double>> errors;
+  for (const auto& setting : numerics::friction_settings()) {
+    const auto r = numerics::run_slide(setting.mode);
+    BOOST_TEST(r.stopped);
+    errors[setting.family].push_back(std::abs(r.error));
+  }
+  for (const auto& [family, e] : errors) {
+    BOOST_TEST_REQUIRE(e.size() == 4u);
+    BOOST_TEST(e[0] < 0.03, family);           // the sheet's dt: within 3 %
+    BOOST_TEST(e[3] < e[0] / 4, family);       // 8 times smaller dt: at least 4 times smaller error
   }
 }
 
