@@ -1,10 +1,16 @@
 // make report: error against run time (report/accuracy.csv, report/REPORT.md,
 // report/work_precision.png). See docs/numerics.md.
+//
+// The errors are deterministic; the run times are not. So the run times are
+// measured only on request (`--time`, `make report TIMING=1`) and kept in
+// report/costs.csv with the machine and date of that run; a plain run reuses
+// them, and every file it writes comes out byte for byte the same.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <ctime>
 #include <fstream>
 #include <iomanip>
@@ -21,6 +27,12 @@ using namespace physics::numerics;
 namespace {
 
 constexpr int timing_runs = 5;
+
+// One list for the whole run: the rows point into it.
+const std::vector<Scenario>& report_scenarios_cached() {
+  static const std::vector<Scenario> scenarios = report_scenarios();
+  return scenarios;
+}
 
 std::string machine_line() {
   std::string cpu = "unknown CPU";
@@ -63,8 +75,38 @@ struct Row {
   const Scenario* scenario;
   Setting setting;
   Errors err;
-  double cost;
+  double cost;  // ms per simulated second; NaN when the costs file has no entry for the row
 };
+
+// The costs of one timed run, keyed by scenario, family and setting.
+struct Costs {
+  std::string machine;  // CPU, compiler and date of the timed run
+  std::map<std::string, double> ms;
+};
+
+std::string key(const Scenario& s, const Setting& st) { return s.name + "," + st.family + "," + st.label; }
+
+constexpr const char* machine_prefix = "# machine: ";
+
+// report/costs.csv: a "# machine: ..." line, a header, then scenario,family,setting,ms_per_simulated_s.
+Costs load_costs(const std::string& path) {
+  Costs c;
+  std::ifstream in(path);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind(machine_prefix, 0) == 0) c.machine = line.substr(std::strlen(machine_prefix));
+    const auto comma = line.rfind(',');
+    if (line.empty() || line[0] == '#' || comma == std::string::npos || line.rfind("scenario,", 0) == 0) continue;
+    c.ms[line.substr(0, comma)] = std::strtod(line.c_str() + comma + 1, nullptr);
+  }
+  return c;
+}
+
+void save_costs(const std::string& path, const Costs& c, const std::vector<Row>& rows) {
+  std::ofstream out(path);
+  out << machine_prefix << c.machine << "\nscenario,family,setting,ms_per_simulated_s\n" << std::setprecision(6);
+  for (const Row& r : rows) out << key(*r.scenario, r.setting) << "," << r.cost << "\n";
+}
 
 std::string num(double x, int prec = 3) {
   if (std::isnan(x)) return "n/a";
@@ -130,27 +172,22 @@ std::string reading(const std::vector<const Row*>& rows) {
   return o.str();
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  const std::string dir = argc > 1 ? argv[1] : "report";
-  const std::string work = argc > 2 ? argv[2] : "build/report_work";
-  std::system(("mkdir -p '" + dir + "' '" + work + "'").c_str());
-  const std::string machine = machine_line();
-  std::cout << "machine: " << machine << "\n";
-
-  const auto scenarios = report_scenarios();
-  const auto settings = report_settings();
+std::vector<Row> measure_rows(const Costs& costs, bool time) {
   std::vector<Row> rows;
-  for (const Scenario& s : scenarios)
-    for (const Setting& st : settings) {
-      Row r{&s, st, measure(s, st.mode), cost(s, st.mode)};
+  for (const Scenario& s : report_scenarios_cached())
+    for (const Setting& st : report_settings()) {
+      const auto known = costs.ms.find(key(s, st));
+      const double c = time ? cost(s, st.mode) : known != costs.ms.end() ? known->second : NAN;
+      Row r{&s, st, measure(s, st.mode), c};
       std::cout << std::left << std::setw(16) << s.name << std::setw(24) << st.family << std::setw(14) << st.label
                 << " pos " << std::setw(10) << num(r.err.pos_rms) << " cost " << num(r.cost) << " ms/s" << std::endl;
       rows.push_back(r);
     }
+  return rows;
+}
 
-  std::ofstream csv(dir + "/accuracy.csv");
+void write_csv(const std::string& path, const std::vector<Row>& rows) {
+  std::ofstream csv(path);
   csv << "scenario,family,setting,dt_ms,substeps,ccd,solver,iterations,pos_rms_px,first_impact_err_ms,energy_err_rel,"
          "momentum_err_rel,max_penetration_px,tunnelled,ccd_capped_substeps,ms_per_simulated_s\n";
   csv << std::setprecision(6);
@@ -159,38 +196,49 @@ int main(int argc, char** argv) {
     csv << r.scenario->name << "," << r.setting.family << "," << r.setting.label << "," << m.dt << "," << m.substeps
         << "," << (m.ccd ? 1 : 0) << "," << (m.solver == Solver::stable ? "stable" : "course") << "," << m.iterations
         << "," << r.err.pos_rms << "," << num(r.err.first_impact, 6) << "," << r.err.energy << "," << r.err.momentum
-        << "," << r.err.max_penetration << "," << r.err.tunnelled << "," << r.err.capped << "," << r.cost << "\n";
+        << "," << r.err.max_penetration << "," << r.err.tunnelled << "," << r.err.capped << "," << num(r.cost, 6)
+        << "\n";
   }
+}
 
-  // Plot data: one gnuplot data block per scenario, one sub-block per family.
+std::vector<std::string> families_of(const std::vector<Setting>& settings) {
   std::vector<std::string> families;
   for (const Setting& st : settings)
     if (std::find(families.begin(), families.end(), st.family) == families.end()) families.push_back(st.family);
-  std::ofstream dat(work + "/work_precision.dat");
-  for (const Scenario& s : scenarios)
+  return families;
+}
+
+// Plot data: one gnuplot data block per scenario, one sub-block per family (rows without a cost left out).
+void write_plot_data(const std::string& path, const std::vector<Row>& rows, const std::vector<std::string>& families) {
+  std::ofstream dat(path);
+  for (const Scenario& s : report_scenarios_cached())
     for (const std::string& f : families) {
       dat << "# " << s.name << " / " << f << "\n";
       for (const Row& r : rows)
-        if (r.scenario == &s && r.setting.family == f)
+        if (r.scenario == &s && r.setting.family == f && !std::isnan(r.cost))
           dat << r.cost << " " << std::max(r.err.pos_rms, 1e-9) << "\n";
       dat << "\n\n";
     }
-  dat.close();
-  std::ofstream gp(work + "/work_precision.gp");
+}
+
+constexpr const char* styles[] = {"lc rgb '#1f77b4' pt 7", "lc rgb '#ff7f0e' pt 5", "lc rgb '#2ca02c' pt 9",
+                                  "lc rgb '#d62728' pt 11", "lc rgb '#9467bd' pt 13"};
+
+void write_plot_script(const std::string& path, const std::string& dir, const std::string& work,
+                       const std::vector<std::string>& families) {
+  std::ofstream gp(path);
   gp << "set terminal pngcairo size 1500,1300 font 'DejaVu Sans,10'\n"
      << "set output '" << dir << "/work_precision.png'\n"
      << "set multiplot layout 3,3 title 'Work-precision: position RMS error vs run time (log-log; errors below 1e-9 px drawn at 1e-9)'\n"
      << "set logscale xy\nset grid\nset format y '10^{%L}'\nset format x '10^{%L}'\n"
-     << "set xlabel 'ms of wall time per simulated second'\nset ylabel 'position RMS error (px)'\n"
+     << "set xlabel 'ms of wall time per simulated second (report/costs.csv)'\nset ylabel 'position RMS error (px)'\n"
      << "set key off\n";
-  const char* styles[] = {"lc rgb '#1f77b4' pt 7", "lc rgb '#ff7f0e' pt 5", "lc rgb '#2ca02c' pt 9",
-                          "lc rgb '#d62728' pt 11", "lc rgb '#9467bd' pt 13"};
+  const auto& scenarios = report_scenarios_cached();
   for (std::size_t si = 0; si < scenarios.size(); ++si) {
     gp << "set title '" << scenarios[si].name << "'\nplot ";
-    for (std::size_t fi = 0; fi < families.size(); ++fi) {
+    for (std::size_t fi = 0; fi < families.size(); ++fi)
       gp << (fi ? ", " : "") << "'" << work << "/work_precision.dat' index " << si * families.size() + fi
          << " with linespoints lw 2 " << styles[fi % 5] << " title '" << families[fi] << "'";
-    }
     gp << "\n";
   }
   // The legend in its own panel.
@@ -199,18 +247,17 @@ int main(int argc, char** argv) {
   for (std::size_t fi = 0; fi < families.size(); ++fi)
     gp << (fi ? ", " : "") << "NaN with linespoints lw 2 " << styles[fi % 5] << " title '" << families[fi] << "'";
   gp << "\nunset multiplot\n";
-  gp.close();
-  if (std::system(("gnuplot '" + work + "/work_precision.gp'").c_str()) != 0) {
-    std::cerr << "report: gnuplot failed\n";
-    return 1;
-  }
+}
 
-  std::ofstream md(dir + "/REPORT.md");
+void write_markdown(const std::string& path, const std::vector<Row>& rows, const std::string& machine) {
+  std::ofstream md(path);
   md << "# Numerics report: error against run time\n\n"
      << "Generated by `make report` (`tools/report_main.cpp`); do not edit by hand.\n\n"
-     << "Machine: " << machine << ". Costs are the median of " << timing_runs
-     << " runs in the same process (wall time of `World::step` alone, ms per simulated second); the machine is "
-        "shared, so they are noisy to some tens of per cent.\n\n"
+     << "Errors are recomputed by every `make report` and are deterministic. Costs are not: they come from the last "
+        "timed run, `make report TIMING=1`, kept in [costs.csv](costs.csv) (" << machine << "; median of "
+     << timing_runs << " runs in the same process, wall time of `World::step` alone, ms per simulated second; the "
+        "machine is shared, so they are noisy to some tens of per cent). A plain `make report` reuses them, so it "
+        "rewrites this file, accuracy.csv and work_precision.png byte for byte.\n\n"
      << "Errors are against the exact event-driven reference (`src/reference/`): position RMS over the finite bodies "
         "at 1/4, 1/2, 3/4 and all of the run; first-impact time error (the engine sees an impact at the end of its "
         "frame; the tracked body, or any for the gas); energy error (kinetic + potential) relative to the energy in "
@@ -218,7 +265,7 @@ int main(int argc, char** argv) {
         "walls (walled scenes) or pairs whose x order differs from the reference (open scenes); capped = CCD substeps "
         "that ran out of impact budget.\n\n"
      << "![work-precision diagram](work_precision.png)\n\n";
-  for (const Scenario& s : scenarios) {
+  for (const Scenario& s : report_scenarios_cached()) {
     md << "## " << s.name << "\n\n"
        << "| family | setting | pos RMS (px) | first impact (ms) | energy | momentum | max pen. (px) | tunnelled | "
           "capped | cost (ms/s) |\n|---|---|---|---|---|---|---|---|---|---|\n";
@@ -233,6 +280,39 @@ int main(int argc, char** argv) {
     }
     md << "\n" << reading(mine) << "\n\n";
   }
-  std::cout << "wrote " << dir << "/accuracy.csv, " << dir << "/REPORT.md, " << dir << "/work_precision.png\n";
+}
+
+}  // namespace
+
+// report DIR WORK [--time]: DIR gets the committed files, WORK gnuplot's input.
+int main(int argc, char** argv) {
+  const std::string dir = argc > 1 ? argv[1] : "report";
+  const std::string work = argc > 2 ? argv[2] : "build/report_work";
+  const bool time = argc > 3 && std::string(argv[3]) == "--time";
+  std::system(("mkdir -p '" + dir + "' '" + work + "'").c_str());
+  Costs costs = time ? Costs{machine_line(), {}} : load_costs(dir + "/costs.csv");
+  std::cout << (time ? "timing on: " : "costs from " + dir + "/costs.csv, timed on: ") << costs.machine << "\n";
+
+  const std::vector<Row> rows = measure_rows(costs, time);
+  if (time) save_costs(dir + "/costs.csv", costs, rows);
+  // A setting added since the last timed run has no cost to plot: time them all again rather than mix runs.
+  const auto missing = std::count_if(rows.begin(), rows.end(), [](const Row& r) { return std::isnan(r.cost); });
+  if (missing) {
+    std::cerr << "report: " << missing << " of " << rows.size() << " settings have no cost in " << dir
+              << "/costs.csv; time them with `make report TIMING=1`\n";
+    return 1;
+  }
+
+  write_csv(dir + "/accuracy.csv", rows);
+  const auto families = families_of(report_settings());
+  write_plot_data(work + "/work_precision.dat", rows, families);
+  write_plot_script(work + "/work_precision.gp", dir, work, families);
+  if (std::system(("gnuplot '" + work + "/work_precision.gp'").c_str()) != 0) {
+    std::cerr << "report: gnuplot failed\n";
+    return 1;
+  }
+  write_markdown(dir + "/REPORT.md", rows, costs.machine);
+  std::cout << "wrote " << dir << "/accuracy.csv, " << dir << "/REPORT.md, " << dir << "/work_precision.png"
+            << (time ? ", " + dir + "/costs.csv" : "") << "\n";
   return 0;
 }

@@ -92,17 +92,24 @@ std::string escape_line(const World& w) {
          std::to_string(h.first_escape->frame) + ")";
 }
 
+// The note names what happened in general terms (a pile and a crowd show the
+// same two symptoms) and the option that stops each, unless it is on already.
 std::string advice(const World& w) {
   const Health& h = w.health;
+  const bool course = w.params.solver == Solver::course;
   std::string a;
-  if (h.deep && w.params.solver == Solver::course)
+  if (h.deep && course)
     a = "overlaps deeper than 1 px persist (bodies " + std::to_string(h.deep->c) + " and " + std::to_string(h.deep->b) +
         " after frame " + std::to_string(h.deep->frame) +
-        "): the course solver's one pass lets stacks sink; --solver stable holds them";
-  if (h.escaped > 0 && !w.params.ccd)
-    a += std::string(a.empty() ? "" : "; ") +
-         "bodies left the world: fast bodies tunnel through walls in one step; --ccd on stops that";
-  return a.empty() ? a : a + " (docs/numerics.md)";
+        "): the course solver's one pass per step leaves bodies pressed together overlapping (a stack sinks, a crowd "
+        "pushes bodies into walls); --solver stable separates them";
+  std::string how;
+  if (h.escaped > 0 && !w.params.ccd) how = "fast ones tunnel through walls in one step (--ccd on stops that)";
+  if (h.escaped > 0 && course)
+    how += std::string(how.empty() ? "" : ", ") +
+           "pressed ones are pushed into or through walls by the course solver (--solver stable stops that)";
+  if (!how.empty()) a += std::string(a.empty() ? "" : "; ") + "bodies left the world: " + how;
+  return a.empty() ? a : a + "; see docs/numerics.md";
 }
 
 std::string hud_line(const World& w, double fps) {

@@ -33,7 +33,8 @@ std::string stage_times(const World& w);
 // and the command line: `non_finite_line` is the one-line error
 // ("body 7 has a non-finite velocity (nan, 0) after frame 3", empty if none);
 // `escape_line` is "0" or "2 (the first: body 12, by frame 40)"; `advice`
-// names the course solver's limit that was met and its option, or is empty.
+// says what was seen (deep overlaps that persist, bodies that left the
+// world) and the options that stop it (--solver stable, --ccd on), or is empty.
 std::string non_finite_line(const World& w);
 std::string escape_line(const World& w);
 std::string advice(const World& w);

@@ -48,6 +48,17 @@ class BroadPhase {
   void find(const Components& k, std::span<const EntityId> entities, double h, double reach, std::vector<Pair>& out,
             PairRule rule = PairRule::solvable);
 
+  // After a course pass, before anything else asks: calls f(pair) for each
+  // pair the pass's grid lists (boxes grown by course_margin that overlapped
+  // when the pass began, or at its last rebuild), in the sheet's order. No
+  // grid is built, so it costs a walk over a list: the health check's look
+  // for deep overlaps (engine/health.hpp). Nothing when the grid is find()'s.
+  template <class F>
+  void each_course_candidate(F&& f) const {
+    if (fat_built_) return;
+    for (const PairKey key : grid_.pairs()) f(Pair{course_entities_[pair_first(key)], course_entities_[pair_second(key)]});
+  }
+
   // px. How far a correction may push a body before its pairs are looked up
   // again; any value >= 0 gives the same pairs, this one was the fastest on
   // the bench scenes (fewer look-ups against more candidates).
