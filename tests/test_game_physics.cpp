@@ -328,6 +328,25 @@ BOOST_AUTO_TEST_CASE(everything_moves_exactly_as_if_the_sensor_were_not_there) {
   }
 }
 
+// A body inside a sensor, or two filtered bodies on top of each other, are
+// meant to overlap: the health check's persistent-overlap note ignores them.
+BOOST_AUTO_TEST_CASE(meant_overlaps_are_not_reported_as_persistent) {
+  SceneSpec s = floor_scene(Solver::course, 0.0);
+  BlockSpec zone = block({200, 400}, 200, 160, infinity);
+  zone.contact.rules.sensor = true;
+  s.blocks.push_back(zone);
+  s.blocks.push_back(block({250, 500}, 40, 60, 1.0));  // resting on the floor, inside the zone
+  BlockSpec ghost = block({255, 505}, 30, 30, 1.0);     // inside that block, filtered from it
+  ghost.contact.rules.category = 2;
+  ghost.contact.rules.mask = ~2u;
+  s.blocks.push_back(ghost);
+  std::get<BlockSpec>(s.blocks[1]).contact.rules.mask = ~2u;
+  World w = make_world(s, false);
+  run(w, 300);
+  BOOST_TEST(!w.health.deep.has_value());
+  BOOST_TEST(w.health.escaped == 0);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
 
 BOOST_AUTO_TEST_SUITE(one_way_platforms)

@@ -121,7 +121,12 @@ void World::check_health() {
   // The pairs the step's last course pass began with: a persistent overlap is
   // among them (it was there before the pass too), and walking them costs far
   // less than a new grid (which took ~1 % of a gas step every 60 frames).
+  // A sensor's overlaps, filtered pairs and bodies passing through a one-way
+  // platform are meant to overlap: only pairs the solvers see count.
+  const bool rules = components.any_rules();
+  const double h = params.dt / params.substeps;
   broadphase.each_course_candidate([&](Pair p) {  // (never two infinite masses)
+    if (rules && !solvable(components, p.c, p.b, h)) return;
     const double d = overlap_depth(components, p.c, p.b);
     if (d > deepest) {
       deepest = d;
