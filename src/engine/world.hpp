@@ -84,10 +84,6 @@ struct World {
   void record_contacts();
   void finish_events();
 
- private:
-  void record_solver_contacts();
-
- public:
   // The pairs of the Collision system's bodies, for its pass.
   BroadPhase::CoursePairs course_pairs();
 
@@ -98,6 +94,7 @@ struct World {
   std::size_t finite_bodies() const;
 
  private:
+  void record_solver_contacts();  // before_move's, after the stable solver's velocities
   std::vector<std::uint8_t> destroyed_;  // by id; shorter than the arrays until a body is destroyed
 };
 
