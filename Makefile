@@ -24,10 +24,19 @@ ifeq ($(MAKELEVEL),0)
   ifeq ($(filter -j%,$(shell printenv MAKEFLAGS)),)
     NPROC := $(shell nproc 2>/dev/null || echo 1)
     MAKEFLAGS += -j$(NPROC) --output-sync=target --no-print-directory
-    # A build from scratch (no $(BUILD)/obj yet): about 200 s of CPU for the game, the tests and the library.
+    # A build from scratch (no $(BUILD)/obj yet) says how long it will take,
+    # from CPU seconds measured on a fresh clone (docs/numerics.md, "Tests
+    # and their time"): 50 for the library and the game, 65 for the test
+    # files, 32 for the exercise trees (make test), then the test binary's
+    # 20 s, which run on one core.
     ifeq ($(wildcard $(BUILD)/obj),)
-      ifneq ($(filter-out clean deps layers,$(or $(MAKECMDGOALS),all)),)
-        $(info building from scratch (about $(shell echo $$((200 / $(NPROC)))) s on $(NPROC) cores)...)
+      GOALS := $(or $(MAKECMDGOALS),all)
+      ifneq ($(filter test,$(GOALS)),)
+        $(info building from scratch and testing (about $(shell echo $$(((50 + 65 + 32) / $(NPROC) + 20))) s on $(NPROC) cores)...)
+      else ifneq ($(filter run,$(GOALS)),)
+        $(info building the game from scratch (about $(shell echo $$((50 / $(NPROC)))) s on $(NPROC) cores)...)
+      else ifneq ($(filter all $(BUILD)/tests,$(GOALS)),)
+        $(info building from scratch (about $(shell echo $$(((50 + 65) / $(NPROC)))) s on $(NPROC) cores)...)
       endif
     endif
   endif
