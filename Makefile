@@ -26,17 +26,17 @@ ifeq ($(MAKELEVEL),0)
     MAKEFLAGS += -j$(NPROC) --output-sync=target --no-print-directory
     # A build from scratch (no $(BUILD)/obj yet) says how long it will take,
     # from CPU seconds measured on a fresh clone (docs/numerics.md, "Tests
-    # and their time"): 50 for the library and the game, 65 for the test
+    # and their time"): 50 for the library and the game, 45 for the test
     # files, 32 for the exercise trees (make test), then the test binary's
-    # 20 s, which run on one core.
+    # 24 s, which run on one core.
     ifeq ($(wildcard $(BUILD)/obj),)
       GOALS := $(or $(MAKECMDGOALS),all)
       ifneq ($(filter test,$(GOALS)),)
-        $(info building from scratch and testing (about $(shell echo $$(((50 + 65 + 32) / $(NPROC) + 20))) s on $(NPROC) cores)...)
+        $(info building from scratch and testing (about $(shell echo $$(((50 + 45 + 32) / $(NPROC) + 24))) s on $(NPROC) cores)...)
       else ifneq ($(filter run,$(GOALS)),)
         $(info building the game from scratch (about $(shell echo $$((50 / $(NPROC)))) s on $(NPROC) cores)...)
       else ifneq ($(filter all $(BUILD)/tests,$(GOALS)),)
-        $(info building from scratch (about $(shell echo $$(((50 + 65) / $(NPROC)))) s on $(NPROC) cores)...)
+        $(info building from scratch (about $(shell echo $$(((50 + 45) / $(NPROC)))) s on $(NPROC) cores)...)
       endif
     endif
   endif
@@ -132,10 +132,13 @@ $(BUILD)/tests: $(TEST_OBJ) $(BUILD)/libphysics.a
 $(BUILD)/obj/src/app/window.o $(BUILD)/obj/src/app/main.o: CXXFLAGS += $(SDL_CFLAGS)
 # (private: not passed on to prerequisites, such as the precompiled header)
 $(BUILD)/obj/tools/%.o: private CXXFLAGS += -Itools
-# The test files are most of a build's time (their BOOST_TEST lines expand
-# to much code): -g1 keeps their line tables (backtraces, breakpoints by
-# line) without the full debug info, 40 % less time for them.
-TEST_FLAGS := -Itools -g1
+# The test files were most of a build's time (their BOOST_TEST lines expand
+# to much code): 103 s of CPU at -O2 -g, 43 s at -O1 -g1 with the header
+# below precompiled. They drive the library, which keeps $(OPT) and -g (the
+# test binary runs in the same 24 s), and -g1 keeps their line tables
+# (backtraces, breakpoints by line). Results do not depend on -O
+# (-ffp-contract=off; `make determinism` checks -O0 against -O2).
+TEST_FLAGS := -Itools -O1 -g1
 # Boost.Test's header, precompiled once with the test files' own flags and
 # included first in each of them: each spent ~1 s of its 3-14 s parsing it.
 TEST_PCH := $(BUILD)/obj/pch/test_pch.hpp
