@@ -235,9 +235,10 @@ clean:
 # `make exercise-test Q=6`: builds exercise/ in exercise/build, runs the
 # suites q6_* (every question's without Q). STRICT=1: fail with the tests.
 # `make exercise-check`: the stubbed tree fails every question's suites, the
-# answered one passes them, in the sheet's order (-O0 builds; separate from
-# `make test`: about 50 s from scratch on 2 cores, 20 s again).
-# `make test` runs the parse-level check of the markers (exercise-lint).
+# answered one passes them, in the sheet's order (-O0 builds in their own
+# tree, ~32 s of CPU from scratch: `exercise-trees`), then the project's own
+# q suites pass. `make test` runs it (the trees beside its own build) and the
+# parse-level check of the markers (exercise-lint).
 .PHONY: exercise exercise-test exercise-check exercise-trees exercise-lint
 exercise:
 	python3 tools/exercise/make_exercise.py --out exercise $(if $(filter 1,$(FORCE)),--force)
