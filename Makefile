@@ -137,8 +137,10 @@ $(BUILD)/obj/tools/%.o: private CXXFLAGS += -Itools
 # below precompiled. They drive the library, which keeps $(OPT) and -g (the
 # test binary runs in the same 24 s), and -g1 keeps their line tables
 # (backtraces, breakpoints by line). Results do not depend on -O
-# (-ffp-contract=off; `make determinism` checks -O0 against -O2).
-TEST_FLAGS := -Itools -O1 -g1
+# (-ffp-contract=off; `make determinism` checks -O0 against -O2, and an
+# OPT=-O0 build keeps its test files at -O0 too, so that no inline function
+# the library calls comes from a more optimised test object).
+TEST_FLAGS := -Itools -g1 $(if $(filter -O0,$(OPT)),,-O1)
 # Boost.Test's header, precompiled once with the test files' own flags and
 # included first in each of them: each spent ~1 s of its 3-14 s parsing it.
 TEST_PCH := $(BUILD)/obj/pch/test_pch.hpp
