@@ -71,14 +71,17 @@ struct Track {
   double momentum_drift = 0;
   int outside = 0;          // max count of bodies outside the walls
 };
-Track run(World& w, int frames, bool with_walls, Vector wall_offset = {}, int every = 1) {
+Track run(const Mode& m, World& w, int frames, bool with_walls, Vector wall_offset = {}, int every = 1) {
   Track t;
   const double E0 = step_energy(w);
   const double play = energy_in_play(w);
   const Vector P0 = momentum(w);
   const double scale = momentum_scale(w);
+  // finish() then finds more than 1 % of the substeps run so far capped: the same failure.
+  const double lost_after = 0.01 * frames * w.params.substeps;
   for (int f = 1; f <= frames; ++f) {
     Game::step(w);
+    if (m.stop_when_lost && static_cast<double>(w.ccd.stats.capped_substeps) > lost_after) break;
     if (f % every != 0 && f != frames) continue;
     if (!all_finite(w)) {
       t.finite = false;
@@ -105,7 +108,7 @@ Outcome light_under_heavy(const Mode& m, double ratio) {
   walls(w);
   block(w, 390, 540, 20, 20, 1.0);       // light, on the floor
   block(w, 380, 500, 40, 40, ratio);     // heavy, on the light one
-  const Track t = run(w, 600, true);
+  const Track t = run(m, w, 600, true);
   if (!t.finite) return nan_outcome();
   return finish(t.max_overlap < max_sink && t.outside == 0, fmt("sink %.3g px", t.max_overlap) + out_text(t.outside), w);
 }
@@ -114,7 +117,7 @@ Outcome heavy_hits_light(const Mode& m, double ratio) {
   World w = make_world(m);
   block(w, 100, 100, 40, 40, ratio, {0.5, 0});
   block(w, 300, 110, 20, 20, 1.0);
-  const Track t = run(w, 120, false);
+  const Track t = run(m, w, 120, false);
   if (!t.finite) return nan_outcome();
   return {t.momentum_drift < momentum_tolerance && t.energy_growth < energy_tolerance,
           fmt("dp %.2g, dE %+.2g", t.momentum_drift, t.energy_growth)};
@@ -154,7 +157,7 @@ Outcome stack30(const Mode& m) {
   for (int k = 0; k < 30; ++k) ids.push_back(block(w, 390, 560.0 - 15 * (k + 1), 20, 15, 1.0, {}, 0.5));
   std::vector<Vector> start;
   for (const EntityId e : ids) start.push_back(w.components.position[e]);
-  const Track t = run(w, 3600, true, {}, 10);
+  const Track t = run(m, w, 3600, true, {}, 10);
   if (!t.finite) return nan_outcome();
   double moved = 0;
   for (std::size_t i = 0; i < ids.size(); ++i)
@@ -195,7 +198,7 @@ Outcome high_mass_ratio(const Mode& m) {
   const EntityId s1 = block(w, 391, 559, 1, 1, 1.0);
   const EntityId s2 = block(w, 408, 559, 1, 1, 1.0);
   const EntityId big = block(w, 390, 450, 20, 20, 400.0, {}, 0.5);
-  const Track t = run(w, 600, true);
+  const Track t = run(m, w, 600, true);
   if (!t.finite) return nan_outcome();
   const auto& p = w.components.position;
   const bool on_top = p[big].y + 20 <= std::min(p[s1].y, p[s2].y) + max_sink;
@@ -243,7 +246,7 @@ Outcome spawn_overlapping(const Mode& m) {
   Random rng(11);
   for (int i = 0; i < 10000; ++i) block(w, rng.uniform(40, 756), rng.uniform(40, 556), 4, 4, rng.uniform(1, 2));
   const double before = max_overlap(w);
-  const Track t = run(w, 30, true, {}, 30);
+  const Track t = run(m, w, 30, true, {}, 30);
   if (!t.finite) return nan_outcome();
   const double after = max_overlap(w);
   return {after < max_sink && t.outside == 0,
@@ -256,7 +259,7 @@ Outcome bullet(const Mode& m, double speed) {
   World w = make_world(m);
   walls(w);
   block(w, 400, 295, 10, 10, 1.0, {speed, 0});
-  const Track t = run(w, 120, true);
+  const Track t = run(m, w, 120, true);
   if (!t.finite) return nan_outcome();
   return finish(t.outside == 0, (t.outside ? std::string("tunnelled") : std::string("stayed in")), w);
 }
@@ -274,7 +277,7 @@ Outcome far_coordinates(const Mode& m) {
   World w = make_world(m);
   q9(w, 1.0);
   for (auto& p : w.components.position) p = p + o;
-  const Track t = run(w, 3000, true, o);
+  const Track t = run(m, w, 3000, true, o);
   if (!t.finite) return nan_outcome();
   return finish(t.outside == 0 && t.energy_growth < energy_tolerance,
           fmt("dE %+.2g", t.energy_growth) + out_text(t.outside), w);
@@ -287,7 +290,7 @@ Outcome one_pixel(const Mode& m) {
   for (int i = 0; i < 200; ++i)
     block(w, 60 + 34.0 * (i % 20), 60 + 48.0 * (i / 20), 1, 1, rng.uniform(1, 5),
           {rng.uniform(-0.5, 0.5), rng.uniform(-0.5, 0.5)});
-  const Track t = run(w, 600, true);
+  const Track t = run(m, w, 600, true);
   if (!t.finite) return nan_outcome();
   return finish(t.outside == 0 && t.energy_growth < energy_tolerance,
           fmt("dE %+.2g", t.energy_growth) + out_text(t.outside), w);
@@ -302,7 +305,7 @@ Outcome corner_hits(const Mode& m) {
   // Two blocks meeting corner to corner, equal penetration on both axes.
   block(w, 100, 100, 40, 40, 2.0, {0.3, 0.3});
   block(w, 150, 150, 40, 40, 2.0, {-0.3, -0.3});
-  const Track t = run(w, 600, true);
+  const Track t = run(m, w, 600, true);
   if (!t.finite) return nan_outcome();
   return finish(t.outside == 0 && t.energy_growth < energy_tolerance,
           fmt("dE %+.2g", t.energy_growth) + out_text(t.outside), w);
@@ -311,7 +314,7 @@ Outcome corner_hits(const Mode& m) {
 Outcome long_run(const Mode& m, double e) {
   World w = make_world(m, down);
   q9(w, e);
-  const Track t = run(w, 100000, true, {}, 10);
+  const Track t = run(m, w, 100000, true, {}, 10);
   if (!t.finite) return nan_outcome();
   return finish(t.outside == 0 && t.energy_growth < energy_tolerance,
           fmt("dE %+.2g", t.energy_growth) + out_text(t.outside), w);
