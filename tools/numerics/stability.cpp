@@ -183,7 +183,7 @@ Outcome friction_pyramid(const Mode& m) {
       ids.push_back(e);
     }
   const Vector top = w.components.position[ids.back()];
-  const Track t = run(w, 1200, true, {}, 10);
+  const Track t = run(m, w, 1200, true, {}, 10);
   if (!t.finite) return nan_outcome();
   const double moved = Vector::norm(w.components.position[ids.back()] - top);
   return finish(t.max_overlap < max_sink && moved < max_sink && t.outside == 0,
