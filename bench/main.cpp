@@ -50,7 +50,10 @@ struct Options {
   std::string peers;           // build/bench-peers: the binary holding box2d3 and chipmunk-release
   std::string peer_sources;    // the tarballs they were built from, quoted in RESULTS.md
   int steps = 600, warmup = 60;
-  double budget = 40.0;  // s per run: a run past it stops early (and says so)
+  // s per run: a run past it stops early (and says so). 30 s keeps `make bench
+  // PEERS=DIR` from a clean tree within 15 minutes on this 2-core machine
+  // (40 s took 15 min 4 s, the machine shared with other builds).
+  double budget = 30.0;
   std::string out = "bench/RESULTS.md";
   bool compare = true;  // the broadphase comparison
   bool isolate = true;  // each run in a fresh process (see run_isolated)
@@ -246,7 +249,7 @@ const char* usage =
     "             [--ours-only-gas 1000000 (gas sizes for ours alone; 0: none)] [--engines ours,box2d,chipmunk]\n"
     "             [--peers build/bench-peers (adds box2d3,chipmunk-release)] [--peer-sources TEXT]\n"
     "             [--steps 600] [--warmup 60] [--out bench/RESULTS.md]\n"
-    "             [--compare 0|1] [--budget 40 (s per run)] [--isolate 0|1]   (engines also: ours-course, our course solver on every scene)\n";
+    "             [--compare 0|1] [--budget 30 (s per run)] [--isolate 0|1]   (engines also: ours-course, our course solver on every scene)\n";
 
 std::vector<std::size_t> sizes_of(const std::string& v) {
   std::vector<std::size_t> out;
