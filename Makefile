@@ -213,17 +213,88 @@ fuzz: deps
 	  -artifact_prefix=$(FUZZ_DIR)/ -print_final_stats=1 $(FUZZ_DIR)/corpus
 
 # ---- performance (bench/RESULTS.md) ----
-# Our engine, Box2D 2.4.1 and Chipmunk 7.0.3 on the same scenes, in one run,
-# always an -O2 build without sanitizers. BENCH_ARGS="--sizes 1000,10000" etc.
+# Our engine, Box2D 2.4.1 and Chipmunk 7.0.3 (Debian's) on the same scenes, in
+# one run, always an -O2 build without sanitizers. BENCH_ARGS="--sizes 1000,10000" etc.
+# PEERS=DIR (a folder holding box2d-3.2*.tar.gz and Chipmunk-7.0.3.tar.gz)
+# adds the peers built from source in their release settings: columns box2d3
+# and chipmunk-release (see "Peers built from source" below).
 BENCH_SRC := $(wildcard bench/*.cpp)
 BENCH_OBJ := $(BENCH_SRC:%.cpp=$(BUILD)/obj/%.o)
 bench: deps
-	@$(MAKE) --no-print-directory PACKAGES="libbox2d-dev libchipmunk-dev" deps
-	@$(MAKE) --no-print-directory build/bench OPT=-O2 SANITIZE=
-	./build/bench $(BENCH_ARGS)
+	@$(MAKE) --no-print-directory PACKAGES="libbox2d-dev libchipmunk-dev $(if $(PEERS),cmake)" deps
+	$(if $(PEERS),@$(MAKE) --no-print-directory peers-unpack OPT=-O2 SANITIZE=)
+	@$(MAKE) --no-print-directory build/bench $(if $(PEERS),build/bench-peers) OPT=-O2 SANITIZE=
+	./build/bench $(if $(PEERS),--peers build/bench-peers --peer-sources "$(notdir $(PEER_TARS))") $(BENCH_ARGS)
 
 $(BUILD)/bench: $(BENCH_OBJ) $(BUILD)/libphysics.a
 	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS) -lbox2d -lchipmunk -lpthread -lm
+
+# ---- Peers built from source (make bench PEERS=DIR) ----
+# The release Chipmunk cannot share a binary with Debian's: both define the
+# same 408 C symbols (cpSpaceStep...), and the dynamic linker would silently
+# bind every call to one of the two. (Box2D v3 and Debian's 2.4.1 do not
+# collide, checked with nm: 2.4.1's symbols are C++-mangled but for a few
+# globals such as b2Vec2_zero, which v3 does not define.) So the peers live in
+# their own binary, build/bench-peers (the harness plus the peers' adapters,
+# nothing of Debian's), which build/bench runs for those engines' runs (every
+# run is a child process anyway); build/bench is the same with or without PEERS.
+# Box2D v3's headers are also box2d/box2d.h: its adapter lives in bench/peers/
+# (outside BENCH_SRC) and alone gets v3's include path. The release Chipmunk's
+# adapter is bench/engine_chipmunk.cpp compiled a second time against the
+# unpacked headers.
+PEER_DIR     := build/peers
+BOX2D3_TAR   := $(firstword $(wildcard $(PEERS)/box2d-3.2*.tar.gz))
+CHIPMUNK_TAR := $(firstword $(wildcard $(PEERS)/Chipmunk-7.0.3.tar.gz))
+PEER_TARS    := $(BOX2D3_TAR) $(CHIPMUNK_TAR)
+BOX2D3_LIB   := $(PEER_DIR)/box2d3-build/src/libbox2d.a
+CHIPMUNK_LIB := $(PEER_DIR)/libchipmunk-release.a
+# Chipmunk's file list exists once unpacked: peers-unpack runs in a make of its
+# own before the make that builds, so this wildcard sees the files.
+# cpHastySpace.c (the threaded space) includes sys/sysctl.h, gone from glibc.
+CHIPMUNK_SRC := $(filter-out %/cpHastySpace.c,$(wildcard $(PEER_DIR)/chipmunk/src/*.c))
+CHIPMUNK_OBJ := $(CHIPMUNK_SRC:$(PEER_DIR)/chipmunk/src/%.c=$(PEER_DIR)/chipmunk-obj/%.o)
+# The harness (main, scenes; the broadphase comparison and our adapter, which
+# main links to) and the peers' adapters.
+PEERS_OBJ    := $(BUILD)/obj/bench/main.o $(BUILD)/obj/bench/scenes.o $(BUILD)/obj/bench/broadphase_compare.o \
+                $(BUILD)/obj/bench/engine_ours.o \
+                $(BUILD)/obj/bench/peers/engines.o $(BUILD)/obj/bench/peers/engine_box2d3.o \
+                $(BUILD)/obj/bench/peers/engine_chipmunk_release.o
+CMAKE_GEN    := $(if $(shell command -v ninja),-G Ninja)
+
+.PHONY: peers-unpack
+peers-unpack: $(PEER_DIR)/box2d3/.unpacked $(PEER_DIR)/chipmunk/.unpacked
+
+$(PEER_DIR)/box2d3/.unpacked $(PEER_DIR)/chipmunk/.unpacked:
+	@[ -f "$<" ] || { echo "PEERS=$(PEERS) must hold box2d-3.2*.tar.gz and Chipmunk-7.0.3.tar.gz"; exit 2; }
+	rm -rf $(@D) && mkdir -p $(@D)
+	tar xzf $< -C $(@D) --strip-components=1
+	@touch $@
+$(PEER_DIR)/box2d3/.unpacked: $(BOX2D3_TAR)
+$(PEER_DIR)/chipmunk/.unpacked: $(CHIPMUNK_TAR)
+
+# Release, CMake's defaults otherwise, heavy validation off; only the library.
+$(BOX2D3_LIB): $(PEER_DIR)/box2d3/.unpacked
+	cmake -S $(PEER_DIR)/box2d3 -B $(PEER_DIR)/box2d3-build $(CMAKE_GEN) -DCMAKE_BUILD_TYPE=Release \
+	  -DBOX2D_SAMPLES=OFF -DBOX2D_UNIT_TESTS=OFF -DBOX2D_BENCHMARKS=OFF -DBOX2D_DOCS=OFF -DBOX2D_VALIDATE=OFF > /dev/null
+	cmake --build $(PEER_DIR)/box2d3-build --target box2d --parallel $$(nproc)
+
+# -O2 -DNDEBUG: a release build (Debian's keeps its debug checks on); -w: its
+# warnings are not ours to fix (gcc 12 flags a calloc size in cpBBTree.c).
+$(PEER_DIR)/chipmunk-obj/%.o: $(PEER_DIR)/chipmunk/src/%.c $(PEER_DIR)/chipmunk/.unpacked
+	@mkdir -p $(@D)
+	gcc -std=gnu99 -O2 -DNDEBUG -w -I$(PEER_DIR)/chipmunk/include -c $< -o $@
+
+$(CHIPMUNK_LIB): $(CHIPMUNK_OBJ)
+	ar rcs $@ $^
+
+$(BUILD)/obj/bench/peers/engine_box2d3.o: CXXFLAGS += -I$(PEER_DIR)/box2d3/include
+$(BUILD)/obj/bench/peers/engine_box2d3.o: $(PEER_DIR)/box2d3/.unpacked
+$(BUILD)/obj/bench/peers/engine_chipmunk_release.o: bench/engine_chipmunk.cpp $(PEER_DIR)/chipmunk/.unpacked
+	@mkdir -p $(@D)
+	$(CXX) $(CXXFLAGS) -I$(PEER_DIR)/chipmunk/include -c $< -o $@
+
+$(BUILD)/bench-peers: $(PEERS_OBJ) $(BUILD)/libphysics.a $(BOX2D3_LIB) $(CHIPMUNK_LIB)
+	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS) -lpthread -lm
 
 clean:
 	rm -rf build

@@ -1,10 +1,12 @@
-// `make bench`: the same scenes run by our engine, Box2D 2.4.1 and Chipmunk 7.
+// `make bench`: the same scenes run by our engine, Box2D 2.4.1 and Chipmunk 7
+// from Debian, and (make bench PEERS=DIR) Box2D v3.2 and a release Chipmunk
+// built from source.
 //
 // Every engine receives the scene in one neutral description: metres,
 // seconds, y up, bodies given by their centre and half-extents, block side 1 m
 // (Box2D is tuned for bodies of 0.1-10 m; Chipmunk has no unit). Each adapter
 // converts to its engine's units and back, so the harness measures quality
-// (escapes, overlap, energy) the same way for all three.
+// (escapes, overlap, energy) the same way for all of them.
 #pragma once
 
 #include <cstdint>
@@ -22,7 +24,7 @@ struct Body {
 };
 
 struct Scene {
-  std::string name;          // gas, rain, pyramid
+  std::string name;          // gas, rain, pyramid, pyramid_friction, many_pyramids
   double width = 0;          // container interior [0, width] x [0, height], m
   double height = 0;
   double gravity = 0;        // m/s², pointing down (-y)
@@ -30,7 +32,8 @@ struct Scene {
   double friction = 0.0;     // every body, every engine (a pair's: sqrt(mu_a mu_b), so this value)
   double dt = 1.0 / 60.0;    // s per step
   bool resting = false;      // bodies come to rest in contact (ours: stable solver)
-  std::vector<Body> bodies;  // fixed bodies (walls) first
+  std::vector<Body> bodies;  // fixed bodies (walls, shelves) first
+  std::vector<std::size_t> tops;  // pyramids' top blocks (indices in bodies): the harness reports how far they move
   std::size_t dynamic_count() const;
 };
 
@@ -45,6 +48,10 @@ Scene make_rain(std::size_t n);
 Scene make_pyramid(std::size_t base = 100);
 // pyramid_friction: the same with friction 0.6 on every body and the walls.
 Scene make_pyramid_friction(std::size_t base = 100);
+// many_pyramids: Box2D v3's benchmark of that name (its shared/benchmarks.c,
+// CreateManyPyramids): rows x columns pyramids of base `base` on shelves,
+// 400 pyramids of 55 blocks, 22 000 in all; fixed rotation, e = 0.
+Scene make_many_pyramids(std::size_t rows = 20, std::size_t columns = 20, std::size_t base = 10);
 
 // One engine running one scene. Bodies keep the scene's order.
 class Engine {
@@ -61,7 +68,17 @@ class Engine {
 // Ours runs the course's solver on scenes without resting contact and the
 // stable solver on the others, unless `course` forces the course's solver.
 std::unique_ptr<Engine> make_ours(const Scene& s, bool course = false);
-std::unique_ptr<Engine> make_box2d(const Scene& s);
+std::unique_ptr<Engine> make_box2d(const Scene& s);     // Debian's 2.4.1 (build/bench)
+std::unique_ptr<Engine> make_box2d3(const Scene& s);    // v3.2 from source (build/bench-peers only)
+// Chipmunk 7.0.3: Debian's build in build/bench, the release build in
+// build/bench-peers (the same adapter compiled against each).
 std::unique_ptr<Engine> make_chipmunk(const Scene& s);
+
+// The engines linked into this binary, by the names the harness uses
+// (bench/engines.cpp in build/bench, bench/peers/engines.cpp in
+// build/bench-peers): the two cannot share a binary (see the Makefile).
+const std::vector<std::string>& engine_names();
+// nullptr when `name` is not linked into this binary.
+std::unique_ptr<Engine> make_engine(const std::string& name, const Scene& s);
 
 }  // namespace bench

@@ -2,6 +2,11 @@
 // a body's origin at its centre, the scene's metres pass through unchanged
 // (cpFloat is double here).
 //
+// Compiled twice: against Debian's headers and library into build/bench
+// (engine `chipmunk`), and against the release build of `make bench PEERS=DIR`
+// into build/bench-peers (engine `chipmunk-release`, see the Makefile), so
+// the two columns differ only by the library's build.
+//
 // Settings (quoted in bench/RESULTS.md):
 // - gravity (0, -g); sleeping off: cpSpace's default sleepTimeThreshold is
 //   INFINITY, which is off, so it is left alone;

@@ -1,5 +1,12 @@
-// `make bench`: our engine, Box2D 2.4.1 and Chipmunk 7 on the same scenes, in
-// one run, on this machine. Prints a table and writes bench/RESULTS.md.
+// `make bench`: our engine, Box2D 2.4.1 and Chipmunk 7 (Debian's), and with
+// `make bench PEERS=DIR` Box2D v3.2 and a release Chipmunk built from source,
+// on the same scenes, in one run, on this machine. Prints a table and writes
+// bench/RESULTS.md.
+//
+// The same program is linked twice: build/bench (ours and Debian's engines)
+// and build/bench-peers (the peers from source), which cannot share a binary
+// (see the Makefile). build/bench runs every run as a child process, of
+// itself or of build/bench-peers for the peers' engines.
 //
 // Each run builds the scene (not timed), then times every one of `steps`
 // steps with a steady clock; the first `warmup` are discarded (allocation,
@@ -19,6 +26,8 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <sys/resource.h>
+
 #include <thread>
 #include <vector>
 
@@ -31,22 +40,32 @@ using bench::Body;
 using bench::Scene;
 
 struct Options {
-  std::vector<std::string> scenes{"gas", "rain", "pyramid", "pyramid_friction"};
+  std::vector<std::string> scenes{"gas", "rain", "pyramid", "pyramid_friction", "many_pyramids"};
   std::vector<std::size_t> sizes{1000, 10000, 100000};
+  // Gas sizes run by ours alone: the peers' 100 000-body runs already take
+  // most of the budget, ten times as many bodies would only be cut short.
+  std::vector<std::size_t> ours_only_gas{1000000};
   std::vector<std::string> engines{"ours", "box2d", "chipmunk"};
+  bool engines_given = false;  // without --engines, --peers puts the peers' engines second and third
+  std::string peers;           // build/bench-peers: the binary holding box2d3 and chipmunk-release
+  std::string peer_sources;    // the tarballs they were built from, quoted in RESULTS.md
   int steps = 600, warmup = 60;
-  double budget = 40.0;  // s per run: a run past it stops early (and says so)
+  // s per run: a run past it stops early (and says so). 30 s keeps `make bench
+  // PEERS=DIR` from a clean tree within 15 minutes on this 2-core machine
+  // (40 s took 15 min 4 s, the machine shared with other builds).
+  double budget = 30.0;
   std::string out = "bench/RESULTS.md";
   bool compare = true;  // the broadphase comparison
   bool isolate = true;  // each run in a fresh process (see run_isolated)
   std::string child;    // internal: "ENGINE,SCENE,N": run only that and print its RESULT line
+  bool list = false;    // internal: print the engines linked into this binary
 };
 
 struct Quality {
   std::size_t escaped = 0;   // dynamic bodies whose centre left the container (or is not finite)
   double max_overlap = 0;    // deepest overlap of two boxes (or a box into a wall), block sides
   double energy_drift = 0;   // (KE_end - KE_start) / KE_start
-  double top_moved = 0;      // pyramid: the top block's displacement, m
+  double top_moved = 0;      // pyramids: the largest displacement of a pyramid's top block, m
 };
 
 struct Result {
@@ -54,6 +73,7 @@ struct Result {
   std::size_t n = 0;
   double median_ms = 0, p95_ms = 0, build_ms = 0;
   int steps_run = 0;  // fewer than asked when the run hit the time budget
+  double peak_mb = 0; // the run's process: peak resident memory
   Quality q;
 };
 
@@ -101,20 +121,28 @@ Quality measure(const Scene& s, const std::vector<Body>& end) {
   return q;
 }
 
-std::unique_ptr<bench::Engine> make_engine(const std::string& engine, const Scene& s) {
-  if (engine == "ours") return bench::make_ours(s);
-  if (engine == "ours-course") return bench::make_ours(s, true);
-  if (engine == "box2d") return bench::make_box2d(s);
-  if (engine == "chipmunk") return bench::make_chipmunk(s);
-  throw std::invalid_argument("unknown engine '" + engine + "' (ours, ours-course, box2d, chipmunk)");
+std::unique_ptr<bench::Engine> engine_or_throw(const std::string& engine, const Scene& s) {
+  if (auto e = bench::make_engine(engine, s)) return e;
+  throw std::invalid_argument("engine '" + engine + "' is not in this binary");
 }
+
+// gas and rain take the size asked; the pyramids are Box2D's fixed scenes.
+bool sized(const std::string& scene) { return scene == "gas" || scene == "rain"; }
 
 Scene make_scene(const std::string& name, std::size_t n) {
   if (name == "gas") return bench::make_gas(n);
   if (name == "rain") return bench::make_rain(n);
   if (name == "pyramid") return bench::make_pyramid();
   if (name == "pyramid_friction") return bench::make_pyramid_friction();
-  throw std::invalid_argument("unknown scene '" + name + "' (gas, rain, pyramid, pyramid_friction)");
+  if (name == "many_pyramids") return bench::make_many_pyramids();
+  throw std::invalid_argument("unknown scene '" + name + "' (gas, rain, pyramid, pyramid_friction, many_pyramids)");
+}
+
+double largest_top_move(const Scene& s, const std::vector<Body>& end) {
+  double moved = 0;
+  for (const std::size_t i : s.tops)
+    moved = std::max(moved, std::hypot(end[i].cx - s.bodies[i].cx, end[i].cy - s.bodies[i].cy));
+  return moved;
 }
 
 double percentile(std::vector<double> v, double p) {
@@ -128,7 +156,7 @@ Result run(const std::string& engine, const Scene& s, const Options& o) {
   Result r;
   r.engine = engine, r.scene = s.name, r.n = s.dynamic_count();
   const auto t0 = clock::now();
-  auto e = make_engine(engine, s);
+  auto e = engine_or_throw(engine, s);
   r.build_ms = std::chrono::duration<double, std::milli>(clock::now() - t0).count();
   // Every step's time; the first `warmup` are left out of the statistics
   // unless the budget stopped the run before it got past them.
@@ -151,10 +179,7 @@ Result run(const std::string& engine, const Scene& s, const Options& o) {
   r.q = measure(s, end);
   const double e0 = kinetic_energy(s.bodies);
   if (s.name == "gas" && e0 > 0) r.q.energy_drift = (kinetic_energy(end) - e0) / e0;
-  if (s.name.starts_with("pyramid")) {
-    const Body &a = s.bodies.back(), &b = end.back();
-    r.q.top_moved = std::hypot(b.cx - a.cx, b.cy - a.cy);
-  }
+  r.q.top_moved = largest_top_move(s, end);
   return r;
 }
 
@@ -171,9 +196,12 @@ std::vector<std::string> split(const std::string& s) {
 // runs were not independent: our 100 000-body gas measured 4.5 ms/step alone
 // and 5-5.7 ms after the other engines' runs, the allocator's state being
 // what the earlier runs left.
+// The peers' engines run in build/bench-peers, the others in this binary.
 Result run_isolated(const std::string& self, const std::string& engine, const Scene& s, const Options& o) {
+  const auto& here = bench::engine_names();
+  const bool local = std::find(here.begin(), here.end(), engine) != here.end();
   std::ostringstream cmd;
-  cmd << "'" << self << "' --child " << engine << "," << s.name << "," << s.dynamic_count() << " --steps " << o.steps
+  cmd << "'" << (local ? self : o.peers) << "' --child " << engine << "," << s.name << "," << s.dynamic_count() << " --steps " << o.steps
       << " --warmup " << o.warmup << " --budget " << o.budget;
   std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(cmd.str().c_str(), "r"), pclose);
   if (!pipe) throw std::runtime_error("cannot start " + cmd.str());
@@ -182,8 +210,9 @@ Result run_isolated(const std::string& self, const std::string& engine, const Sc
   bool got = false;
   char line[512];
   while (std::fgets(line, sizeof line, pipe.get()))
-    got = got || std::sscanf(line, "RESULT %lf %lf %lf %d %zu %lf %lf %lf", &r.median_ms, &r.p95_ms, &r.build_ms,
-                             &r.steps_run, &r.q.escaped, &r.q.max_overlap, &r.q.energy_drift, &r.q.top_moved) == 8;
+    got = got || std::sscanf(line, "RESULT %lf %lf %lf %d %zu %lf %lf %lf %lf", &r.median_ms, &r.p95_ms,
+                             &r.build_ms, &r.steps_run, &r.q.escaped, &r.q.max_overlap, &r.q.energy_drift,
+                             &r.q.top_moved, &r.peak_mb) == 9;
   if (pclose(pipe.release()) != 0 || !got) throw std::runtime_error("the run failed: " + cmd.str());
   return r;
 }
@@ -193,8 +222,11 @@ int child_run(const Options& o) {
   if (parts.size() != 3) throw std::invalid_argument("--child wants ENGINE,SCENE,N");
   const Scene s = make_scene(parts[1], std::stoul(parts[2]));
   const Result r = run(parts[0], s, o);
-  std::printf("RESULT %.17g %.17g %.17g %d %zu %.17g %.17g %.17g\n", r.median_ms, r.p95_ms, r.build_ms, r.steps_run,
-              r.q.escaped, r.q.max_overlap, r.q.energy_drift, r.q.top_moved);
+  rusage use{};
+  getrusage(RUSAGE_SELF, &use);
+  const double peak_mb = static_cast<double>(use.ru_maxrss) / 1024.0;  // Linux: kB
+  std::printf("RESULT %.17g %.17g %.17g %d %zu %.17g %.17g %.17g %.17g\n", r.median_ms, r.p95_ms, r.build_ms,
+              r.steps_run, r.q.escaped, r.q.max_overlap, r.q.energy_drift, r.q.top_moved, peak_mb);
   return 0;
 }
 
@@ -213,9 +245,37 @@ std::string machine_line() {
 
 
 const char* usage =
-    "usage: bench [--scenes gas,rain,pyramid,pyramid_friction] [--sizes 1000,10000,100000] [--engines ours,box2d,chipmunk]\n"
+    "usage: bench [--scenes gas,rain,pyramid,pyramid_friction,many_pyramids] [--sizes 1000,10000,100000]\n"
+    "             [--ours-only-gas 1000000 (gas sizes for ours alone; 0: none)] [--engines ours,box2d,chipmunk]\n"
+    "             [--peers build/bench-peers (adds box2d3,chipmunk-release)] [--peer-sources TEXT]\n"
     "             [--steps 600] [--warmup 60] [--out bench/RESULTS.md]\n"
-    "             [--compare 0|1] [--budget 40 (s per run)] [--isolate 0|1]   (engines also: ours-course, our course solver on every scene)\n";
+    "             [--compare 0|1] [--budget 30 (s per run)] [--isolate 0|1]   (engines also: ours-course, our course solver on every scene)\n";
+
+std::vector<std::size_t> sizes_of(const std::string& v) {
+  std::vector<std::size_t> out;
+  for (const auto& x : split(v))
+    if (const std::size_t n = std::stoul(x)) out.push_back(n);
+  return out;
+}
+
+// One option and its value; false if `a` is not one of them.
+bool set_option(Options& o, const std::string& a, const std::string& v) {
+  if (a == "--scenes") o.scenes = split(v);
+  else if (a == "--engines") o.engines = split(v), o.engines_given = true;
+  else if (a == "--sizes") o.sizes = sizes_of(v);
+  else if (a == "--ours-only-gas") o.ours_only_gas = sizes_of(v);
+  else if (a == "--peers") o.peers = v;
+  else if (a == "--peer-sources") o.peer_sources = v;
+  else if (a == "--steps") o.steps = std::stoi(v);
+  else if (a == "--warmup") o.warmup = std::stoi(v);
+  else if (a == "--out") o.out = v;
+  else if (a == "--compare") o.compare = v != "0";
+  else if (a == "--budget") o.budget = std::stod(v);
+  else if (a == "--isolate") o.isolate = v != "0";
+  else if (a == "--child") o.child = v;
+  else return false;
+  return true;
+}
 
 Options parse(int argc, char** argv) {
   Options o;
@@ -225,23 +285,16 @@ Options parse(int argc, char** argv) {
       std::cout << usage;
       std::exit(0);
     }
+    if (a == "--list-engines") {
+      o.list = true;
+      continue;
+    }
     if (i + 1 >= argc) throw std::invalid_argument("missing value after " + a);
-    const std::string v = argv[++i];
-    if (a == "--scenes") o.scenes = split(v);
-    else if (a == "--engines") o.engines = split(v);
-    else if (a == "--sizes") {
-      o.sizes.clear();
-      for (const auto& x : split(v)) o.sizes.push_back(std::stoul(x));
-    } else if (a == "--steps") o.steps = std::stoi(v);
-    else if (a == "--warmup") o.warmup = std::stoi(v);
-    else if (a == "--out") o.out = v;
-    else if (a == "--compare") o.compare = v != "0";
-    else if (a == "--budget") o.budget = std::stod(v);
-    else if (a == "--isolate") o.isolate = v != "0";
-    else if (a == "--child") o.child = v;
-    else throw std::invalid_argument("unknown option " + a);
+    if (!set_option(o, a, argv[++i])) throw std::invalid_argument("unknown option " + a);
   }
   if (o.steps <= o.warmup || o.warmup < 0) throw std::invalid_argument("--steps must exceed --warmup >= 0");
+  // The strongest peers first, right after ours.
+  if (!o.peers.empty() && !o.engines_given) o.engines = {"ours", "box2d3", "chipmunk-release", "box2d", "chipmunk"};
   return o;
 }
 
@@ -251,97 +304,208 @@ std::string fmt(const char* f, double x) {
   return buf;
 }
 
-}  // namespace
+// The engines build/bench-peers holds (it prints them with --list-engines).
+std::vector<std::string> peer_engines(const std::string& peers) {
+  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(("'" + peers + "' --list-engines").c_str(), "r"), pclose);
+  std::vector<std::string> names;
+  char line[256];
+  while (pipe && std::fgets(line, sizeof line, pipe.get())) names.push_back(std::string(line, std::strcspn(line, "\n")));
+  if (!pipe || pclose(pipe.release()) != 0) throw std::runtime_error("cannot run " + peers + " --list-engines");
+  return names;
+}
 
-int main(int argc, char** argv) try {
-  const Options o = parse(argc, argv);
-  if (!o.child.empty()) return child_run(o);
-  const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
-  std::string command = "build/bench";
-  for (int i = 1; i < argc; ++i) command += std::string(" ") + argv[i];
-  const std::string machine = machine_line();
-  std::cout << "machine: " << machine << "\n";
-  std::vector<Result> results;
-  std::ostringstream table;
-  table << "| engine | scene | N | median ms/step | p95 ms/step | ns/body/step | time ÷ ours | escaped | max overlap "
-           "(block) | KE drift (gas) | top block moved (pyramid, m) |\n"
-           "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-  std::printf("%-18s %-16s %7s %9s %9s %9s %7s %7s %9s %10s %9s\n", "engine", "scene", "N", "median", "p95", "ns/body",
-              "÷ours", "escaped", "overlap", "KE drift", "top moved");
-  for (const std::string& name : o.scenes) {
-    std::vector<std::size_t> sizes = o.sizes;
-    if (name.starts_with("pyramid")) sizes = {5050};
-    for (const std::size_t n : sizes) {
-      const Scene s = make_scene(name, n);
-      double ours_ms = 0;
-      for (const std::string& engine : o.engines) {
-        const Result r = o.isolate ? run_isolated(self, engine, s, o) : run(engine, s, o);
-        if (engine == "ours") ours_ms = r.median_ms;
-        const double ns_body = r.median_ms * 1e6 / static_cast<double>(r.n);
-        const std::string ratio = ours_ms > 0 ? fmt("%.2f", r.median_ms / ours_ms) : "-";
-        const std::string drift = name == "gas" ? fmt("%+.2e", r.q.energy_drift) : "-";
-        const std::string top = name.starts_with("pyramid") ? fmt("%.4f", r.q.top_moved) : "-";
-        // A run cut short by the budget says how far it got.
-        const std::string label =
-            r.steps_run < o.steps ? engine + " (" + std::to_string(r.steps_run) + " steps)" : engine;
-        std::printf("%-18s %-16s %7zu %9.3f %9.3f %9.1f %7s %7zu %9.4f %10s %9s\n", label.c_str(), name.c_str(), r.n,
-                    r.median_ms, r.p95_ms, ns_body, ratio.c_str(), r.q.escaped, r.q.max_overlap, drift.c_str(),
-                    top.c_str());
-        std::fflush(stdout);
-        table << "| " << label << " | " << name << " | " << r.n << " | " << fmt("%.3f", r.median_ms) << " | "
-              << fmt("%.3f", r.p95_ms) << " | " << fmt("%.1f", ns_body) << " | " << ratio << " | " << r.q.escaped
-              << " | " << fmt("%.4f", r.q.max_overlap) << " | " << drift << " | " << top << " |\n";
-        results.push_back(r);
+// Every engine asked for is in this binary or in the peers' one; checked
+// before the first run rather than failing half-way.
+void check_engines(const Options& o) {
+  std::vector<std::string> known = bench::engine_names();
+  if (!o.peers.empty())
+    for (const auto& name : peer_engines(o.peers)) known.push_back(name);
+  for (const std::string& e : o.engines) {
+    if (std::find(known.begin(), known.end(), e) != known.end()) continue;
+    const bool peer = e == "box2d3" || e == "chipmunk-release";
+    throw std::invalid_argument("unknown engine '" + e + "'" +
+                                (peer ? ": it is built by `make bench PEERS=DIR` (README, Performance)" : ""));
+  }
+  if (!o.isolate && !o.peers.empty())
+    throw std::invalid_argument("--isolate 0 runs this binary's engines only: leave out --peers");
+}
+
+// The tarball among --peer-sources whose name holds `word`, as " from NAME".
+std::string source_of(const Options& o, const std::string& word) {
+  std::istringstream in(o.peer_sources);
+  for (std::string name; in >> name;)
+    if (name.find(word) != std::string::npos) return " from " + name;
+  return "";
+}
+
+// What each engine column is, for RESULTS.md.
+std::string engine_note(const std::string& e, const Options& o) {
+  if (e == "ours") return "`ours`: this engine (course solver on gas, stable solver on the rest)";
+  if (e == "ours-course") return "`ours-course`: this engine with the course solver on every scene";
+  if (e == "box2d3")
+    return "`box2d3`: Box2D v3.2.0 built from source" + source_of(o, "box2d") +
+           " (CMake Release, its defaults otherwise: SSE2, no AVX2; BOX2D_VALIDATE off), one worker thread, its "
+           "default 4 substeps, `motionLocks.angularZ`, restitution threshold 0 for e = 1 (its default 1 m/s "
+           "otherwise), bench/peers/engine_box2d3.cpp";
+  if (e == "chipmunk-release")
+    return "`chipmunk-release`: Chipmunk 7.0.3 built from source" + source_of(o, "Chipmunk") +
+           " with gcc -O2 -DNDEBUG, without cpHastySpace.c (the threaded space), through the same adapter as "
+           "`chipmunk` (bench/engine_chipmunk.cpp compiled against it)";
+  if (e == "box2d") return "`box2d`: Debian's Box2D 2.4.1 (libbox2d-dev), Step(dt, 8, 3), bench/engine_box2d.cpp";
+  if (e == "chipmunk")
+    return "`chipmunk`: Debian's Chipmunk 7.0.3 (libchipmunk-dev, built with its debug checks on), "
+           "bench/engine_chipmunk.cpp";
+  return "`" + e + "`";
+}
+
+// The table, printed and in Markdown, and the growth of our cost.
+class Report {
+ public:
+  explicit Report(const Options& o) : o_(o) {
+    table_ << "| engine | scene | N | median ms/step | p95 ms/step | ns/body/step | time ÷ ours | escaped | max overlap "
+              "(block) | KE drift (gas) | top block moved (pyramids, m) | peak MB |\n"
+              "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    std::printf("%-18s %-16s %7s %9s %9s %9s %7s %7s %9s %10s %9s %7s\n", "engine", "scene", "N", "median", "p95",
+                "ns/body", "÷ours", "escaped", "overlap", "KE drift", "top moved", "peak MB");
+  }
+
+  // ours_ms: ours' median on the same scene (0 if ours did not run it).
+  void add(const Result& r, double ours_ms, const std::string& label) {
+    const double ns_body = r.median_ms * 1e6 / static_cast<double>(r.n);
+    const std::string ratio = ours_ms > 0 ? fmt("%.2f", r.median_ms / ours_ms) : "-";
+    const std::string drift = r.scene == "gas" ? fmt("%+.2e", r.q.energy_drift) : "-";
+    const std::string top = r.scene.find("pyramid") != std::string::npos ? fmt("%.4f", r.q.top_moved) : "-";
+    std::printf("%-18s %-16s %7zu %9.3f %9.3f %9.1f %7s %7zu %9.4f %10s %9s %7.0f\n", label.c_str(), r.scene.c_str(),
+                r.n, r.median_ms, r.p95_ms, ns_body, ratio.c_str(), r.q.escaped, r.q.max_overlap, drift.c_str(),
+                top.c_str(), r.peak_mb);
+    std::fflush(stdout);
+    table_ << "| " << label << " | " << r.scene << " | " << r.n << " | " << fmt("%.3f", r.median_ms) << " | "
+           << fmt("%.3f", r.p95_ms) << " | " << fmt("%.1f", ns_body) << " | " << ratio << " | " << r.q.escaped
+           << " | " << fmt("%.4f", r.q.max_overlap) << " | " << drift << " | " << top << " | "
+           << fmt("%.0f", r.peak_mb) << " |\n";
+    results_.push_back(r);
+  }
+
+  std::string table() const { return table_.str(); }
+
+  // Growth of our cost between consecutive sizes from 10 000 up: exponent of t ~ N^k.
+  std::string growth() const {
+    std::ostringstream md;
+    for (const std::string& name : o_.scenes) {
+      std::vector<const Result*> ours;
+      for (const Result& r : results_)
+        if (r.engine == "ours" && r.scene == name && r.n >= 10000) ours.push_back(&r);
+      for (std::size_t i = 0; i + 1 < ours.size(); ++i) {
+        const Result &a = *ours[i], &b = *ours[i + 1];
+        const double k = std::log(b.median_ms / a.median_ms) / std::log(double(b.n) / double(a.n));
+        md << "| " << name << " | " << a.n << " → " << b.n << " | " << fmt("%.3f", a.median_ms) << " | "
+           << fmt("%.3f", b.median_ms) << " | " << fmt("%.2f", k) << " |\n";
+        std::printf("ours %s: cost grows as N^%.2f from %zu to %zu bodies\n", name.c_str(), k, a.n, b.n);
       }
     }
+    if (md.str().empty()) return "";
+    return "## Growth of our cost with N\n\n| scene | N | ms/step at the first | ms/step at the second | exponent k "
+           "(t ∝ N^k) |\n|---|---|---:|---:|---:|\n" +
+           md.str() + "\n";
   }
 
-  // Growth of our cost from 10 000 to 100 000 bodies: exponent of t ~ N^k.
-  std::ostringstream growth;
+ private:
+  const Options& o_;
+  std::ostringstream table_;
+  std::vector<Result> results_;
+};
+
+// One scene at one size, every engine (ours alone if `alone`).
+void run_scene(const std::string& self, const Scene& s, bool alone, const Options& o, Report& report) {
+  double ours_ms = 0;
+  for (const std::string& engine : o.engines) {
+    if (alone && engine != "ours") continue;
+    const Result r = o.isolate ? run_isolated(self, engine, s, o) : run(engine, s, o);
+    if (engine == "ours") ours_ms = r.median_ms;
+    // A run cut short by the budget says how far it got; one run alone says why.
+    std::string label = engine;
+    if (r.steps_run < o.steps) label += " (" + std::to_string(r.steps_run) + " steps)";
+    if (alone) label += " (alone: peers over budget)";
+    report.add(r, ours_ms, label);
+  }
+}
+
+void run_all(const std::string& self, const Options& o, Report& report) {
   for (const std::string& name : o.scenes) {
-    auto find = [&](std::size_t n) -> const Result* {
-      for (const Result& r : results)
-        if (r.engine == "ours" && r.scene == name && r.n == n) return &r;
-      return nullptr;
-    };
-    const Result *a = find(10000), *b = find(100000);
-    if (a && b) {
-      const double k = std::log(b->median_ms / a->median_ms) / std::log(10.0);
-      growth << "| " << name << " | " << fmt("%.3f", a->median_ms) << " | " << fmt("%.3f", b->median_ms) << " | "
-             << fmt("%.2f", k) << " |\n";
-      std::printf("ours %s: cost grows as N^%.2f from 10 000 to 100 000 bodies\n", name.c_str(), k);
-    }
+    const std::vector<std::size_t> sizes = sized(name) ? o.sizes : std::vector<std::size_t>{0};
+    for (const std::size_t n : sizes) run_scene(self, make_scene(name, n), false, o, report);
+    if (name == "gas")
+      for (const std::size_t n : o.ours_only_gas) run_scene(self, make_scene(name, n), true, o, report);
   }
+}
 
-  // Grid against sort-and-sweep, fed the same boxes.
-  const std::string broadphase = o.compare ? bench::compare_broadphases(o.sizes) : "";
-  std::cout << broadphase;
+std::string title(const Options& o) {
+  std::string t = "# Benchmark: our engine";
+  for (const std::string& e : o.engines)
+    if (e != "ours") t += ", `" + e + "`";
+  return t;
+}
 
+void write_markdown(const Options& o, const std::string& command, const std::string& machine, const Report& report,
+                    const std::string& broadphase) {
   std::ofstream md(o.out);
   if (!md) throw std::runtime_error("cannot write " + o.out);
-  md << "# Benchmark: our engine, Box2D 2.4.1, Chipmunk 7.0.3\n\n"
+  md << title(o) << "\n\n"
      << "Written by `make bench` (`" << command << "`); do not edit by hand.\n\n"
      << "Machine: " << machine << ". Steps: " << o.steps << ", the first " << o.warmup
      << " discarded; times are per step, single thread, each run in a fresh process. A run that passes " << o.budget
      << " s stops early: its row says after how many steps (its statistics then cover the steps past the warm-up, "
         "or all of them if it did not get that far; its quality is the state where it stopped).\n\n"
-     << "Scenes (bench/scenes.cpp): unit squares of mass 1, fixed rotation, friction 0 (but in pyramid_friction), sleeping off, each "
-        "engine's default iterations; 1 m = 10 px in our engine. `gas`: area fraction 0.10, random velocities up "
-        "to 5 m/s per axis (seed 42), no gravity, e = 1, our course solver. `rain`: a grid at area fraction 0.25 "
-        "falls under 10 m/s² into a walled box, e = 0.5, our stable solver. `pyramid`: Box2D's large_pyramid "
-        "(base 100, 5050 blocks), e = 0, our stable solver; `pyramid_friction`: the same with friction 0.6 on every "
-        "body and wall (Box2D's and our mixing rule, sqrt(mu_a mu_b), give the pair 0.6; Chipmunk multiplies, so "
-        "it gets sqrt(0.6) per shape). Engine settings: bench/engine_*.cpp.\n\n"
+     << "Engines:\n\n";
+  for (const std::string& e : o.engines) md << "- " << engine_note(e, o) << ".\n";
+  md << "\nScenes (bench/scenes.cpp): unit squares of mass 1, fixed rotation, friction 0 (but in pyramid_friction), "
+        "sleeping off, each engine's default iterations; 1 m = 10 px in our engine. `gas`: area fraction 0.10, "
+        "random velocities up to 5 m/s per axis (seed 42), no gravity, e = 1, our course solver. `rain`: a grid at "
+        "area fraction 0.25 falls under 10 m/s² into a walled box, e = 0.5, our stable solver. `pyramid`: Box2D's "
+        "large_pyramid (base 100, 5050 blocks), e = 0, our stable solver; `pyramid_friction`: the same with "
+        "friction 0.6 on every body and wall (Box2D's and our mixing rule, sqrt(mu_a mu_b), give the pair 0.6; "
+        "Chipmunk multiplies, so it gets sqrt(0.6) per shape). `many_pyramids`: Box2D v3's benchmark of that name "
+        "(shared/benchmarks.c, CreateManyPyramids): 20 shelves 11 m apart, each 220 m long holding 20 pyramids of "
+        "base 10, 22 000 blocks, e = 0, our stable solver; Box2D's shelves are segments, here fixed boxes 0.5 m "
+        "thick under the same lines (the floor is the first). ";
+  if (!o.ours_only_gas.empty())
+    md << "`gas` at " << o.ours_only_gas.front()
+       << " bodies is run by ours alone: the peers' 100 000-body runs already take a large part of the budget, "
+          "so ten times as many bodies would only be cut short. ";
+  md << "Engine settings: bench/engine_*.cpp, bench/peers/engine_*.cpp.\n\n"
      << "Columns: *time ÷ ours* is the engine's median over ours (above 1: ours is faster); *escaped* counts "
         "bodies whose centre left the box; *max overlap* is the deepest overlap of two boxes, or of a box into a "
         "wall, at the last step, in block sides; *KE drift* is (E_end − E_start)/E_start; *top block moved* is the "
-        "pyramid's top block's displacement over the run.\n\n"
-     << table.str() << "\n";
-  if (!growth.str().empty())
-    md << "## Growth from 10 000 to 100 000 bodies (ours)\n\n| scene | ms/step at 10 000 | ms/step at 100 000 | "
-          "exponent k (t ∝ N^k) |\n|---|---:|---:|---:|\n"
-       << growth.str() << "\n";
-  md << broadphase;
+        "largest displacement of a pyramid's top block over the run; *peak MB* is the run's process's peak "
+        "resident memory (the scene's description included).\n\n"
+     << report.table() << "\n"
+     << report.growth() << broadphase;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) try {
+  const Options o = parse(argc, argv);
+  if (o.list) {
+    for (const std::string& e : bench::engine_names()) std::cout << e << "\n";
+    return 0;
+  }
+  if (!o.child.empty()) return child_run(o);
+  check_engines(o);
+  const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
+  std::string command = "build/bench";
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    command += a.find(' ') == std::string::npos ? " " + a : " \"" + a + "\"";
+  }
+  const std::string machine = machine_line();
+  std::cout << "machine: " << machine << "\n";
+  Report report(o);
+  run_all(self, o, report);
+  // Grid against sort-and-sweep, fed the same boxes.
+  const std::string broadphase = o.compare ? bench::compare_broadphases(o.sizes) : "";
+  std::cout << broadphase;
+  write_markdown(o, command, machine, report, broadphase);
   std::cout << "wrote " << o.out << "\n";
   return 0;
 } catch (const std::exception& e) {

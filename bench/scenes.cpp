@@ -99,6 +99,7 @@ Scene make_pyramid(std::size_t base) {
       const double cy = 0.5 + static_cast<double>(i);
       s.bodies.push_back({cx, cy, 0.5, 0.5, 0, 0, false});
     }
+  s.tops.push_back(s.bodies.size() - 1);
   return s;
 }
 
@@ -106,6 +107,47 @@ Scene make_pyramid_friction(std::size_t base) {
   Scene s = make_pyramid(base);
   s.name = "pyramid_friction";
   s.friction = 0.6;
+  return s;
+}
+
+namespace {
+
+// One of many_pyramids' pyramids, as Box2D's CreateSmallPyramid places it:
+// row i of `base - i` unit squares, its first centred at left + i/2, on a
+// shelf whose top is at y = floor.
+void add_small_pyramid(Scene& s, std::size_t base, double left, double floor) {
+  for (std::size_t i = 0; i < base; ++i)
+    for (std::size_t j = i; j < base; ++j) {
+      const double cx = left + 0.5 * static_cast<double>(i) + static_cast<double>(j - i);
+      s.bodies.push_back({cx, floor + 0.5 + static_cast<double>(i), 0.5, 0.5, 0, 0, false});
+    }
+  s.tops.push_back(s.bodies.size() - 1);
+}
+
+}  // namespace
+
+Scene make_many_pyramids(std::size_t rows, std::size_t columns, std::size_t base) {
+  Scene s;
+  s.name = "many_pyramids";
+  // Box2D's geometry, shifted right by `margin` so it lies inside the walls:
+  // shelves 11 m apart (a pyramid's 10 m plus 1), each 220 m wide
+  // (columns x 11 m), pyramids 11 m apart, the first 1 m in from the shelf's end.
+  const double pitch = static_cast<double>(base + 1), margin = 10.0;
+  const double shelf_width = static_cast<double>(columns) * pitch;
+  s.width = shelf_width + 2 * margin;
+  s.height = static_cast<double>(rows) * pitch + margin;
+  s.gravity = 10.0;
+  s.restitution = 0.0;
+  s.resting = true;
+  add_walls(s);
+  // Box2D's shelves are segments (no thickness); here they are fixed boxes
+  // 0.5 m thick under each shelf line, clear of the pyramid below (whose top
+  // is 1 m under it). The floor is the first shelf.
+  for (std::size_t r = 1; r < rows; ++r)
+    s.bodies.push_back({margin + shelf_width / 2, static_cast<double>(r) * pitch - 0.25, shelf_width / 2, 0.25, 0, 0, true});
+  for (std::size_t r = 0; r < rows; ++r)
+    for (std::size_t c = 0; c < columns; ++c)
+      add_small_pyramid(s, base, margin + 1.0 + static_cast<double>(c) * pitch, static_cast<double>(r) * pitch);
   return s;
 }
 
