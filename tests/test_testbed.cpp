@@ -342,4 +342,35 @@ BOOST_AUTO_TEST_CASE(steps_and_resets_reach_the_trace) {
   BOOST_TEST(frames == expected, boost::test_tools::per_element());
 }
 
+// The health check's note (a sinking tower in the course mode) is on the HUD,
+// as in the headless summary; a world without one shows none.
+BOOST_AUTO_TEST_CASE(the_hud_shows_the_health_note) {
+  SceneSpec tower;
+  tower.name = "tower";
+  tower.params.gravity = {0, 0.001};
+  tower.restitution = 0.0;
+  GridSpec g;
+  g.first.pos = {380, 160};
+  g.first.width = g.first.height = 40;
+  g.first.mass = 1.0;
+  g.rows = 10;
+  g.step = {0, 40};
+  tower.blocks.push_back(g);
+  Testbed tb({tower}, 0);
+  const auto has_note = [&] {
+    for (const std::string& line : tb.view(60, 0).hud)
+      if (line.rfind("note: ", 0) == 0) return true;
+    return false;
+  };
+  BOOST_TEST(!has_note());
+  for (int i = 0; i < 600; ++i) tb.step();
+  BOOST_TEST(has_note());
+  std::string all;
+  for (const std::string& line : tb.view(60, 0).hud) {
+    all += line + " ";
+    if (line.rfind("note: ", 0) == 0 || line.rfind("  ", 0) == 0) BOOST_TEST(line.size() <= 90u, line);  // fits 800 px
+  }
+  BOOST_TEST(all.find("--solver stable") != std::string::npos, all);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

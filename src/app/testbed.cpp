@@ -14,12 +14,12 @@ namespace {
 // The stable solver's seven stages do not fit one HUD line of an 800 px
 // window: break a "a 1, b 2, ..." list after a comma once a line passes
 // `width` characters.
-std::vector<std::string> wrap(const std::string& text, std::size_t width = 88) {
+std::vector<std::string> wrap(const std::string& text, std::string_view sep = ", ", std::size_t width = 88) {
   std::vector<std::string> lines{""};
   std::size_t from = 0;
   while (from < text.size()) {
-    std::size_t to = text.find(", ", from);
-    to = to == std::string::npos ? text.size() : to + 2;
+    std::size_t to = text.find(sep, from);
+    to = to == std::string::npos ? text.size() : to + sep.size();
     const std::string item = text.substr(from, to - from);
     if (!lines.back().empty() && lines.back().size() + item.size() > width) lines.emplace_back("  ");
     lines.back() += item;
@@ -274,6 +274,9 @@ View Testbed::view(double fps, double draw_ms) const {
     for (std::string& line : wrap("ms/step: " + Headless::stage_times(world_) + (world_.systems.draw ? draw : "  draw off")))
       v.hud.push_back(std::move(line));
     if (v.ray && v.ray->hit) v.hud.push_back(ray_line(*v.ray->hit));
+    // The health check's note (the course solver's limits met), as in the headless summary.
+    if (const std::string note = Headless::advice(world_); !note.empty())
+      for (std::string& line : wrap("note: " + note, " ")) v.hud.push_back(std::move(line));
     if (!message_.empty()) v.hud.push_back(message_);
   }
   if (overlays_.help) v.help = key_list(scenes_.size());
