@@ -74,7 +74,7 @@ void init_scene(World& w, std::uint64_t seed) {
 
 void step(World& w) {
   Systems& s = w.systems;
-  const double h = w.params.dt / w.params.substeps;
+  const double h = w.params.substep();
   for (int k = 0; k < w.params.substeps; ++k) {
     if (s.forces) w.times.time(Stage::forces, [&] { s.forces->update(w.components, h, w.params.gravity); });
     w.before_move(h);  // the engine's numerics options (docs/numerics.md); nothing in the course mode

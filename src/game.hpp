@@ -14,6 +14,7 @@ namespace physics::Game {
 inline constexpr int width = 800;  // px, the course's window
 inline constexpr int height = 600;
 inline constexpr int wall_thickness = 40;
+inline constexpr int wall_count = 4;  // init_walls makes them first, in this number
 inline constexpr Color wall_blue{0, 0, 255, 255};  // horizontal walls
 inline constexpr Color wall_black{0, 0, 0, 255};   // vertical walls
 inline constexpr Color red{255, 0, 0, 255};        // the block of questions 4, 5 and 9

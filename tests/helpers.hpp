@@ -44,7 +44,7 @@ inline AllPairs update_all_pairs(World& w) {
   const auto ids = w.systems.collision->entities();
   for (std::size_t i = 0; i < ids.size(); ++i)
     for (std::size_t j = i + 1; j < ids.size(); ++j) {
-      if (!solvable(w.components, ids[i], ids[j], w.params.dt / w.params.substeps)) continue;
+      if (!solvable(w.components, ids[i], ids[j], w.params.substep())) continue;
       Contact contact;
       if (!Collision::resolve(w.components, ids[i], ids[j], &contact)) continue;
       ++out.count;

@@ -47,6 +47,18 @@ std::string dump(const World& w) {
   return o.str();
 }
 
+// Two equal blocks meeting head on, far from everything else.
+SceneSpec head_on(Solver solver = Solver::course, bool ccd = false) {
+  SceneSpec s;
+  s.name = "two";
+  s.walls = false;
+  s.params.solver = solver;
+  s.params.ccd = ccd;
+  s.blocks.push_back(block({100, 100}, 40, 40, 1.0, {0.3, 0}));
+  s.blocks.push_back(block({300, 100}, 40, 40, 1.0, {-0.3, 0}));
+  return s;
+}
+
 // Distance a block launched at v0 along the floor slides before it stops.
 double stop_distance(Solver solver, bool ccd, double mu, double v0) {
   SceneSpec s = floor_scene(solver, mu);
@@ -177,20 +189,6 @@ BOOST_AUTO_TEST_SUITE_END()
 
 BOOST_AUTO_TEST_SUITE(contact_events)
 
-namespace {
-// Two equal blocks meeting head on, far from everything else.
-SceneSpec head_on(Solver solver, bool ccd) {
-  SceneSpec s;
-  s.name = "two";
-  s.walls = false;
-  s.params.solver = solver;
-  s.params.ccd = ccd;
-  s.blocks.push_back(block({100, 100}, 40, 40, 1.0, {0.3, 0}));
-  s.blocks.push_back(block({300, 100}, 40, 40, 1.0, {-0.3, 0}));
-  return s;
-}
-}  // namespace
-
 BOOST_AUTO_TEST_CASE(two_blocks_that_collide_once_give_one_begin_and_one_end) {
   for (const auto& [solver, ccd] : {std::pair{Solver::course, false}, {Solver::stable, false}, {Solver::course, true},
                                     {Solver::stable, true}}) {
@@ -245,15 +243,11 @@ BOOST_AUTO_TEST_SUITE_END()
 BOOST_AUTO_TEST_SUITE(filters_and_sensors)
 
 namespace {
+// The head-on pair with contact rules.
 SceneSpec crossing(ContactRules left, ContactRules right) {
-  SceneSpec s;
-  s.name = "crossing";
-  s.walls = false;
-  BlockSpec a = block({100, 100}, 40, 40, 1.0, {0.3, 0});
-  BlockSpec b = block({300, 100}, 40, 40, 1.0, {-0.3, 0});
-  a.contact.rules = left;
-  b.contact.rules = right;
-  s.blocks = {a, b};
+  SceneSpec s = head_on();
+  std::get<BlockSpec>(s.blocks[0]).contact.rules = left;
+  std::get<BlockSpec>(s.blocks[1]).contact.rules = right;
   return s;
 }
 }  // namespace

@@ -30,9 +30,9 @@ SceneSpec scene_of(const World& w, const SceneSpec& from) {
   s.blocks.clear();
   s.description = "saved after frame " + std::to_string(w.frame) + " of " + from.name;
   const Components& k = w.components;
-  // The walls are the first four bodies (populate makes them first) and are
+  // The walls are the first bodies (populate makes them first) and are
   // made again by the "walls" key; the other alive bodies get new ids in order.
-  const EntityId first = from.walls ? 4 : 0;
+  const EntityId first = from.walls ? Game::wall_count : 0;
   std::vector<EntityId> new_id(k.size(), 0);
   EntityId next = first;
   for (EntityId e = 0; e < k.size(); ++e) {

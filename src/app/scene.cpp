@@ -120,7 +120,7 @@ void check_block(const Checker& k, const BlockSpec& b, const std::string& p) {
 // (walls first, then blocks, as the ids of --dump), on one of the four axes.
 void check_state(const Checker& k, const SceneSpec& s) {
   if (s.state->frame < 0) k.fail("state.frame", "must be >= 0 (got " + std::to_string(s.state->frame) + ")");
-  const std::int64_t bodies = body_count(s) + (s.walls ? 4 : 0);
+  const std::int64_t bodies = body_count(s) + (s.walls ? Game::wall_count : 0);
   for (std::size_t i = 0; i < s.state->warm_start.size(); ++i) {
     const WarmImpulse& w = s.state->warm_start[i];
     const std::string at = "state.warm_start[" + std::to_string(i) + "]";
@@ -411,7 +411,7 @@ std::vector<Body> expand(const SceneSpec& s, const std::string& source) {
 }
 
 void populate(World& w, const SceneSpec& s, const std::vector<Body>& bodies) {
-  w.components.reserve(w.components.size() + bodies.size() + (s.walls ? 4 : 0));
+  w.components.reserve(w.components.size() + bodies.size() + (s.walls ? Game::wall_count : 0));
   if (s.walls) {
     const auto first = static_cast<EntityId>(w.components.size());
     Game::init_walls(w, s.width, s.height, s.restitution);

@@ -65,7 +65,7 @@ Testbed::Testbed(std::vector<SceneSpec> scenes, std::size_t current, Overrides o
       overrides_(overrides),
       overlays_(overlays),
       world_(make_world(with_overrides(scenes_.at(current_), overrides_), true, scenes_.at(current_).name)) {
-  if (world_.systems.collision) world_.systems.collision->record_contacts = overlays_.contacts || world_.events.enabled;
+  record_contacts();
 }
 
 void Testbed::rebuild() {
@@ -75,7 +75,7 @@ void Testbed::rebuild() {
   } catch (const SceneError& e) {
     say(e.what(), false);  // keep the world we have
   }
-  if (world_.systems.collision) world_.systems.collision->record_contacts = overlays_.contacts || world_.events.enabled;
+  record_contacts();
   last_contacts_.clear();
   last_regions_.clear();
   acc_ms_ = 0.0;
@@ -84,6 +84,12 @@ void Testbed::rebuild() {
 }
 
 void Testbed::reset() { rebuild(); }
+
+// The Collision system records its contacts for the C overlay, or for the
+// contact events (--events): one flag, two users.
+void Testbed::record_contacts() {
+  if (world_.systems.collision) world_.systems.collision->record_contacts = overlays_.contacts || world_.events.enabled;
+}
 
 void Testbed::select(std::size_t i) {
   if (i >= scenes_.size()) return;
@@ -214,7 +220,7 @@ Testbed::Action Testbed::handle(const InputEvent& e) {
     case 'v': overlays_.velocity = !overlays_.velocity; break;
     case 'c':
       overlays_.contacts = !overlays_.contacts;
-      if (world_.systems.collision) world_.systems.collision->record_contacts = overlays_.contacts || world_.events.enabled;
+      record_contacts();
       if (!overlays_.contacts) last_contacts_.clear(), last_regions_.clear();
       break;
     case 'i': overlays_.hud = !overlays_.hud; break;

@@ -123,6 +123,7 @@ class Testbed {
 
  private:
   void rebuild();
+  void record_contacts();
   void after_step();
   // Shows `message` on the HUD; a passing one (`fades`) for message_ms.
   void say(std::string message, bool fades);

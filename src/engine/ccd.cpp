@@ -59,9 +59,8 @@ std::pair<double, double> impact(Components& k, EntityId c, EntityId b, Vector n
   change_normal_velocity(vc2, vb2, n, dv, wc, wb);
   // Coulomb friction with this impact's normal impulse (engine/contact.hpp).
   const double jn = dv / (wc + wb);
-  const bool friction = k.friction[c] > 0.0 && k.friction[b] > 0.0;
-  const double jt =
-      friction ? apply_friction(vc2, vb2, n, pair_friction(k.friction[c], k.friction[b]) * jn, wc, wb) : 0.0;
+  const double mu = pair_friction(k, c, b);
+  const double jt = mu > 0.0 ? apply_friction(vc2, vb2, n, mu * jn, wc, wb) : 0.0;
   // Keep position + t·velocity continuous at t (see the header).
   k.position[c] = k.position[c] + t * (vc - vc2);
   k.position[b] = k.position[b] + t * (vb - vb2);

@@ -65,6 +65,11 @@ inline std::pair<int, double> best_axis(const Components& k, EntityId c, EntityI
 // A pair's coefficient: sqrt(mu_a mu_b), Box2D's mixing rule (so a
 // frictionless body, mu = 0, slides on anything).
 inline double pair_friction(double mu_a, double mu_b) { return std::sqrt(mu_a * mu_b); }
+// The same for the bodies c and b: 0 without a square root when either has
+// none (every pair of the sheet's scenes, on the solvers' hot paths).
+inline double pair_friction(const Components& k, EntityId c, EntityId b) {
+  return k.friction[c] > 0.0 && k.friction[b] > 0.0 ? pair_friction(k.friction[c], k.friction[b]) : 0.0;
+}
 
 // The unit tangent of a contact: the normal turned a quarter turn. Friction
 // impulses are signed along it.

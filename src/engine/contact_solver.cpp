@@ -276,11 +276,11 @@ void ContactSolver::iterate(Components& k, const SolverSettings& s) {
 void ContactSolver::prepare_friction(const Components& k) {
   friction_.clear();
   bool any = false;
-  for (const ContactConstraint& ct : contacts_) any = any || (k.friction[ct.c] > 0.0 && k.friction[ct.b] > 0.0);
+  for (const ContactConstraint& ct : contacts_) any = any || pair_friction(k, ct.c, ct.b) > 0.0;
   if (!any) return;
   friction_.reserve(contacts_.size());
   for (const ContactConstraint& ct : contacts_)
-    friction_.push_back({pair_friction(k.friction[ct.c], k.friction[ct.b]), 0.0, 0.0});
+    friction_.push_back({pair_friction(k, ct.c, ct.b), 0.0, 0.0});
 }
 
 // Restitution, Poisson's way: each impact gets e times the impulse that

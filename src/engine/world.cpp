@@ -124,7 +124,7 @@ void World::check_health() {
   // A sensor's overlaps, filtered pairs and bodies passing through a one-way
   // platform are meant to overlap: only pairs the solvers see count.
   const bool rules = components.any_rules();
-  const double h = params.dt / params.substeps;
+  const double h = params.substep();
   broadphase.each_course_candidate([&](Pair p) {  // (never two infinite masses)
     if (rules && !solvable(components, p.c, p.b, h)) return;
     const double d = overlap_depth(components, p.c, p.b);
@@ -136,7 +136,7 @@ void World::check_health() {
 }
 
 BroadPhase::CoursePairs World::course_pairs() {
-  return broadphase.course_pairs(components, systems.collision->entities(), params.dt / params.substeps);
+  return broadphase.course_pairs(components, systems.collision->entities(), params.substep());
 }
 
 double World::kinetic_energy() const {

@@ -30,6 +30,8 @@ struct Params {
   bool ccd = false;         // swept collision (time of impact), no tunnelling
   Solver solver = Solver::course;
   int iterations = 8;       // velocity iterations of the stable solver
+
+  double substep() const { return dt / substeps; }  // ms: the h of one substep
 };
 
 // The engine's own guard, run by World's constructor: a World can be built

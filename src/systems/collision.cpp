@@ -100,10 +100,9 @@ bool Collision::resolve(Components& k, EntityId c, EntityId b, Contact* out) {
     change_normal_velocity(k.velocity[c], k.velocity[b], n, dv, wc, wb);
     // Beyond the sheet: Coulomb friction, when both bodies have some
     // (engine/contact.hpp); without it the pair is the sheet's.
-    const bool friction = k.friction[c] > 0.0 && k.friction[b] > 0.0;
-    if (friction || out) jn = dv / (wc + wb);
-    if (friction)
-      jt = apply_friction(k.velocity[c], k.velocity[b], n, pair_friction(k.friction[c], k.friction[b]) * jn, wc, wb);
+    const double mu = pair_friction(k, c, b);
+    if (mu > 0.0 || out) jn = dv / (wc + wb);
+    if (mu > 0.0) jt = apply_friction(k.velocity[c], k.velocity[b], n, mu * jn, wc, wb);
   }
   if (out) *out = Contact{c, b, pen, n, approaching, jn, jt};
   return true;

@@ -88,7 +88,7 @@ int outside(const World& w, double x0, double y0, double x1, double y1) {
 double step_energy(const World& w) {
   const Components& k = w.components;
   const Vector g = w.params.gravity;
-  const double h = w.params.dt / w.params.substeps;
+  const double h = w.params.substep();
   double E = 0.0;
   for (std::size_t e = 0; e < k.size(); ++e) {
     const double m = k.mass[e];
