@@ -80,11 +80,11 @@ void step(World& w) {
     w.before_move(h);  // the engine's numerics options (docs/numerics.md); nothing in the course mode
     if (s.move) w.times.time(Stage::move, [&] { s.move->update(w.components, h); });
     if (!s.collision) continue;
-    if (w.params.solver == Solver::stable) {
+    if (w.solver_step()) {
       w.after_move();  // the stable solver projects overlaps apart instead of the course's pass
     } else {
       w.times.time(Stage::collision, [&] { s.collision->update(w.components, w.course_pairs()); });
-      w.record_contacts();  // the pass's contacts, for contact events (engine/events.hpp), if enabled
+      w.record_contacts();  // the pass's contacts, for contact events (engine/events.hpp) and the auto mode
     }
   }
   ++w.times.steps;

@@ -1,5 +1,6 @@
 // make stability: the matrix of stiff and extreme cases (report/STABILITY.md).
 #include <chrono>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 
@@ -10,7 +11,10 @@ using namespace physics::numerics;
 int main(int argc, char** argv) {
   const std::string out_path = argc > 1 ? argv[1] : "report/STABILITY.md";
   const bool quick = argc > 2 && std::string(argv[2]) == "--quick";  // skip the long cases
-  const auto modes = stability_modes();
+  auto modes = stability_modes();
+  // STABILITY_MODE=name: that column alone (while working on a mode).
+  if (const char* only = std::getenv("STABILITY_MODE"))
+    std::erase_if(modes, [&](const Mode& m) { return m.name != only; });
   const auto cases = stability_cases();
   std::ofstream md(out_path);
   if (!md) {

@@ -85,8 +85,10 @@ po::options_description descriptions() {
        "seed of the random generators (the k-th generator gets S + k)")
       ("ccd", po::value<std::string>()->value_name("on|off")->implicit_value("on"),
        "swept collision (no tunnelling); --ccd alone means on")
-      ("solver", po::value<std::string>()->value_name("course|stable"),
-       "contact solver: the sheet's one pass (course) or the iterated one (stable)")
+      ("solver", po::value<std::string>()->value_name("course|stable|auto"),
+       "contact solver: the sheet's one pass (course), the iterated one (stable), or auto: per substep what the "
+       "scene needs, the course's pass, the stable solver where contacts persist and CCD for fast bodies (it "
+       "decides CCD itself: --ccd is not read)")
       ("iterations", po::value<std::string>()->value_name("N"), "iterations of the stable solver (1-1000)")
       ("dump", po::value<std::string>()->value_name("FILE.csv"),
        "write the final state as CSV: id,x,y,w,h,vx,vy,mass")
@@ -227,9 +229,8 @@ Options parse(std::span<const std::string> args) {
   if (has("ccd")) ov.ccd = on_off("--ccd", get("ccd"));
   if (has("solver")) {
     const std::string s = get("solver");
-    if (s == "course") ov.solver = Solver::course;
-    else if (s == "stable") ov.solver = Solver::stable;
-    else bad("--solver", "must be course or stable", s);
+    ov.solver = solver_named(s);
+    if (!ov.solver) bad("--solver", "must be course, stable or auto", s);
   }
   if (has("dump")) o.dump = get("dump");
   if (has("trace")) o.trace = get("trace");

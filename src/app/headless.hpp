@@ -38,6 +38,8 @@ std::string stage_times(const World& w);
 std::string non_finite_line(const World& w);
 std::string escape_line(const World& w);
 std::string advice(const World& w);
+// What --solver auto used over the run, for the summary.
+std::string auto_line(const World& w);
 
 // The HUD line: fps, physics ms/step, body count, kinetic energy, momentum.
 std::string hud_line(const World& w, double fps);

@@ -631,9 +631,9 @@ void read_world(const Reader& r, const json& w, SceneSpec& s) {
   if (const json* v = find(w, "ccd")) s.params.ccd = r.boolean(*v, "world.ccd");
   if (const json* v = find(w, "solver")) {
     const std::string name = r.text(*v, "world.solver");
-    if (name == "course") s.params.solver = Solver::course;
-    else if (name == "stable") s.params.solver = Solver::stable;
-    else r.fail("world.solver", "must be \"course\" or \"stable\" (got " + r.got(*v) + ")");
+    const auto solver = solver_named(name);
+    if (!solver) r.fail("world.solver", "must be \"course\", \"stable\" or \"auto\" (got " + r.got(*v) + ")");
+    s.params.solver = *solver;
   }
   if (const json* v = find(w, "iterations"))
     s.params.iterations = static_cast<int>(r.integer(*v, "world.iterations", 1, max_iterations));
@@ -1071,7 +1071,7 @@ std::string to_json(const SceneSpec& s) {
                 {"walls", s.walls},
                 {"systems", systems},
                 {"ccd", s.params.ccd},
-                {"solver", s.params.solver == Solver::stable ? "stable" : "course"},
+                {"solver", std::string(name(s.params.solver))},
                 {"iterations", s.params.iterations}};
   if (s.friction != 0.0) o["world"]["friction"] = s.friction;  // beyond the sheet: only when used
   ojson blocks = ojson::array();

@@ -39,9 +39,9 @@ SceneSpec with_overrides(SceneSpec s, const Overrides& o) {
 
 // "solver stable (8 it.)  substeps 2  CCD on  overlays: aabb, contacts"
 std::string options_line(const Params& p, const Overlays& o) {
-  std::string s = p.solver == Solver::stable ? "solver stable (" + std::to_string(p.iterations) + " it.)"
-                                             : std::string("solver course");
-  s += "  substeps " + std::to_string(p.substeps) + "  CCD " + (p.ccd ? "on" : "off") + "  overlays: ";
+  std::string s = "solver " + std::string(name(p.solver));
+  if (p.solver != Solver::course) s += " (" + std::to_string(p.iterations) + " it.)";
+  s += "  substeps " + std::to_string(p.substeps) + "  CCD " + (p.solver == Solver::automatic ? "auto" : p.ccd ? "on" : "off") + "  overlays: ";
   std::string list;
   for (const auto& [on, name] : {std::pair{o.aabb, "aabb (A)"}, {o.velocity, "velocity (V)"},
                                  {o.contacts, "contacts (C)"}})

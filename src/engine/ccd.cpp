@@ -94,7 +94,7 @@ std::optional<Impact> Ccd::time_of_impact(const Components& k, EntityId c, Entit
 }
 
 void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h, Vector gravity,
-                  BroadPhase& broadphase, ContactEvents& events) {
+                  BroadPhase& broadphase, ContactEvents& events, const CcdSelection* sel) {
   const std::size_t count = entities.size();
   if (count < 2) return;
   broadphase.find(k, entities, h, 0.0, pairs_);
@@ -109,27 +109,39 @@ void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h, V
 
   const auto predict = [&](std::uint32_t ic, std::uint32_t ib, double t0) {
     if (ic > ib) std::swap(ic, ib);
+    // A selected body's line holds from its start time on (before it, the
+    // line is the one the solver's impact shifted, not the path).
+    if (sel) t0 = std::max({t0, sel->start[entities[ic]], sel->start[entities[ib]]});
     if (const auto hit = time_of_impact(k, entities[ic], entities[ib], t0, h))
       queue.push(Event{hit->t, ic, ib, version[ic], version[ib]});
   };
-  for (const Pair& p : pairs_) predict(index[p.c], index[p.b], 0.0);
-  // After an impact, the impacts of its bodies c and b with everything again
-  // (not only the candidates, whose sweeps assumed the old velocities). With
-  // contact rules, only with the bodies the broad phase would pair them with
-  // (its pairs above are filtered already): a compile-time switch, so the
-  // loop without rules tests nothing more.
+  for (const Pair& p : pairs_)
+    if (!sel || sel->fast[p.c] || sel->fast[p.b]) predict(index[p.c], index[p.b], 0.0);
+  // Whether a body of an impact at t is swept for the rest of the substep.
+  const auto swept = [&](EntityId e, double t) {
+    if (!sel || sel->fast[e]) return true;
+    if (Vector::norm(k.velocity[e]) * (h - t) <= sel->reach[e]) return false;
+    sel->fast[e] = 1;
+    return true;
+  };
+  // After an impact, the impacts of its swept bodies c and b with everything
+  // again (not only the candidates, whose sweeps assumed the old velocities).
+  // With contact rules, only with the bodies the broad phase would pair them
+  // with (its pairs above are filtered already): a compile-time switch, so
+  // the loop without rules tests nothing more.
   const auto predict_again = [&]<bool with_rules>(const Event& ev, EntityId c, EntityId b) {
     const bool c_fixed = !std::isfinite(k.mass[c]), b_fixed = !std::isfinite(k.mass[b]);
+    const bool again_c = swept(c, ev.t), again_b = swept(b, ev.t);
     for (std::uint32_t j = 0; j < count; ++j) {
       const bool j_fixed = !std::isfinite(k.mass[entities[j]]);
-      if (j != ev.ic && !(c_fixed && j_fixed) && (!with_rules || solvable(k, c, entities[j], h)))
+      if (again_c && j != ev.ic && !(c_fixed && j_fixed) && (!with_rules || solvable(k, c, entities[j], h)))
         predict(ev.ic, j, ev.t);
-      if (j != ev.ib && j != ev.ic && !(b_fixed && j_fixed) && (!with_rules || solvable(k, b, entities[j], h)))
+      if (again_b && j != ev.ib && !(again_c && j == ev.ic) && !(b_fixed && j_fixed) &&
+          (!with_rules || solvable(k, b, entities[j], h)))
         predict(ev.ib, j, ev.t);
     }
   };
   const bool rules = k.any_rules();
-
   const std::int64_t budget = 16 * static_cast<std::int64_t>(count) + 128;
   std::int64_t resolved = 0;
   while (!queue.empty()) {

@@ -32,6 +32,20 @@ struct Impact {
   Vector n;  // unit axis that moves c away from b at the impact
 };
 
+// Which bodies CCD sweeps, for the auto mode (engine/auto_mode.hpp); the
+// spans are indexed by entity id. Without a selection every body is swept
+// from the substep's start.
+struct CcdSelection {
+  // 1: swept from the start. A body hit by a swept one is swept from then
+  // on once its remaining motion, |v|·(h - t), exceeds its `reach`; below
+  // that the overlap it can make is left to the pass after Move.
+  std::span<std::uint8_t> fast;
+  std::span<const double> reach;  // px
+  // ms: the time from which the body's straight line (position + t·velocity)
+  // is its motion: the stable solver's impact time, 0 for the others.
+  std::span<const double> start;
+};
+
 struct CcdStats {
   std::int64_t impacts = 0;          // impulses applied at a time of impact
   std::int64_t capped_substeps = 0;  // substeps that hit the impact budget (see Ccd::resolve)
@@ -47,8 +61,9 @@ class Ccd {
   // that moment for the rest of the substep: no tunnelling, no energy or
   // momentum error, but lost time, counted in stats.capped_substeps.
   // Each impact is reported to `events` (which keeps it only if enabled).
+  // With a selection, only the pairs of a selected body are swept.
   void resolve(Components& k, std::span<const EntityId> entities, double h, Vector gravity, BroadPhase& broadphase,
-               ContactEvents& events);
+               ContactEvents& events, const CcdSelection* selection = nullptr);
 
   // First time in [t0, t1] at which the boxes of c and b, moving at their
   // current velocities from their positions extrapolated to time 0

@@ -19,6 +19,20 @@ void validate(const Params& p) {
     throw std::invalid_argument("gravity must be finite, within 1e6 per axis");
 }
 
+std::string_view name(Solver s) {
+  switch (s) {
+    case Solver::stable: return "stable";
+    case Solver::automatic: return "auto";
+    default: return "course";
+  }
+}
+
+std::optional<Solver> solver_named(std::string_view name) {
+  for (const Solver s : {Solver::course, Solver::stable, Solver::automatic})
+    if (physics::name(s) == name) return s;
+  return std::nullopt;
+}
+
 std::string_view name(Stage s) {
   static constexpr std::string_view names[stage_count] = {
       "forces", "move", "collision", "pairs", "ccd", "prepare", "warm_start", "relax", "restitution", "impact_time",
@@ -60,11 +74,29 @@ SolverSettings solver_settings(const Params& p) {
 void World::before_move(double h) {
   if (!systems.collision) return;
   const auto bodies = systems.collision->entities();
+  if (params.solver == Solver::automatic) return auto_before_move(bodies, h);
   if (params.solver == Solver::stable) {
     contact_solver.solve_velocities(components, bodies, h, params.gravity, solver_settings(params), broadphase, times);
     record_solver_contacts();
   }
   if (params.ccd) times.time(Stage::ccd, [&] { ccd.resolve(components, bodies, h, params.gravity, broadphase, events); });
+}
+
+// The auto mode's substep (engine/auto_mode.hpp): the solver's velocities
+// if it chose the solver (impacts included: CCD only sweeps what is still
+// fast after them), then CCD for the fast bodies.
+void World::auto_before_move(std::span<const EntityId> bodies, double h) {
+  systems.collision->record_contacts = true;  // the pass's contacts tell auto whether they persist
+  if (automatic.plan(components, bodies, h, params.gravity)) {
+    SolverSettings s = solver_settings(params);
+    s.impacts = true;
+    contact_solver.solve_velocities(components, bodies, h, params.gravity, s, broadphase, times);
+    record_solver_contacts();
+    automatic.after_solver(components, bodies, contact_solver.constraints(), h);
+  }
+  if (!automatic.any_fast()) return;
+  CcdSelection selection = automatic.selection();
+  times.time(Stage::ccd, [&] { ccd.resolve(components, bodies, h, params.gravity, broadphase, events, &selection); });
 }
 
 void World::enable_events() {
@@ -74,7 +106,9 @@ void World::enable_events() {
 
 // The course pass's contacts, recorded by Collision::update.
 void World::record_contacts() {
-  if (!events.enabled || !systems.collision) return;
+  if (!systems.collision) return;
+  if (params.solver == Solver::automatic) automatic.after_course_pass(components, systems.collision->contacts());
+  if (!events.enabled) return;
   for (const Contact& c : systems.collision->contacts()) events.touch(c.c, c.b, c.normal, c.jn, c.jt);
 }
 
@@ -97,7 +131,7 @@ void World::finish_events() {
 }
 
 void World::after_move() {
-  if (!systems.collision || params.solver != Solver::stable) return;
+  if (!systems.collision || !solver_step()) return;
   contact_solver.solve_positions(components, systems.collision->entities(), params.gravity, solver_settings(params),
                                  broadphase, times);
 }

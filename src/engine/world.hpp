@@ -4,9 +4,12 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
+#include <string_view>
 
 #include "component_defs.hpp"
 #include "system_defs.hpp"
+#include "engine/auto_mode.hpp"
 #include "engine/ccd.hpp"
 #include "engine/contact_solver.hpp"
 #include "engine/health.hpp"
@@ -20,8 +23,12 @@ inline constexpr double course_dt = 1000.0 / 60.0;  // ms, the sheet's dt
 
 // How Collision resolves contacts. `course` is the sheet's one pass over the
 // pairs and stays the default; `stable` is the iterated contact solver for
-// resting contact and stacks (see the numerics options in the README).
-enum class Solver : std::uint8_t { course, stable };
+// resting contact and stacks; `automatic` ("auto") picks per substep what the
+// scene needs, CCD included (engine/auto_mode.hpp; docs/numerics.md).
+enum class Solver : std::uint8_t { course, stable, automatic };
+// "course", "stable", "auto": the names of the scene key and the flag.
+std::string_view name(Solver s);
+std::optional<Solver> solver_named(std::string_view name);
 
 struct Params {
   double dt = course_dt;    // ms per frame
@@ -56,6 +63,7 @@ struct World {
   BroadPhase broadphase;
   Ccd ccd;
   ContactSolver contact_solver;
+  AutoMode automatic;  // Solver::automatic's choices and counts
   // What the checks after each step found (engine/health.hpp).
   Health health;
   // Contact events (engine/events.hpp), if enabled (enable_events).
@@ -75,6 +83,12 @@ struct World {
   // position projection, which replaces the course's Collision pass.
   void before_move(double h);
   void after_move();
+  // Whether this substep's contacts are the stable solver's (after_move),
+  // not the course pass's: with Solver::stable, and with Solver::automatic
+  // when it chose the solver.
+  bool solver_step() const {
+    return params.solver == Solver::stable || (params.solver == Solver::automatic && automatic.solver_path());
+  }
   // The checks after a step (Game::step runs them, timed as Stage::health):
   // non-finite values, escapes, persistent deep overlaps (course solver).
   void check_health();
@@ -97,6 +111,7 @@ struct World {
 
  private:
   void record_solver_contacts();  // before_move's, after the stable solver's velocities
+  void auto_before_move(std::span<const EntityId> bodies, double h);
   std::vector<std::uint8_t> destroyed_;  // by id; shorter than the arrays until a body is destroyed
 };
 

@@ -24,6 +24,7 @@ std::vector<Mode> stability_modes() {
       Mode{"ccd", 1, true, Solver::course, 8},
       Mode{"stable", 1, false, Solver::stable, 8},
       Mode{"stable+ccd", 1, true, Solver::stable, 8},
+      Mode{"auto", 1, false, Solver::automatic, 8},
   };
 }
 

@@ -1,0 +1,86 @@
+// The auto mode (Params::solver = Solver::automatic, `--solver auto`): per
+// substep, only the numerics the scene needs at that moment.
+//
+// No single mode passes the stability matrix (report/STABILITY.md): the
+// course's one pass sinks stacks and tunnels fast bodies, the stable solver
+// tunnels bodies that meet a second obstacle within a substep, CCD alone has
+// no resting contact and, with the stable solver, stops time when a body is
+// squeezed (its impacts never end). Each of them is right somewhere, and the
+// cheapest is the course's pass. So, each substep:
+//  - the course's pass, unless contacts persist: the same pair of finite
+//    bodies resolved by two passes in a row (a stack, a squeeze, a pile), or
+//    bouncing contacts under gravity (the pass reflects the whole substep's
+//    gravity kick and the energy creeps up). Then the stable solver, held as
+//    long as finite bodies carry each other's load and `hold` substeps more
+//    (so that a resting pile does not flip between the two every substep);
+//  - swept collision (CCD) only for the bodies whose motion this substep
+//    exceeds their `reach`: half of their own thinnest side plus the
+//    thinnest side of anything in the world (past that, an overlap is pushed
+//    out on the wrong side: the body tunnels). On the solver's path CCD
+//    starts after the solver, from each body's impact time: the solver stops
+//    a fast body's first impact (and a heavy one landing on a stack, which
+//    CCD's one-impact-at-a-time cannot: the impacts down the stack never
+//    end), CCD the ones after it within the substep.
+// The CCD flag of Params is not read: auto decides which bodies to sweep.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "component_defs.hpp"
+#include "engine/ccd.hpp"
+#include "engine/contact.hpp"
+#include "engine/contact_solver.hpp"
+
+namespace physics {
+
+struct AutoStats {
+  std::int64_t course_substeps = 0;  // substeps resolved by the course's pass
+  std::int64_t solver_substeps = 0;  // substeps resolved by the stable solver
+  std::int64_t swept = 0;            // bodies swept by CCD, summed over substeps
+  std::int64_t contacts = 0;         // contacts the stable solver iterated, summed over substeps
+};
+
+class AutoMode {
+ public:
+  // Substeps the solver is kept after its last load-carrying contact.
+  static constexpr int hold = 30;
+  // Substeps in a row a pair of finite bodies must be pressed together
+  // (an impulse between them) to count as a persistent contact.
+  static constexpr int persist = 3;
+
+  // Before the substep's velocities: which path it takes (true: the stable
+  // solver) and which bodies are fast, from the velocities after Forces.
+  bool plan(const Components& k, std::span<const EntityId> bodies, double h, Vector gravity);
+  // After the solver's velocities: whether finite bodies carry each other
+  // (keeps the solver), and which bodies are still fast, from when.
+  void after_solver(const Components& k, std::span<const EntityId> bodies, std::span<const ContactConstraint> contacts,
+                    double h);
+  // After the course's pass: whether a pair of finite bodies it resolved was
+  // resolved by the pass before too (switches to the solver).
+  void after_course_pass(const Components& k, std::span<const Contact> contacts);
+
+  bool solver_path() const { return solver_path_; }
+  bool any_fast() const { return any_fast_; }
+  // The bodies to sweep this substep (valid until the next plan()).
+  CcdSelection selection() { return {fast_, reach_, start_}; }
+
+  AutoStats stats;
+
+ private:
+  void mark_fast(const Components& k, std::span<const EntityId> bodies, double h);
+
+  std::vector<std::uint8_t> fast_;  // by entity id
+  std::vector<double> reach_;       // by entity id, px
+  std::vector<double> start_;       // by entity id, ms
+  void count_pressed();
+  std::vector<std::uint64_t> pressed_;  // keys of the pairs of finite bodies pressed together this substep
+  std::vector<std::pair<std::uint64_t, int>> runs_, next_runs_;  // (key, substeps in a row), sorted
+  int hold_left_ = 0;
+  bool solver_path_ = false;
+  bool any_fast_ = false;
+};
+
+}  // namespace physics
