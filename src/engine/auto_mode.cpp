@@ -8,6 +8,9 @@
 namespace physics {
 
 bool AutoMode::plan(const Components& k, std::span<const EntityId> bodies, double h, Vector gravity) {
+  // A scene under gravity starts on the solver: its bodies may be resting
+  // on each other already, and three course passes would let a pile sink.
+  if (stats.course_substeps + stats.solver_substeps == 0 && !Vector::is_zero(gravity)) hold_left_ = hold + 1;
   if (hold_left_ > 0) --hold_left_;
   const std::size_t n = k.size();
   reach_.resize(n);
@@ -30,7 +33,7 @@ bool AutoMode::plan(const Components& k, std::span<const EntityId> bodies, doubl
         bouncy = true;
         break;
       }
-  solver_path_ = hold_left_ > 0 || (!Vector::is_zero(gravity) && (bouncy || any_fast_));
+  solver_path_ = hold_left_ > 0 || (!Vector::is_zero(gravity) && (bouncy || fast_count_ > 0));
   ++(solver_path_ ? stats.solver_substeps : stats.course_substeps);
   return solver_path_;
 }
@@ -38,11 +41,14 @@ bool AutoMode::plan(const Components& k, std::span<const EntityId> bodies, doubl
 // Fast: Move's displacement, h·|v| (the velocity after Forces), exceeds the
 // body's reach.
 void AutoMode::mark_fast(const Components& k, std::span<const EntityId> bodies, double h) {
-  fast_.assign(k.size(), 0);
-  any_fast_ = false;
-  for (const EntityId e : bodies)
-    if (h * Vector::norm(k.velocity[e]) > reach_[e]) fast_[e] = 1, any_fast_ = true;
-  for (const EntityId e : bodies) stats.swept += fast_[e];
+  fast_.resize(k.size());
+  fast_count_ = 0;
+  for (const EntityId e : bodies) {
+    const Vector d = h * k.velocity[e];
+    const bool fast = Vector::dot(d, d) > reach_[e] * reach_[e];  // squared: no root per body
+    fast_[e] = fast;
+    fast_count_ += fast;
+  }
 }
 
 void AutoMode::after_solver(const Components& k, std::span<const EntityId> bodies,
@@ -56,9 +62,8 @@ void AutoMode::after_solver(const Components& k, std::span<const EntityId> bodie
   // impact time on: the solver's impact_time shifted each body hit before
   // touching so that its line from then on is its motion (the earliest of
   // its impacts, as there).
-  stats.swept -= std::count_if(bodies.begin(), bodies.end(), [&](EntityId e) { return fast_[e] != 0; });
   mark_fast(k, bodies, h);
-  if (!any_fast_) return;
+  if (fast_count_ == 0) return;
   for (const ContactConstraint& ct : contacts) {
     if (ct.resting || !(ct.toi > 0.0)) continue;
     for (const EntityId e : {ct.c, ct.b})
@@ -78,7 +83,8 @@ void AutoMode::after_course_pass(const Components& k, std::span<const Contact> c
 // of substeps in a row it has been (pressed_ in, runs_ kept): `persist` in a
 // row holds the solver.
 void AutoMode::count_pressed() {
-  std::sort(pressed_.begin(), pressed_.end());
+  // Mostly in order already (pairs come in registration order).
+  if (!std::is_sorted(pressed_.begin(), pressed_.end())) std::sort(pressed_.begin(), pressed_.end());
   next_runs_.clear();
   auto old = runs_.begin();
   for (const std::uint64_t key : pressed_) {

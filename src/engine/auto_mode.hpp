@@ -63,9 +63,9 @@ class AutoMode {
   void after_course_pass(const Components& k, std::span<const Contact> contacts);
 
   bool solver_path() const { return solver_path_; }
-  bool any_fast() const { return any_fast_; }
-  // The bodies to sweep this substep (valid until the next plan()).
+  // The bodies to sweep this substep, and how many (valid until the next plan()).
   CcdSelection selection() { return {fast_, reach_, start_}; }
+  std::size_t fast_count() const { return fast_count_; }
 
   AutoStats stats;
 
@@ -80,7 +80,7 @@ class AutoMode {
   std::vector<std::pair<std::uint64_t, int>> runs_, next_runs_;  // (key, substeps in a row), sorted
   int hold_left_ = 0;
   bool solver_path_ = false;
-  bool any_fast_ = false;
+  std::size_t fast_count_ = 0;
 };
 
 }  // namespace physics

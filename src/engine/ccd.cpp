@@ -97,7 +97,10 @@ void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h, V
                   BroadPhase& broadphase, ContactEvents& events, const CcdSelection* sel) {
   const std::size_t count = entities.size();
   if (count < 2) return;
-  broadphase.find(k, entities, h, 0.0, pairs_);
+  if (sel)
+    broadphase.find_selected(k, entities, sel->fast, h, pairs_);
+  else
+    broadphase.find(k, entities, h, 0.0, pairs_);
   if (pairs_.empty()) return;
 
   // Registration index of each entity, and a version per body: an event
@@ -115,8 +118,7 @@ void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h, V
     if (const auto hit = time_of_impact(k, entities[ic], entities[ib], t0, h))
       queue.push(Event{hit->t, ic, ib, version[ic], version[ib]});
   };
-  for (const Pair& p : pairs_)
-    if (!sel || sel->fast[p.c] || sel->fast[p.b]) predict(index[p.c], index[p.b], 0.0);
+  for (const Pair& p : pairs_) predict(index[p.c], index[p.b], 0.0);
   // Whether a body of an impact at t is swept for the rest of the substep.
   const auto swept = [&](EntityId e, double t) {
     if (!sel || sel->fast[e]) return true;

@@ -141,6 +141,34 @@ void BroadPhase::find(const Components& k, std::span<const EntityId> entities, d
   if (k.any_rules()) std::erase_if(out, [&](Pair p) { return !keeps(rule, k, p.c, p.b, h); });
 }
 
+void BroadPhase::find_selected(const Components& k, std::span<const EntityId> entities,
+                               std::span<const std::uint8_t> selected, double h, std::vector<Pair>& out) {
+  constexpr std::size_t few = 16;  // ~ the grid's cost per body over a box test's
+  std::size_t count = 0;
+  for (const EntityId e : entities) count += selected[e];
+  if (count > few) {
+    find(k, entities, h, 0.0, out);
+    std::erase_if(out, [&](Pair p) { return !selected[p.c] && !selected[p.b]; });
+    return;
+  }
+  out.clear();
+  current_.resize(entities.size());
+  for (std::size_t i = 0; i < entities.size(); ++i) current_[i] = swept(k, entities[i], h, 0.0);
+  const bool rules = k.any_rules();
+  for (std::size_t i = 0; i < entities.size(); ++i) {
+    if (!selected[entities[i]]) continue;
+    const Bounds& a = current_[i];
+    for (std::size_t j = 0; j < entities.size(); ++j) {
+      const EntityId c = entities[std::min(i, j)], b = entities[std::max(i, j)];
+      if (j == i || (selected[entities[j]] && j < i)) continue;  // a pair of two selected bodies once
+      if (!std::isfinite(k.mass[c]) && !std::isfinite(k.mass[b])) continue;
+      const Bounds& o = current_[j];
+      if (!(a.x0 <= o.x1 && o.x0 <= a.x1 && a.y0 <= o.y1 && o.y0 <= a.y1)) continue;
+      if (!rules || solvable(k, c, b, h)) out.push_back({c, b});
+    }
+  }
+}
+
 void BroadPhase::fat_rebuild(const Components& k, std::span<const EntityId> entities) {
   const std::size_t n = entities.size();
   fat_.resize(n);

@@ -47,6 +47,12 @@ class BroadPhase {
 
   void find(const Components& k, std::span<const EntityId> entities, double h, double reach, std::vector<Pair>& out,
             PairRule rule = PairRule::solvable);
+  // The pairs of find(h, 0) that include a selected body (`selected`, by
+  // entity id; CCD's fast bodies in the auto mode). A few selected bodies
+  // are each tested against every body, which costs less than a grid of the
+  // whole world; many take find()'s pairs.
+  void find_selected(const Components& k, std::span<const EntityId> entities, std::span<const std::uint8_t> selected,
+                     double h, std::vector<Pair>& out);
 
   // After a course pass, before anything else asks: calls f(pair) for each
   // pair the pass's grid lists (boxes grown by course_margin that overlapped

@@ -36,7 +36,7 @@ std::optional<Solver> solver_named(std::string_view name) {
 std::string_view name(Stage s) {
   static constexpr std::string_view names[stage_count] = {
       "forces", "move", "collision", "pairs", "ccd", "prepare", "warm_start", "relax", "restitution", "impact_time",
-      "store", "positions", "health"};
+      "store", "positions", "auto", "health"};
   return names[static_cast<std::size_t>(s)];
 }
 
@@ -87,14 +87,17 @@ void World::before_move(double h) {
 // fast after them), then CCD for the fast bodies.
 void World::auto_before_move(std::span<const EntityId> bodies, double h) {
   systems.collision->record_contacts = true;  // the pass's contacts tell auto whether they persist
-  if (automatic.plan(components, bodies, h, params.gravity)) {
+  bool solver = false;
+  times.time(Stage::decide, [&] { solver = automatic.plan(components, bodies, h, params.gravity); });
+  if (solver) {
     SolverSettings s = solver_settings(params);
     s.impacts = true;
     contact_solver.solve_velocities(components, bodies, h, params.gravity, s, broadphase, times);
     record_solver_contacts();
-    automatic.after_solver(components, bodies, contact_solver.constraints(), h);
+    times.time(Stage::decide, [&] { automatic.after_solver(components, bodies, contact_solver.constraints(), h); });
   }
-  if (!automatic.any_fast()) return;
+  if (automatic.fast_count() == 0) return;
+  automatic.stats.swept += static_cast<std::int64_t>(automatic.fast_count());
   CcdSelection selection = automatic.selection();
   times.time(Stage::ccd, [&] { ccd.resolve(components, bodies, h, params.gravity, broadphase, events, &selection); });
 }
@@ -107,7 +110,8 @@ void World::enable_events() {
 // The course pass's contacts, recorded by Collision::update.
 void World::record_contacts() {
   if (!systems.collision) return;
-  if (params.solver == Solver::automatic) automatic.after_course_pass(components, systems.collision->contacts());
+  if (params.solver == Solver::automatic)
+    times.time(Stage::decide, [&] { automatic.after_course_pass(components, systems.collision->contacts()); });
   if (!events.enabled) return;
   for (const Contact& c : systems.collision->contacts()) events.touch(c.c, c.b, c.normal, c.jn, c.jt);
 }

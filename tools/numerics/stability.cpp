@@ -330,6 +330,84 @@ Outcome heavy_drop_on_stack(const Mode& m) {
                 w);
 }
 
+// Box2D's large_pyramid at full size (base 100: 5050 blocks of 10 px, e = 0)
+// on a fixed floor, for 60 s: the top block must not move 1 px, nothing sink
+// 1 px. A run stops as soon as its cell has failed (the figure then says
+// when), and a CCD run once it has lost its time (a failure too): the
+// 5050-block CCD pass would otherwise spend minutes confirming it.
+Outcome pyramid5050(const Mode& m) {
+  World w = make_world(m, down);
+  block(w, 0, 1100, 1200, 40, infinity, {}, 0.0);  // the floor
+  constexpr int base = 100, side = 10;
+  EntityId top = 0;
+  for (int i = 0; i < base; ++i)
+    for (int j = i; j < base; ++j)
+      top = block(w, 100 + side * (0.5 * i + (j - i)), 1100.0 - side * (i + 1), side, side, 1.0, {}, 0.0);
+  const Vector start = w.components.position[top];
+  constexpr int frames = 3600;
+  double sink = 0, moved = 0;
+  int f = 0;
+  while (f < frames && sink < max_sink && moved < max_sink) {
+    Game::step(w);
+    ++f;
+    if (static_cast<double>(w.ccd.stats.capped_substeps) > 0.01 * frames * w.params.substeps) break;
+    if (f % 30 != 0 && f != frames) continue;
+    if (!all_finite(w)) return nan_outcome();
+    sink = std::max(sink, max_overlap(w));
+    moved = Vector::norm(w.components.position[top] - start);
+  }
+  const std::string when = f < frames ? fmt(" (stopped at %.0f s)", f * w.params.dt / 1000.0) : std::string();
+  return finish(f == frames && sink < max_sink && moved < max_sink,
+                fmt("sink %.3g px, top moved %.3g px", sink, moved) + when, w);
+}
+
+// A block launched at 0.5 px/ms along the floor, friction 0.5 on both, under
+// g = 0.001 px/ms²: it stops after v0²/(2 mu g) = 250 px (within 3 %).
+Outcome friction_slide(const Mode& m) {
+  World w = make_world(m, down);
+  walls(w);
+  for (EntityId e = 0; e < w.components.size(); ++e) w.components.friction[e] = 0.5;
+  const EntityId b = block(w, 100, 540, 20, 20, 1.0, {0.5, 0}, 0.0);
+  w.components.friction[b] = 0.5;
+  const Track t = run(m, w, 180, true);
+  if (!t.finite) return nan_outcome();
+  const double d = w.components.position[b].x - 100.0, exact = 0.25 / (2 * 0.5 * g);
+  const bool stopped = std::abs(w.components.velocity[b].x) < 1e-9;
+  return finish(stopped && std::abs(d - exact) < 0.03 * exact && t.outside == 0,
+                fmt("stopped after %.5g px (exact %.4g)", d, exact) + (stopped ? "" : ", still sliding") +
+                    out_text(t.outside),
+                w);
+}
+
+// Ten blocks stacked on the floor, friction 0.5 everywhere, the bottom one
+// pushed sideways by a fixed block moving at 0.01 px/ms for 3 s: the tower
+// must slide as one piece (every block within 1 px of the bottom one's
+// displacement, which follows the pusher), nothing sink 1 px.
+Outcome friction_tower(const Mode& m) {
+  World w = make_world(m, down);
+  walls(w);
+  for (EntityId e = 0; e < w.components.size(); ++e) w.components.friction[e] = 0.5;
+  std::vector<EntityId> ids;
+  for (int k = 0; k < 10; ++k) {
+    ids.push_back(block(w, 100, 560.0 - 20 * (k + 1), 20, 20, 1.0, {}, 0.0));
+    w.components.friction[ids.back()] = 0.5;
+  }
+  const EntityId pusher = block(w, 80, 540, 20, 20, infinity, {0.01, 0}, 0.0);
+  std::vector<Vector> start;
+  for (const EntityId e : ids) start.push_back(w.components.position[e]);
+  const Track t = run(m, w, 180, true, {}, 10);
+  if (!t.finite) return nan_outcome();
+  const double base = w.components.position[ids[0]].x - start[0].x;
+  double apart = 0;
+  for (std::size_t i = 0; i < ids.size(); ++i)
+    apart = std::max(apart, Vector::norm(w.components.position[ids[i]] - start[i] - Vector{base, 0}));
+  const double pushed = w.components.position[pusher].x - 80.0;
+  return finish(apart < max_sink && base > 0.9 * pushed && t.max_overlap < max_sink && t.outside == 0,
+                fmt("moved %.3g px (pusher %.3g), ", base, pushed) + fmt("apart %.3g px, sink %.3g px", apart,
+                                                                         t.max_overlap) + out_text(t.outside),
+                w);
+}
+
 // The question-9 scene, its blocks' restitution set to e.
 void q9(World& w, double e) {
   Game::init_scene(w);
@@ -404,6 +482,10 @@ std::vector<StabilityCase> stability_cases() {
   cases.push_back({"20x20 on two 1x1 (Solver2D)", "max sink < 1 px, big block stays on top", false, high_mass_ratio});
   cases.push_back({"120-block pyramid, friction 0.6, 20 s", "max sink < 1 px, top block moves < 1 px", true,
                    friction_pyramid});
+  cases.push_back({"5050-block pyramid, 60 s", "max sink < 1 px, top block moves < 1 px", true, pyramid5050});
+  cases.push_back({"friction slide to rest", "stop distance within 3 % of v0²/(2 mu g)", false, friction_slide});
+  cases.push_back({"10-block friction tower pushed at its base", "slides as one piece (1 px), sink < 1 px", false,
+                   friction_tower});
   cases.push_back({"25 % overlap", "overlap < 0.01 px within 30 frames, energy not grown", false, overlap25});
   for (const double v : {10.0, 100.0, 1000.0})
     cases.push_back({fmt("bullet %.0f px/ms", v), "never leaves the walls (40 px)", false,
