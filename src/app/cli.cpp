@@ -63,6 +63,27 @@ Overlays overlays(const std::string& s) {
   return o;
 }
 
+// The numerics options (docs/numerics.md): substeps, iterations, CCD, solver, integrator.
+void numerics(const po::variables_map& vm, Overrides& ov) {
+  const auto has = [&](const char* k) { return vm.count(k) > 0; };
+  const auto get = [&](const char* k) { return vm[k].as<std::string>(); };
+  if (has("substeps")) ov.substeps = static_cast<int>(integer("--substeps", get("substeps"), 1, max_substeps));
+  if (has("iterations"))
+    ov.iterations = static_cast<int>(integer("--iterations", get("iterations"), 1, max_iterations));
+  if (has("ccd")) ov.ccd = on_off("--ccd", get("ccd"));
+  if (has("solver")) {
+    const std::string s = get("solver");
+    if (s == "course") ov.solver = Solver::course;
+    else if (s == "stable") ov.solver = Solver::stable;
+    else bad("--solver", "must be course or stable", s);
+  }
+  if (has("integrator")) {
+    const std::string s = get("integrator");
+    ov.integrator = integrator_from_name(s);
+    if (!ov.integrator) bad("--integrator", "must be course or exact", s);
+  }
+}
+
 po::options_description descriptions() {
   po::options_description d("options");
   d.add_options()
@@ -88,6 +109,9 @@ po::options_description descriptions() {
       ("solver", po::value<std::string>()->value_name("course|stable"),
        "contact solver: the sheet's one pass (course) or the iterated one (stable)")
       ("iterations", po::value<std::string>()->value_name("N"), "iterations of the stable solver (1-1000)")
+      ("integrator", po::value<std::string>()->value_name("course|exact"),
+       "motion in a substep: the sheet's symplectic Euler (course) or exact constant-force motion "
+       "x += v h + a h^2/2 (exact)")
       ("dump", po::value<std::string>()->value_name("FILE.csv"),
        "write the final state as CSV: id,x,y,w,h,vx,vy,mass")
       ("events", po::value<std::string>()->value_name("FILE.csv"),
@@ -196,9 +220,7 @@ Options parse(std::span<const std::string> args) {
     if (*ov.dt < min_dt) bad("--dt", "must be >= 1e-06 ms", get("dt"));
     if (*ov.dt > max_dt) bad("--dt", "must be <= 1000000 ms", get("dt"));
   }
-  if (has("substeps")) ov.substeps = static_cast<int>(integer("--substeps", get("substeps"), 1, max_substeps));
-  if (has("iterations"))
-    ov.iterations = static_cast<int>(integer("--iterations", get("iterations"), 1, max_iterations));
+  numerics(vm, ov);
   if (has("gravity")) {
     const std::string g = get("gravity");
     const auto comma = g.find(',');
@@ -223,13 +245,6 @@ Options parse(std::span<const std::string> args) {
     const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
     if (ec != std::errc{} || end != s.data() + s.size()) bad("--seed", "must be an integer >= 0", s);
     ov.seed = v;
-  }
-  if (has("ccd")) ov.ccd = on_off("--ccd", get("ccd"));
-  if (has("solver")) {
-    const std::string s = get("solver");
-    if (s == "course") ov.solver = Solver::course;
-    else if (s == "stable") ov.solver = Solver::stable;
-    else bad("--solver", "must be course or stable", s);
   }
   if (has("dump")) o.dump = get("dump");
   if (has("trace")) o.trace = get("trace");

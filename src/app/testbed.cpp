@@ -41,7 +41,9 @@ SceneSpec with_overrides(SceneSpec s, const Overrides& o) {
 std::string options_line(const Params& p, const Overlays& o) {
   std::string s = p.solver == Solver::stable ? "solver stable (" + std::to_string(p.iterations) + " it.)"
                                              : std::string("solver course");
-  s += "  substeps " + std::to_string(p.substeps) + "  CCD " + (p.ccd ? "on" : "off") + "  overlays: ";
+  s += "  substeps " + std::to_string(p.substeps) + "  CCD " + (p.ccd ? "on" : "off");
+  if (p.integrator == Integrator::exact) s += "  integrator exact";  // the default, the sheet's, goes unsaid
+  s += "  overlays: ";
   std::string list;
   for (const auto& [on, name] : {std::pair{o.aabb, "aabb (A)"}, {o.velocity, "velocity (V)"},
                                  {o.contacts, "contacts (C)"}})

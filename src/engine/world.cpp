@@ -19,6 +19,14 @@ void validate(const Params& p) {
     throw std::invalid_argument("gravity must be finite, within 1e6 per axis");
 }
 
+std::string_view name(Integrator i) { return i == Integrator::exact ? "exact" : "course"; }
+
+std::optional<Integrator> integrator_from_name(std::string_view name) {
+  for (const Integrator i : {Integrator::course, Integrator::exact})
+    if (name == physics::name(i)) return i;
+  return std::nullopt;
+}
+
 std::string_view name(Stage s) {
   static constexpr std::string_view names[stage_count] = {
       "forces", "move", "collision", "pairs", "ccd", "prepare", "warm_start", "relax", "restitution", "impact_time",
@@ -57,14 +65,26 @@ SolverSettings solver_settings(const Params& p) {
 }
 }  // namespace
 
+void World::before_forces() {
+  if (params.integrator == Integrator::exact && systems.move) exact_.start(components, systems.move->entities());
+}
+
 void World::before_move(double h) {
-  if (!systems.collision) return;
-  const auto bodies = systems.collision->entities();
-  if (params.solver == Solver::stable) {
-    contact_solver.solve_velocities(components, bodies, h, params.gravity, solver_settings(params), broadphase, times);
-    record_solver_contacts();
+  const bool exact = params.integrator == Integrator::exact && systems.move;
+  if (exact) exact_.after_forces(components, systems.move->entities());
+  if (systems.collision) {
+    const auto bodies = systems.collision->entities();
+    if (params.solver == Solver::stable) {
+      contact_solver.solve_velocities(components, bodies, h, params.gravity, solver_settings(params), broadphase,
+                                      times);
+      record_solver_contacts();
+    }
+    if (params.ccd)
+      times.time(Stage::ccd, [&] { ccd.resolve(components, bodies, h, params.gravity, broadphase, events); });
   }
-  if (params.ccd) times.time(Stage::ccd, [&] { ccd.resolve(components, bodies, h, params.gravity, broadphase, events); });
+  // Last, so that it sees which velocities the solver and CCD changed, and
+  // timed with Move, whose result it corrects.
+  if (exact) times.time(Stage::move, [&] { exact_.shift(components, systems.move->entities(), h); });
 }
 
 void World::enable_events() {

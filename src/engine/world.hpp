@@ -4,12 +4,15 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
+#include <string_view>
 
 #include "component_defs.hpp"
 #include "system_defs.hpp"
 #include "engine/ccd.hpp"
 #include "engine/contact_solver.hpp"
 #include "engine/health.hpp"
+#include "engine/integrator.hpp"
 #include "engine/limits.hpp"
 #include "engine/pairs.hpp"
 #include "engine/timing.hpp"
@@ -23,6 +26,15 @@ inline constexpr double course_dt = 1000.0 / 60.0;  // ms, the sheet's dt
 // resting contact and stacks (see the numerics options in the README).
 enum class Solver : std::uint8_t { course, stable };
 
+// How a substep moves a body under a constant force. `course` is the sheet's
+// symplectic Euler (Forces: v += a·h, then Move: x += h·v) and stays the
+// default; `exact` moves it by v·h + a·h²/2, as the exact reference does
+// between events (engine/integrator.hpp).
+enum class Integrator : std::uint8_t { course, exact };
+// "course" or "exact": the one spelling of the scene key and the flag.
+std::string_view name(Integrator i);
+std::optional<Integrator> integrator_from_name(std::string_view name);
+
 struct Params {
   double dt = course_dt;    // ms per frame
   int substeps = 1;         // Forces/Move/Collision run this many times with dt/substeps
@@ -30,6 +42,7 @@ struct Params {
   bool ccd = false;         // swept collision (time of impact), no tunnelling
   Solver solver = Solver::course;
   int iterations = 8;       // velocity iterations of the stable solver
+  Integrator integrator = Integrator::course;
 
   double substep() const { return dt / substeps; }  // ms: the h of one substep
 };
@@ -69,10 +82,13 @@ struct World {
   void destroy(EntityId e);
   bool alive(EntityId e) const { return e >= destroyed_.size() || destroyed_[e] == 0; }
 
-  // The engine's stages around Move in a substep of h ms (Game::step calls
-  // them; they do nothing in the course mode): before Move, the stable
-  // solver's velocities and CCD's impacts; after it, the stable solver's
-  // position projection, which replaces the course's Collision pass.
+  // The engine's stages around Forces and Move in a substep of h ms
+  // (Game::step calls them; they do nothing in the course mode): before
+  // Forces, the exact integrator's look at the velocities; before Move, the
+  // stable solver's velocities, CCD's impacts and the exact integrator's
+  // shift; after it, the stable solver's position projection, which replaces
+  // the course's Collision pass.
+  void before_forces();
   void before_move(double h);
   void after_move();
   // The checks after a step (Game::step runs them, timed as Stage::health):
@@ -97,6 +113,7 @@ struct World {
 
  private:
   void record_solver_contacts();  // before_move's, after the stable solver's velocities
+  ExactIntegrator exact_;  // Params::integrator == Integrator::exact
   std::vector<std::uint8_t> destroyed_;  // by id; shorter than the arrays until a body is destroyed
 };
 
