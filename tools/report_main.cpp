@@ -111,9 +111,32 @@ std::string num(double x, int prec = 3) {
   return o.str();
 }
 
+using Families = std::map<std::string, std::vector<const Row*>>;
+
+const Row* find_row(const Families& fam, const std::string& family, const std::string& label) {
+  const auto f = fam.find(family);
+  if (f == fam.end()) return nullptr;
+  for (const Row* r : f->second)
+    if (r->setting.label == label) return r;
+  return nullptr;
+}
+
+// The exact integrator's sentence of a scenario's reading.
+std::string exact_reading(const Families& fam) {
+  const Row* ce60 = find_row(fam, "course+exact (dt)", "dt=1000/60");
+  const Row* ce480 = find_row(fam, "course+exact (dt)", "dt=1000/480");
+  const Row* se60 = find_row(fam, "stable+exact (dt)", "dt=1000/60");
+  const Row* se480 = find_row(fam, "stable+exact (dt)", "dt=1000/480");
+  if (!ce60 || !ce480 || !se60 || !se480) return "";
+  std::ostringstream o;
+  o << "Exact integrator: course pass " << num(ce60->err.pos_rms) << " px at dt = 1000/60, " << num(ce480->err.pos_rms)
+    << " px at 1000/480; stable solver " << num(se60->err.pos_rms) << " px, " << num(se480->err.pos_rms) << " px. ";
+  return o.str();
+}
+
 // One paragraph per scenario, from the numbers.
 std::string reading(const std::vector<const Row*>& rows) {
-  std::map<std::string, std::vector<const Row*>> fam;
+  Families fam;
   for (const Row* r : rows) fam[r->setting.family].push_back(r);
   std::ostringstream o;
   const auto& course = fam["course (dt)"];
@@ -125,11 +148,7 @@ std::string reading(const std::vector<const Row*>& rows) {
       << num(e1 > 0 && e0 > 0 ? std::log(e0 / e1) / std::log(ratio) : NAN, 2) << ") for "
       << num(course.back()->cost / course.front()->cost, 2) << "x the cost. ";
   }
-  const auto find = [&](const std::string& f, const std::string& label) -> const Row* {
-    for (const Row* r : fam[f])
-      if (r->setting.label == label) return r;
-    return nullptr;
-  };
+  const auto find = [&](const std::string& f, const std::string& label) { return find_row(fam, f, label); };
   const Row* k8 = find("substeps", "K=8");
   const Row* dt480 = find("course (dt)", "dt=1000/480");
   if (k8 && dt480)
@@ -143,13 +162,7 @@ std::string reading(const std::vector<const Row*>& rows) {
     o << "At dt = 1000/60: ccd " << num(ccd1->err.pos_rms) << " px (" << num(ccd1->cost) << " ms/s), stable (8 it.) "
       << num(st8->err.pos_rms) << " px (" << num(st8->cost) << " ms/s), stable+ccd " << num(sc1->err.pos_rms) << " px ("
       << num(sc1->cost) << " ms/s). ";
-  const Row* ce60 = find("course+exact (dt)", "dt=1000/60");
-  const Row* ce480 = find("course+exact (dt)", "dt=1000/480");
-  const Row* se60 = find("stable+exact (dt)", "dt=1000/60");
-  const Row* se480 = find("stable+exact (dt)", "dt=1000/480");
-  if (ce60 && ce480 && se60 && se480)
-    o << "Exact integrator: course pass " << num(ce60->err.pos_rms) << " px at dt = 1000/60, " << num(ce480->err.pos_rms)
-      << " px at 1000/480; stable solver " << num(se60->err.pos_rms) << " px, " << num(se480->err.pos_rms) << " px. ";
+  o << exact_reading(fam);
   const Row* best = nullptr;
   for (const Row* r : rows)
     if (!best || r->err.pos_rms < best->err.pos_rms ||
