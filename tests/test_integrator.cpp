@@ -88,9 +88,9 @@ BOOST_AUTO_TEST_CASE(the_course_integrator_is_off_by_g_t_h_over_2) {
   }
 }
 
-// Harmless at contacts: a block resting on the floor stays where the
-// course integrator keeps it with the stable solver (no hovering a·h²/2
-// above it), and every mode keeps it on the floor, out of it, at rest.
+// Harmless at contacts: a block resting on the floor stays on it with the
+// stable solver and CCD (no hovering a·h²/2 above it), and every mode keeps
+// it on the floor, out of it, at rest.
 BOOST_AUTO_TEST_CASE(a_block_resting_on_the_floor_stays_there) {
   for (const Mode& m : modes)
     for (const Integrator integrator : {Integrator::course, Integrator::exact}) {
@@ -107,7 +107,8 @@ BOOST_AUTO_TEST_CASE(a_block_resting_on_the_floor_stays_there) {
         const double y = w.components.position[b].y;
         BOOST_TEST(std::abs(y - 540.0) < 0.2);  // the course pass leaves g·dt² at most
         BOOST_TEST(std::abs(w.components.velocity[b].y) < 0.02);
-        if (m.solver == Solver::stable) BOOST_TEST(std::abs(y - 540.0) < 0.02);
+        // Shifted although the solver or CCD stopped it, it would hover 0.139 px up.
+        if (m.solver == Solver::stable || m.ccd) BOOST_TEST(std::abs(y - 540.0) < 0.02);
       }
     }
 }
