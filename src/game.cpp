@@ -76,6 +76,7 @@ void step(World& w) {
   Systems& s = w.systems;
   const double h = w.params.substep();
   for (int k = 0; k < w.params.substeps; ++k) {
+    w.before_forces();  // the exact integrator's start (docs/numerics.md); nothing by default
     if (s.forces) w.times.time(Stage::forces, [&] { s.forces->update(w.components, h, w.params.gravity); });
     w.before_move(h);  // the engine's numerics options (docs/numerics.md); nothing in the course mode
     if (s.move) w.times.time(Stage::move, [&] { s.move->update(w.components, h); });

@@ -152,7 +152,7 @@ BOOST_AUTO_TEST_CASE(help_documents_every_flag) {
   const Ran r = cli({"--help"});
   BOOST_TEST(r.code == 0);
   for (const char* flag : {"--scene", "--headless", "--frames", "--dt", "--substeps", "--gravity", "--restitution",
-                           "--seed", "--dump", "--trace", "--screenshot", "--ccd", "--solver", "--iterations",
+                           "--seed", "--dump", "--trace", "--screenshot", "--ccd", "--solver", "--iterations", "--integrator",
                            "--list-scenes", "--print-scene", "--overlays", "--friction", "--events", "--save"})
     BOOST_TEST(has(r.out, flag), flag);
 }
@@ -188,6 +188,20 @@ BOOST_AUTO_TEST_CASE(command_line_values_override_the_scene) {
   BOOST_TEST(std::get<RandomSpec>(s.blocks[0]).seed == 9u);
   const Ran off = cli({"--scene", "gas", "--print-scene", "--ccd=off"});
   BOOST_TEST(!parse_scene(off.out, "p.json").params.ccd);
+}
+
+BOOST_AUTO_TEST_CASE(integrator_flag_sets_the_scenes_integrator) {
+  const Ran p = cli({"--scene", "bounce", "--print-scene", "--integrator", "exact"});
+  BOOST_TEST_REQUIRE(p.code == 0, p.err);
+  BOOST_TEST((parse_scene(p.out, "printed.json").params.integrator == Integrator::exact));
+  const Ran course = cli({"--scene", "bounce", "--print-scene", "--integrator=course"});
+  BOOST_TEST((parse_scene(course.out, "printed.json").params.integrator == Integrator::course));
+  const Ran run = cli({"--scene", "bounce", "--headless", "--frames", "3", "--integrator", "exact"});
+  BOOST_TEST(run.code == 0, run.err);
+  BOOST_TEST(has(run.out, "1 substep(s), exact integrator)"), run.out);
+  BOOST_TEST(!has(cli({"--scene", "bounce", "--headless", "--frames", "3"}).out, "integrator"));
+  expect_bad({"--integrator", "verlet"}, "--integrator: must be course or exact (got 'verlet')");
+  expect_bad({"--integrator", "Exact"}, "--integrator: must be course or exact (got 'Exact')");
 }
 
 // --frames 0 runs nothing: the summary says so instead of "after frame 1".

@@ -1,5 +1,7 @@
 // The numerics options: swept collision (CCD), the stable contact solver, and
 // the course mode left as it was. The stiff/extreme matrix is test_stability.cpp.
+#include <algorithm>
+
 #include "game.hpp"
 #include "helpers.hpp"
 #include "numerics/report.hpp"
@@ -196,6 +198,28 @@ BOOST_AUTO_TEST_CASE(the_course_error_shrinks_with_dt_as_first_order) {
   // Eight times smaller dt: between 5x and 16x smaller error (order ~1).
   BOOST_TEST(err.front() / err.back() > 5.0);
   BOOST_TEST(err.front() / err.back() < 16.0);
+}
+
+// The report's exact families: in free flight against the event reference,
+// rounding at every dt, where the course integrator is first order.
+BOOST_AUTO_TEST_CASE(the_exact_integrator_is_exact_in_the_reports_free_flight) {
+  const auto scenarios = report_scenarios();
+  const auto flight = std::find_if(scenarios.begin(), scenarios.end(), [](const Scenario& s) { return s.name == "free flight"; });
+  BOOST_TEST_REQUIRE((flight != scenarios.end()));
+  int exact = 0;
+  for (const Setting& st : report_settings()) {
+    BOOST_TEST_CONTEXT(st.family << " " << st.label) {
+      const Errors e = measure(*flight, st.mode);
+      if (st.mode.integrator == Integrator::exact) {
+        ++exact;
+        BOOST_TEST(e.pos_rms < 1e-10);
+        BOOST_TEST(e.energy < 1e-12);
+      } else {
+        BOOST_TEST(e.pos_rms > 0.1);
+      }
+    }
+  }
+  BOOST_TEST(exact == 8);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

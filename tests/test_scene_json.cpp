@@ -99,6 +99,13 @@ BOOST_AUTO_TEST_CASE(the_numerics_keys_reach_the_worlds_params) {
   BOOST_TEST((w.params.solver == Solver::stable));
   BOOST_TEST(w.params.iterations == 12);
   BOOST_TEST(w.params.substeps == 4);
+  BOOST_TEST((w.params.integrator == Integrator::course));  // the sheet's unless asked
+  const SceneSpec exact = parse_scene(R"({"world": {"integrator": "exact"}})", "x.json");
+  BOOST_TEST((make_world(exact, false).params.integrator == Integrator::exact));
+  // --print-scene and --save write the key, and it reads back.
+  BOOST_TEST(has(to_json(exact), "\"integrator\": \"exact\""), to_json(exact));
+  BOOST_TEST((parse_scene(to_json(exact), "back.json").params.integrator == Integrator::exact));
+  BOOST_TEST(!has(to_json(s), "integrator"));  // beyond the sheet: written only when used, as friction
 }
 
 BOOST_AUTO_TEST_CASE(each_scene_file_reproduces_its_builtin_scene_exactly) {
@@ -292,6 +299,9 @@ BOOST_AUTO_TEST_CASE(wrong_types) {
   BOOST_TEST(has(error_of(R"({"world": {"systems": ["draw", "gravity"]}})"), "world.systems[1]: unknown system"));
   BOOST_TEST(has(error_of(R"({"world": {"systems": ["move", "move"]}})"), "listed twice"));
   BOOST_TEST(has(error_of(R"({"world": {"solver": "fast"}})"), "world.solver: must be \"course\" or \"stable\""));
+  BOOST_TEST(has(error_of(R"({"world": {"integrator": "rk4"}})"),
+                 "bad.json: world.integrator: must be \"course\" or \"exact\" (got the string \"rk4\")"));
+  BOOST_TEST(has(error_of(R"({"world": {"integrator": 1}})"), "world.integrator"));
   BOOST_TEST(has(error_of(with_block(ok_block + R"(, "color": "red")")), "blocks[0].color: must be a colour"));
   BOOST_TEST(has(error_of(R"({"name": 3})"), "name: must be a string"));
 }

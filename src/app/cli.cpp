@@ -63,6 +63,26 @@ Overlays overlays(const std::string& s) {
   return o;
 }
 
+// The numerics options (docs/numerics.md): substeps, iterations, CCD, solver, integrator.
+void numerics(const po::variables_map& vm, Overrides& ov) {
+  const auto has = [&](const char* k) { return vm.count(k) > 0; };
+  const auto get = [&](const char* k) { return vm[k].as<std::string>(); };
+  if (has("substeps")) ov.substeps = static_cast<int>(integer("--substeps", get("substeps"), 1, max_substeps));
+  if (has("iterations"))
+    ov.iterations = static_cast<int>(integer("--iterations", get("iterations"), 1, max_iterations));
+  if (has("ccd")) ov.ccd = on_off("--ccd", get("ccd"));
+  if (has("solver")) {
+    const std::string s = get("solver");
+    ov.solver = solver_from_name(s);
+    if (!ov.solver) bad("--solver", "must be course, stable or auto", s);
+  }
+  if (has("integrator")) {
+    const std::string s = get("integrator");
+    ov.integrator = integrator_from_name(s);
+    if (!ov.integrator) bad("--integrator", "must be course or exact", s);
+  }
+}
+
 po::options_description descriptions() {
   po::options_description d("options");
   d.add_options()
@@ -90,6 +110,9 @@ po::options_description descriptions() {
        "scene needs, the course's pass, the stable solver where contacts persist and CCD for fast bodies (it "
        "decides CCD itself: --ccd is not read)")
       ("iterations", po::value<std::string>()->value_name("N"), "iterations of the stable solver (1-1000)")
+      ("integrator", po::value<std::string>()->value_name("course|exact"),
+       "motion in a substep: the sheet's symplectic Euler (course) or exact constant-force motion "
+       "x += v h + a h^2/2 (exact)")
       ("dump", po::value<std::string>()->value_name("FILE.csv"),
        "write the final state as CSV: id,x,y,w,h,vx,vy,mass")
       ("events", po::value<std::string>()->value_name("FILE.csv"),
@@ -198,9 +221,7 @@ Options parse(std::span<const std::string> args) {
     if (*ov.dt < min_dt) bad("--dt", "must be >= 1e-06 ms", get("dt"));
     if (*ov.dt > max_dt) bad("--dt", "must be <= 1000000 ms", get("dt"));
   }
-  if (has("substeps")) ov.substeps = static_cast<int>(integer("--substeps", get("substeps"), 1, max_substeps));
-  if (has("iterations"))
-    ov.iterations = static_cast<int>(integer("--iterations", get("iterations"), 1, max_iterations));
+  numerics(vm, ov);
   if (has("gravity")) {
     const std::string g = get("gravity");
     const auto comma = g.find(',');
@@ -225,12 +246,6 @@ Options parse(std::span<const std::string> args) {
     const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
     if (ec != std::errc{} || end != s.data() + s.size()) bad("--seed", "must be an integer >= 0", s);
     ov.seed = v;
-  }
-  if (has("ccd")) ov.ccd = on_off("--ccd", get("ccd"));
-  if (has("solver")) {
-    const std::string s = get("solver");
-    ov.solver = solver_named(s);
-    if (!ov.solver) bad("--solver", "must be course, stable or auto", s);
   }
   if (has("dump")) o.dump = get("dump");
   if (has("trace")) o.trace = get("trace");

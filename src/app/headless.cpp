@@ -59,7 +59,8 @@ void print_summary(std::ostream& out, const World& w, const Summary& s, const st
     const std::string names = physics_systems.to_string();
     o << "scene:           " << scene << " (systems: " << (names.empty() ? "none" : names) << ")\n";
   }
-  o << "frames:          " << s.frames << " (dt = " << w.params.dt << " ms, " << w.params.substeps << " substep(s))\n"
+  o << "frames:          " << s.frames << " (dt = " << w.params.dt << " ms, " << w.params.substeps << " substep(s)"
+    << (w.params.integrator == Integrator::exact ? ", exact integrator" : "") << ")\n"
     << "bodies:          " << s.bodies << " (" << s.mobile << " mobile)\n"
     << std::setprecision(9);
   if (s.frames == 0) {

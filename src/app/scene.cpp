@@ -276,6 +276,7 @@ void apply(SceneSpec& s, const Overrides& o) {
   if (o.ccd) s.params.ccd = *o.ccd;
   if (o.solver) s.params.solver = *o.solver;
   if (o.iterations) s.params.iterations = *o.iterations;
+  if (o.integrator) s.params.integrator = *o.integrator;
   std::uint64_t k = 0;
   for (BlockEntry& e : s.blocks) {
     if (o.friction) {

@@ -156,6 +156,7 @@ struct Overrides {
   std::optional<bool> ccd;
   std::optional<Solver> solver;
   std::optional<int> iterations;
+  std::optional<Integrator> integrator;
 };
 void apply(SceneSpec& s, const Overrides& o);
 

@@ -616,7 +616,7 @@ const json* find(const json& obj, const char* key) {
 void read_world(const Reader& r, const json& w, SceneSpec& s) {
   r.keys(w, "world",
          {"width", "height", "dt", "substeps", "gravity", "restitution", "friction", "walls", "systems", "ccd",
-          "solver", "iterations"});
+          "solver", "iterations", "integrator"});
   if (const json* v = find(w, "width")) s.width = static_cast<int>(r.integer(*v, "world.width", 1, max_world_size));
   if (const json* v = find(w, "height")) s.height = static_cast<int>(r.integer(*v, "world.height", 1, max_world_size));
   if (const json* v = find(w, "dt")) {
@@ -631,9 +631,14 @@ void read_world(const Reader& r, const json& w, SceneSpec& s) {
   if (const json* v = find(w, "ccd")) s.params.ccd = r.boolean(*v, "world.ccd");
   if (const json* v = find(w, "solver")) {
     const std::string name = r.text(*v, "world.solver");
-    const auto solver = solver_named(name);
+    const auto solver = solver_from_name(name);
     if (!solver) r.fail("world.solver", "must be \"course\", \"stable\" or \"auto\" (got " + r.got(*v) + ")");
     s.params.solver = *solver;
+  }
+  if (const json* v = find(w, "integrator")) {
+    const auto i = integrator_from_name(r.text(*v, "world.integrator"));
+    if (!i) r.fail("world.integrator", "must be \"course\" or \"exact\" (got " + r.got(*v) + ")");
+    s.params.integrator = *i;
   }
   if (const json* v = find(w, "iterations"))
     s.params.iterations = static_cast<int>(r.integer(*v, "world.iterations", 1, max_iterations));
@@ -1074,6 +1079,7 @@ std::string to_json(const SceneSpec& s) {
                 {"solver", std::string(name(s.params.solver))},
                 {"iterations", s.params.iterations}};
   if (s.friction != 0.0) o["world"]["friction"] = s.friction;  // beyond the sheet: only when used
+  if (s.params.integrator != Integrator::course) o["world"]["integrator"] = std::string(name(s.params.integrator));
   ojson blocks = ojson::array();
   for (const BlockEntry& e : s.blocks) blocks.push_back(entry(e));
   o["blocks"] = blocks;

@@ -41,7 +41,10 @@ SceneSpec with_overrides(SceneSpec s, const Overrides& o) {
 std::string options_line(const Params& p, const Overlays& o) {
   std::string s = "solver " + std::string(name(p.solver));
   if (p.solver != Solver::course) s += " (" + std::to_string(p.iterations) + " it.)";
-  s += "  substeps " + std::to_string(p.substeps) + "  CCD " + (p.solver == Solver::automatic ? "auto" : p.ccd ? "on" : "off") + "  overlays: ";
+  s += "  substeps " + std::to_string(p.substeps) + "  CCD " +
+       (p.solver == Solver::automatic ? "auto" : p.ccd ? "on" : "off");
+  if (p.integrator == Integrator::exact) s += "  integrator exact";  // the default, the sheet's, goes unsaid
+  s += "  overlays: ";
   std::string list;
   for (const auto& [on, name] : {std::pair{o.aabb, "aabb (A)"}, {o.velocity, "velocity (V)"},
                                  {o.contacts, "contacts (C)"}})

@@ -27,9 +27,17 @@ std::string_view name(Solver s) {
   }
 }
 
-std::optional<Solver> solver_named(std::string_view name) {
+std::optional<Solver> solver_from_name(std::string_view name) {
   for (const Solver s : {Solver::course, Solver::stable, Solver::automatic})
     if (physics::name(s) == name) return s;
+  return std::nullopt;
+}
+
+std::string_view name(Integrator i) { return i == Integrator::exact ? "exact" : "course"; }
+
+std::optional<Integrator> integrator_from_name(std::string_view name) {
+  for (const Integrator i : {Integrator::course, Integrator::exact})
+    if (name == physics::name(i)) return i;
   return std::nullopt;
 }
 
@@ -71,15 +79,30 @@ SolverSettings solver_settings(const Params& p) {
 }
 }  // namespace
 
+void World::before_forces() {
+  if (params.integrator == Integrator::exact && systems.move) exact_.start(components, systems.move->entities());
+}
+
 void World::before_move(double h) {
-  if (!systems.collision) return;
-  const auto bodies = systems.collision->entities();
-  if (params.solver == Solver::automatic) return auto_before_move(bodies, h);
-  if (params.solver == Solver::stable) {
-    contact_solver.solve_velocities(components, bodies, h, params.gravity, solver_settings(params), broadphase, times);
-    record_solver_contacts();
+  const bool exact = params.integrator == Integrator::exact && systems.move;
+  if (exact) exact_.after_forces(components, systems.move->entities());
+  if (systems.collision) {
+    const auto bodies = systems.collision->entities();
+    if (params.solver == Solver::automatic) {
+      auto_before_move(bodies, h);
+    } else {
+      if (params.solver == Solver::stable) {
+        contact_solver.solve_velocities(components, bodies, h, params.gravity, solver_settings(params), broadphase,
+                                        times);
+        record_solver_contacts();
+      }
+      if (params.ccd)
+        times.time(Stage::ccd, [&] { ccd.resolve(components, bodies, h, params.gravity, broadphase, events); });
+    }
   }
-  if (params.ccd) times.time(Stage::ccd, [&] { ccd.resolve(components, bodies, h, params.gravity, broadphase, events); });
+  // Last, so that it sees which velocities the solver and CCD changed, and
+  // timed with Move, whose result it corrects.
+  if (exact) times.time(Stage::move, [&] { exact_.shift(components, systems.move->entities(), h); });
 }
 
 // The auto mode's substep (engine/auto_mode.hpp): the solver's velocities

@@ -13,6 +13,7 @@
 #include "engine/ccd.hpp"
 #include "engine/contact_solver.hpp"
 #include "engine/health.hpp"
+#include "engine/integrator.hpp"
 #include "engine/limits.hpp"
 #include "engine/pairs.hpp"
 #include "engine/timing.hpp"
@@ -28,7 +29,16 @@ inline constexpr double course_dt = 1000.0 / 60.0;  // ms, the sheet's dt
 enum class Solver : std::uint8_t { course, stable, automatic };
 // "course", "stable", "auto": the names of the scene key and the flag.
 std::string_view name(Solver s);
-std::optional<Solver> solver_named(std::string_view name);
+std::optional<Solver> solver_from_name(std::string_view name);
+
+// How a substep moves a body under a constant force. `course` is the sheet's
+// symplectic Euler (Forces: v += a·h, then Move: x += h·v) and stays the
+// default; `exact` moves it by v·h + a·h²/2, as the exact reference does
+// between events (engine/integrator.hpp).
+enum class Integrator : std::uint8_t { course, exact };
+// "course" or "exact": the one spelling of the scene key and the flag.
+std::string_view name(Integrator i);
+std::optional<Integrator> integrator_from_name(std::string_view name);
 
 struct Params {
   double dt = course_dt;    // ms per frame
@@ -37,6 +47,7 @@ struct Params {
   bool ccd = false;         // swept collision (time of impact), no tunnelling
   Solver solver = Solver::course;
   int iterations = 8;       // velocity iterations of the stable solver
+  Integrator integrator = Integrator::course;
 
   double substep() const { return dt / substeps; }  // ms: the h of one substep
 };
@@ -77,10 +88,13 @@ struct World {
   void destroy(EntityId e);
   bool alive(EntityId e) const { return e >= destroyed_.size() || destroyed_[e] == 0; }
 
-  // The engine's stages around Move in a substep of h ms (Game::step calls
-  // them; they do nothing in the course mode): before Move, the stable
-  // solver's velocities and CCD's impacts; after it, the stable solver's
-  // position projection, which replaces the course's Collision pass.
+  // The engine's stages around Forces and Move in a substep of h ms
+  // (Game::step calls them; they do nothing in the course mode): before
+  // Forces, the exact integrator's look at the velocities; before Move, the
+  // stable solver's velocities, CCD's impacts and the exact integrator's
+  // shift; after it, the stable solver's position projection, which replaces
+  // the course's Collision pass.
+  void before_forces();
   void before_move(double h);
   void after_move();
   // Whether this substep's contacts are the stable solver's (after_move),
@@ -112,6 +126,7 @@ struct World {
  private:
   void record_solver_contacts();  // before_move's, after the stable solver's velocities
   void auto_before_move(std::span<const EntityId> bodies, double h);
+  ExactIntegrator exact_;  // Params::integrator == Integrator::exact
   std::vector<std::uint8_t> destroyed_;  // by id; shorter than the arrays until a body is destroyed
 };
 

@@ -13,6 +13,7 @@ Params Mode::params(Vector gravity) const {
   p.ccd = ccd;
   p.solver = solver;
   p.iterations = iterations;
+  p.integrator = integrator;
   p.gravity = gravity;
   return p;
 }

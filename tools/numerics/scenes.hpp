@@ -24,6 +24,8 @@ struct Mode {
   // CCD cells spent 52 s of `make test` confirming a failure decided in the
   // first 1 %); `make stability` runs every cell out, to report the full count.
   bool stop_when_lost = false;
+  // Set after the others (the modes above are written positionally).
+  Integrator integrator = Integrator::course;
 
   Params params(Vector gravity = {}) const;
 };
