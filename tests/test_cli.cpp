@@ -452,7 +452,7 @@ BOOST_AUTO_TEST_CASE(bad_values_on_the_command_line) {
   expect_bad({"--gravity", "1e7,0"}, "--gravity: must be within ±1000000 per axis (got '1e7,0')");
   expect_bad({"--dt", "1e7"}, "--dt: must be <= 1000000 ms (got '1e7')");
   expect_bad({"--seed=-3"}, "--seed");
-  expect_bad({"--solver", "fast"}, "--solver: must be course or stable (got 'fast')");
+  expect_bad({"--solver", "fast"}, "--solver: must be course, stable or auto (got 'fast')");
   expect_bad({"--ccd=maybe"}, "--ccd: must be on or off");
   expect_bad({"--overlays", "aabb,boxes"}, "--overlays");
   expect_bad({"--friction", "-1"}, "--friction: must be in [0, 1000] (got '-1')");

@@ -298,7 +298,7 @@ BOOST_AUTO_TEST_CASE(wrong_types) {
   BOOST_TEST(has(error_of(R"({"world": {"substeps": "2"}})"), "world.substeps: must be an integer"));
   BOOST_TEST(has(error_of(R"({"world": {"systems": ["draw", "gravity"]}})"), "world.systems[1]: unknown system"));
   BOOST_TEST(has(error_of(R"({"world": {"systems": ["move", "move"]}})"), "listed twice"));
-  BOOST_TEST(has(error_of(R"({"world": {"solver": "fast"}})"), "world.solver: must be \"course\" or \"stable\""));
+  BOOST_TEST(has(error_of(R"({"world": {"solver": "fast"}})"), "world.solver: must be \"course\", \"stable\" or \"auto\""));
   BOOST_TEST(has(error_of(R"({"world": {"integrator": "rk4"}})"),
                  "bad.json: world.integrator: must be \"course\" or \"exact\" (got the string \"rk4\")"));
   BOOST_TEST(has(error_of(R"({"world": {"integrator": 1}})"), "world.integrator"));

@@ -2,52 +2,64 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "engine/pairs.hpp"
 
 namespace physics {
 
 bool AutoMode::plan(const Components& k, std::span<const EntityId> bodies, double h, Vector gravity) {
-  // A scene under gravity starts on the solver: its bodies may be resting
-  // on each other already, and three course passes would let a pile sink.
-  if (stats.course_substeps + stats.solver_substeps == 0 && !Vector::is_zero(gravity)) hold_left_ = hold + 1;
+  // A scene under gravity starts with a solver substep: its bodies may be
+  // resting on each other already (then after_solver holds the solver), and
+  // three course passes would let a pile sink before it was seen.
+  first_ = stats.course_substeps + stats.solver_substeps == 0 && !Vector::is_zero(gravity);
   if (hold_left_ > 0) --hold_left_;
-  const std::size_t n = k.size();
-  reach_.resize(n);
-  start_.assign(n, 0.0);
-  // Half of a body's thinnest side plus the world's thinnest: an overlap up
-  // to that is pushed out on the side it came from.
-  const auto side = [&](EntityId e) { return static_cast<double>(std::min(k.box[e].width, k.box[e].height)); };
-  double thinnest = infinity;
-  for (const EntityId e : bodies) thinnest = std::min(thinnest, side(e));
-  for (const EntityId e : bodies) reach_[e] = 0.5 * (side(e) + thinnest);
+  if (start_set_ || start_.size() != k.size()) start_.assign(k.size(), 0.0), start_set_ = false;
   mark_fast(k, bodies, h);
   // Under gravity, the solver too when bodies bounce (the course's pass
   // reflects the whole substep's kick: the e = 1 long run's energy creeps
   // up) or when a body is fast: what it lands on may be a pile, and CCD
   // alone would carry it down the pile one impact at a time, without end.
-  bool bouncy = false;
-  if (!Vector::is_zero(gravity))
-    for (const EntityId e : bodies)
-      if (std::isfinite(k.mass[e]) && k.restitution[e] > 0.0) {
-        bouncy = true;
-        break;
-      }
-  solver_path_ = hold_left_ > 0 || (!Vector::is_zero(gravity) && (bouncy || fast_count_ > 0));
+  const bool g = !Vector::is_zero(gravity);
+  solver_path_ = first_ || hold_left_ > 0 || (g && (fast_count_ > 0 || bouncy(k, bodies)));
   ++(solver_path_ ? stats.solver_substeps : stats.course_substeps);
   return solver_path_;
 }
 
-// Fast: Move's displacement, h·|v| (the velocity after Forces), exceeds the
-// body's reach.
+bool AutoMode::bouncy(const Components& k, std::span<const EntityId> bodies) {
+  return std::any_of(bodies.begin(), bodies.end(),
+                     [&](EntityId e) { return std::isfinite(k.mass[e]) && k.restitution[e] > 0.0; });
+}
+
+// Fast: Move's displacement, h·|v| (the velocity after Forces), exceeds
+// the body's reach (CcdSelection::reach): half of its thinnest side plus the
+// world's thinnest; an overlap up to that is pushed out on the side it came
+// from. Sides do not change from one substep to the next, so one pass uses
+// the last substep's thinnest and checks it, and runs again only when it
+// changed (the first substep, a thinner body added, the thinnest removed).
 void AutoMode::mark_fast(const Components& k, std::span<const EntityId> bodies, double h) {
   fast_.resize(k.size());
-  fast_count_ = 0;
-  for (const EntityId e : bodies) {
-    const Vector d = h * k.velocity[e];
-    const bool fast = Vector::dot(d, d) > reach_[e] * reach_[e];  // squared: no root per body
-    fast_[e] = fast;
-    fast_count_ += fast;
+  // Raw pointers: a byte store may alias anything, and through the vectors
+  // every iteration would load their data pointers again.
+  const Rect* box = k.box.data();
+  const Vector* velocity = k.velocity.data();
+  std::uint8_t* fast = fast_.data();
+  for (;;) {
+    const double world_thinnest = thinnest_;
+    int thinnest = std::numeric_limits<int>::max();
+    std::size_t count = 0;
+    for (const EntityId e : bodies) {
+      const int side = std::min(box[e].width, box[e].height);
+      thinnest = std::min(thinnest, side);
+      const double reach = 0.5 * (side + world_thinnest);
+      const double dx = h * velocity[e].x, dy = h * velocity[e].y;
+      const bool is_fast = dx * dx + dy * dy > reach * reach;  // squared: no root per body
+      fast[e] = is_fast;
+      count += is_fast;
+    }
+    fast_count_ = count;
+    if (static_cast<double>(thinnest) == thinnest_ || bodies.empty()) return;
+    thinnest_ = thinnest;
   }
 }
 
@@ -58,12 +70,14 @@ void AutoMode::after_solver(const Components& k, std::span<const EntityId> bodie
   for (const ContactConstraint& ct : contacts)
     if (ct.wc > 0.0 && ct.wb > 0.0 && ct.lambda + ct.lambda2 > 0.0) pressed_.push_back(Pair{ct.c, ct.b}.key());
   count_pressed();
+  if (first_ && !pressed_.empty()) hold_left_ = hold;  // a pile from the start
   // The bodies still fast after the solver's impulses are swept from their
   // impact time on: the solver's impact_time shifted each body hit before
   // touching so that its line from then on is its motion (the earliest of
   // its impacts, as there).
   mark_fast(k, bodies, h);
   if (fast_count_ == 0) return;
+  start_set_ = true;
   for (const ContactConstraint& ct : contacts) {
     if (ct.resting || !(ct.toi > 0.0)) continue;
     for (const EntityId e : {ct.c, ct.b})

@@ -64,22 +64,25 @@ class AutoMode {
 
   bool solver_path() const { return solver_path_; }
   // The bodies to sweep this substep, and how many (valid until the next plan()).
-  CcdSelection selection() { return {fast_, reach_, start_}; }
+  CcdSelection selection() { return {fast_, start_, thinnest_}; }
   std::size_t fast_count() const { return fast_count_; }
 
   AutoStats stats;
 
  private:
   void mark_fast(const Components& k, std::span<const EntityId> bodies, double h);
+  static bool bouncy(const Components& k, std::span<const EntityId> bodies);
 
   std::vector<std::uint8_t> fast_;  // by entity id
-  std::vector<double> reach_;       // by entity id, px
   std::vector<double> start_;       // by entity id, ms
   void count_pressed();
   std::vector<std::uint64_t> pressed_;  // keys of the pairs of finite bodies pressed together this substep
   std::vector<std::pair<std::uint64_t, int>> runs_, next_runs_;  // (key, substeps in a row), sorted
   int hold_left_ = 0;
   bool solver_path_ = false;
+  bool first_ = false;      // the scene's first substep, under gravity
+  bool start_set_ = false;  // start_ holds impact times (reset at the next plan())
+  double thinnest_ = -1;    // the world's thinnest side at the last plan(), px
   std::size_t fast_count_ = 0;
 };
 

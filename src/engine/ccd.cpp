@@ -122,7 +122,7 @@ void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h, V
   // Whether a body of an impact at t is swept for the rest of the substep.
   const auto swept = [&](EntityId e, double t) {
     if (!sel || sel->fast[e]) return true;
-    if (Vector::norm(k.velocity[e]) * (h - t) <= sel->reach[e]) return false;
+    if (Vector::norm(k.velocity[e]) * (h - t) <= sel->reach(k, e)) return false;
     sel->fast[e] = 1;
     return true;
   };

@@ -16,6 +16,7 @@
 // timing stay as they are.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -37,13 +38,19 @@ struct Impact {
 // from the substep's start.
 struct CcdSelection {
   // 1: swept from the start. A body hit by a swept one is swept from then
-  // on once its remaining motion, |v|·(h - t), exceeds its `reach`; below
+  // on once its remaining motion, |v|·(h - t), exceeds its reach; below
   // that the overlap it can make is left to the pass after Move.
   std::span<std::uint8_t> fast;
-  std::span<const double> reach;  // px
   // ms: the time from which the body's straight line (position + t·velocity)
   // is its motion: the stable solver's impact time, 0 for the others.
   std::span<const double> start;
+  double thinnest = 0;  // px: the thinnest side of the world's bodies
+
+  // px: half the body's thinnest side plus the world's (an overlap up to that
+  // is pushed out on the side it came from; deeper, the body tunnels).
+  double reach(const Components& k, EntityId e) const {
+    return 0.5 * (static_cast<double>(std::min(k.box[e].width, k.box[e].height)) + thinnest);
+  }
 };
 
 struct CcdStats {

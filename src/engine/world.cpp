@@ -80,11 +80,11 @@ SolverSettings solver_settings(const Params& p) {
 }  // namespace
 
 void World::before_forces() {
-  if (params.integrator == Integrator::exact && systems.move) exact_.start(components, systems.move->entities());
+  if (exact_motion() && systems.move) exact_.start(components, systems.move->entities());
 }
 
 void World::before_move(double h) {
-  const bool exact = params.integrator == Integrator::exact && systems.move;
+  const bool exact = exact_motion() && systems.move;
   if (exact) exact_.after_forces(components, systems.move->entities());
   if (systems.collision) {
     const auto bodies = systems.collision->entities();
@@ -133,8 +133,9 @@ void World::enable_events() {
 // The course pass's contacts, recorded by Collision::update.
 void World::record_contacts() {
   if (!systems.collision) return;
-  if (params.solver == Solver::automatic)
-    times.time(Stage::decide, [&] { automatic.after_course_pass(components, systems.collision->contacts()); });
+  // (Untimed: a merge of the pass's few contacts, where a clock read would
+  // cost a tenth of a small scene's step.)
+  if (params.solver == Solver::automatic) automatic.after_course_pass(components, systems.collision->contacts());
   if (!events.enabled) return;
   for (const Contact& c : systems.collision->contacts()) events.touch(c.c, c.b, c.normal, c.jn, c.jt);
 }

@@ -100,6 +100,8 @@ struct World {
   // Whether this substep's contacts are the stable solver's (after_move),
   // not the course pass's: with Solver::stable, and with Solver::automatic
   // when it chose the solver.
+  // Whether Move's motion is made exact (engine/integrator.hpp).
+  bool exact_motion() const { return params.integrator == Integrator::exact; }
   bool solver_step() const {
     return params.solver == Solver::stable || (params.solver == Solver::automatic && automatic.solver_path());
   }

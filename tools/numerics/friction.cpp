@@ -27,6 +27,7 @@ std::vector<FrictionSetting> friction_settings() {
     out.push_back({"course", label, Mode{"course", 1, false, Solver::course, 8, 1000.0 / hz}});
     out.push_back({"ccd", label, Mode{"ccd", 1, true, Solver::course, 8, 1000.0 / hz}});
     out.push_back({"stable", label, Mode{"stable", 1, false, Solver::stable, 8, 1000.0 / hz}});
+    out.push_back({"auto", label, Mode{"auto", 1, false, Solver::automatic, 8, 1000.0 / hz}});
   }
   return out;
 }

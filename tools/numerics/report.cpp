@@ -86,6 +86,11 @@ std::vector<Setting> report_settings() {
       m.integrator = Integrator::exact;
       out.push_back({m.name + " (dt)", m, fraction(m.dt)});
     }
+  // --solver auto (engine/auto_mode.hpp), over the same dt.
+  for (const double hz : {60.0, 120.0, 240.0, 480.0}) {
+    Mode m{"auto", 1, false, Solver::automatic, 8, 1000.0 / hz};
+    out.push_back({"auto (dt)", m, fraction(m.dt)});
+  }
   return out;
 }
 

@@ -91,12 +91,13 @@ double step_energy(const World& w) {
   const Components& k = w.components;
   const Vector g = w.params.gravity;
   const double h = w.params.substep();
+  const bool exact = w.exact_motion();  // then the energy kept in free flight is the plain one
   double E = 0.0;
   for (std::size_t e = 0; e < k.size(); ++e) {
     const double m = k.mass[e];
     if (!std::isfinite(m)) continue;
     const Vector v = k.velocity[e];
-    E += m * (0.5 * Vector::dot(v, v) - Vector::dot(g, k.position[e]) + 0.5 * h * Vector::dot(g, v));
+    E += m * (0.5 * Vector::dot(v, v) - Vector::dot(g, k.position[e]) + (exact ? 0.0 : 0.5 * h * Vector::dot(g, v)));
   }
   return E;
 }

@@ -50,7 +50,8 @@ double max_overlap(const World& w);
 // Finite bodies whose centre left the box [x0, x1] x [y0, y1].
 int outside(const World& w, double x0, double y0, double x1, double y1);
 // The energy the time stepping (symplectic Euler with step h = dt/substeps)
-// keeps exactly in free flight: Σ m (|v|²/2 - g·x + h g·v/2). With g = 0 it
+// keeps exactly in free flight: Σ m (|v|²/2 - g·x + h g·v/2), without the
+// last term with the exact integrator (World::exact_motion). With g = 0 it
 // is the kinetic energy. A collision law that never adds energy never makes
 // it grow.
 double step_energy(const World& w);

@@ -333,8 +333,9 @@ Outcome heavy_drop_on_stack(const Mode& m) {
 // Box2D's large_pyramid at full size (base 100: 5050 blocks of 10 px, e = 0)
 // on a fixed floor, for 60 s: the top block must not move 1 px, nothing sink
 // 1 px. A run stops as soon as its cell has failed (the figure then says
-// when), and a CCD run once it has lost its time (a failure too): the
-// 5050-block CCD pass would otherwise spend minutes confirming it.
+// when), and a CCD run at its first capped substep, counted as failed: at
+// 5050 bodies each capped substep costs minutes (80 000 impacts, each
+// predicted again against every body), and the 1 % rule would take 36.
 Outcome pyramid5050(const Mode& m) {
   World w = make_world(m, down);
   block(w, 0, 1100, 1200, 40, infinity, {}, 0.0);  // the floor
@@ -350,15 +351,16 @@ Outcome pyramid5050(const Mode& m) {
   while (f < frames && sink < max_sink && moved < max_sink) {
     Game::step(w);
     ++f;
-    if (static_cast<double>(w.ccd.stats.capped_substeps) > 0.01 * frames * w.params.substeps) break;
+    if (w.ccd.stats.capped_substeps > 0) break;
     if (f % 30 != 0 && f != frames) continue;
     if (!all_finite(w)) return nan_outcome();
     sink = std::max(sink, max_overlap(w));
     moved = Vector::norm(w.components.position[top] - start);
   }
   const std::string when = f < frames ? fmt(" (stopped at %.0f s)", f * w.params.dt / 1000.0) : std::string();
-  return finish(f == frames && sink < max_sink && moved < max_sink,
-                fmt("sink %.3g px, top moved %.3g px", sink, moved) + when, w);
+  const bool capped = w.ccd.stats.capped_substeps > 0;
+  return {f == frames && !capped && sink < max_sink && moved < max_sink,
+          fmt("sink %.3g px, top moved %.3g px", sink, moved) + when + (capped ? ", capped (time lost)" : "")};
 }
 
 // A block launched at 0.5 px/ms along the floor, friction 0.5 on both, under
@@ -550,19 +552,21 @@ bool expected_to_fail(const std::string& c, const std::string& m) {
   const auto is = [&](const char* prefix) { return c.rfind(prefix, 0) == 0; };
   if (m == "course")  // the sheet's one pass: what these options are for
     return is("light under heavy") || is("light between heavy") || is("30-block") || is("20x20") ||
-           is("120-block") || is("bullet") || is("1 px") || is("e = 1") || is("10 000") || is("1e9 block");
+           is("120-block") || is("bullet") || is("1 px") || is("e = 1") || is("10 000") || is("1e9 block") ||
+           is("5050") || is("10-block");
   if (m == "substeps16")  // smaller steps: helps at 1e3 and 10 px/ms, not beyond
     return (is("light under heavy") && c != "light under heavy 1e+03") ||
            (is("light between heavy") && c != "light between heavy 1e+03") || is("30-block") || is("20x20") ||
            c == "bullet 100 px/ms" || c == "bullet 1000 px/ms" || is("bullet 2000") || is("bullets head on") ||
-           is("10 000") || is("1e9 block");
+           is("10 000") || is("1e9 block") || is("5050") || is("10-block");
   // CCD alone has no resting contact: a body pressed on another under
   // gravity, or squeezed between two heavy ones, needs impacts without end
   // and CCD stops the scene's time when its budget runs out. (And the 10 000
   // case is not run: its discrete pass is the course's all-pairs one.)
   if (m == "ccd")
     return is("light under heavy") || (is("light between heavy") && c != "light between heavy 1e+03") ||
-           is("30-block") || is("120-block") || is("20x20") || is("e = 0") || is("10 000") || is("1e9 block");
+           is("30-block") || is("120-block") || is("20x20") || is("e = 0") || is("10 000") || is("1e9 block") ||
+           is("5050") || is("10-block");
   if (m == "stable")  // no CCD: 1.7 km per frame at 100 px/ms
     return c == "bullet 100 px/ms" || c == "bullet 1000 px/ms" || is("bullet 2000") || is("bullets head on");
   // With CCD on, impacts are CCD's: the squeeze (~π·sqrt(M/m) impacts) runs out of budget from 1e6.

@@ -1,0 +1,158 @@
+// The auto mode (--solver auto, engine/auto_mode.hpp): what it chooses and
+// what that costs. Its pass/fail on every stiff and extreme case is in the
+// stability matrix's auto column (tests/test_stability.cpp). Here:
+//  - the cost rule on the cheap cases, where the course's pass passes: auto
+//    must then be the course's pass and nothing more (no solver substep, no
+//    swept body), which the results show bit for bit. Its only extra work is
+//    its O(n) look at the bodies (the `auto` stage); wall times are measured
+//    by `make stability`, not here;
+//  - a pile takes the stable solver and gives its results bit for bit;
+//  - only fast bodies are swept.
+#include <functional>
+
+#include "helpers.hpp"
+#include "app/headless.hpp"
+#include "numerics/scenes.hpp"
+
+using namespace physics;
+using namespace physics::numerics;
+
+namespace {
+
+const Mode course_mode{"course", 1, false, Solver::course, 8};
+const Mode automatic_mode{"auto", 1, false, Solver::automatic, 8};
+const Mode stable_mode{"stable", 1, false, Solver::stable, 8};
+
+bool same_state(const World& a, const World& b) {
+  const Components &x = a.components, &y = b.components;
+  if (x.size() != y.size()) return false;
+  for (std::size_t e = 0; e < x.size(); ++e)
+    if (x.position[e] != y.position[e] || x.velocity[e] != y.velocity[e]) return false;
+  return true;
+}
+
+// The same scene built in two modes, run for `frames` frames.
+std::pair<World, World> run_both(const Mode& a, const Mode& b, Vector gravity,
+                                 const std::function<void(World&)>& build, int frames) {
+  World wa = make_world(a, gravity), wb = make_world(b, gravity);
+  build(wa);
+  build(wb);
+  for (int f = 0; f < frames; ++f) Game::step(wa), Game::step(wb);
+  return {std::move(wa), std::move(wb)};
+}
+
+struct CheapCase {
+  const char* name;
+  std::function<void(World&)> build;
+  int frames;
+};
+
+// The matrix's cases where the course passes (tools/numerics/stability.cpp),
+// built the same way, and the sheet's question-9 scene.
+std::vector<CheapCase> cheap_cases() {
+  std::vector<CheapCase> out;
+  for (const double ratio : {1e3, 1e12})
+    out.push_back({"heavy hits light", [ratio](World& w) {
+                     block(w, 100, 100, 40, 40, ratio, {0.5, 0});
+                     block(w, 300, 110, 20, 20, 1.0);
+                   }, 120});
+  out.push_back({"25 % overlap", [](World& w) {
+                   walls(w);
+                   block(w, 380, 280, 40, 40, 1.0);
+                   block(w, 410, 280, 40, 40, 1.0);
+                 }, 30});
+  out.push_back({"two co-located blocks", [](World& w) {
+                   walls(w);
+                   block(w, 380, 280, 40, 40, 1.0);
+                   block(w, 380, 280, 40, 40, 1.0);
+                 }, 30});
+  out.push_back({"corner hits", [](World& w) {
+                   walls(w);
+                   const double v = 0.6, step = v * w.params.dt;
+                   block(w, 720 - step + 5, 520 - step + 5, 40, 40, 1.0, {v, v});
+                   block(w, 100, 100, 40, 40, 2.0, {0.3, 0.3});
+                   block(w, 150, 150, 40, 40, 2.0, {-0.3, -0.3});
+                 }, 600});
+  out.push_back({"question 9, 1e7 px away", [](World& w) {
+                   Game::init_scene(w);
+                   for (auto& p : w.components.position) p = p + Vector{1e7, 1e7};
+                 }, 3000});
+  return out;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(auto_mode)
+
+BOOST_AUTO_TEST_CASE(where_the_course_passes_auto_is_the_course_pass_bit_for_bit) {
+  for (const CheapCase& c : cheap_cases()) {
+    auto [course, automatic] = run_both(course_mode, automatic_mode, {}, c.build, c.frames);
+    const AutoStats& s = automatic.automatic.stats;
+    BOOST_TEST_INFO(c.name);
+    BOOST_TEST(same_state(course, automatic));
+    BOOST_TEST(s.solver_substeps == 0);
+    BOOST_TEST(s.swept == 0);
+    BOOST_TEST(s.course_substeps == c.frames);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(a_resting_stack_takes_the_stable_solver_bit_for_bit) {
+  const auto build = [](World& w) {
+    walls(w);
+    for (int k = 0; k < 8; ++k) block(w, 390, 560.0 - 20 * (k + 1), 20, 20, 1.0, {}, 0.0);
+  };
+  auto [stable, automatic] = run_both(stable_mode, automatic_mode, {0, 0.001}, build, 600);
+  BOOST_TEST(same_state(stable, automatic));
+  BOOST_TEST(automatic.automatic.stats.solver_substeps == 600);
+  BOOST_TEST(automatic.automatic.stats.course_substeps == 0);
+}
+
+BOOST_AUTO_TEST_CASE(a_pile_switches_to_the_solver_and_back_once_it_is_gone) {
+  // No gravity: two blocks pushed against each other by a third pass, then
+  // fly apart. The pressed pair switches auto to the solver; the solver is
+  // held a while, then the course's pass resumes.
+  World w = make_world(automatic_mode);
+  walls(w);
+  const EntityId a = block(w, 100, 280, 40, 40, 1e6, {0.1, 0});
+  block(w, 200, 290, 20, 20, 1.0);
+  block(w, 300, 280, 40, 40, 1e6, {-0.1, 0});
+  for (int f = 0; f < 600; ++f) Game::step(w);
+  const AutoStats& s = w.automatic.stats;
+  BOOST_TEST(s.solver_substeps > 0);
+  BOOST_TEST(s.course_substeps > 0);
+  BOOST_TEST(w.components.velocity[a].x < 0.0);  // the heavy ones bounced apart
+}
+
+BOOST_AUTO_TEST_CASE(only_fast_bodies_are_swept_and_none_tunnels) {
+  World w = make_world(automatic_mode);
+  walls(w);
+  for (int i = 0; i < 20; ++i) block(w, 100 + 30 * i, 100, 10, 10, 1.0, {0.01, 0.02});  // 0.37 px per frame
+  const EntityId bullet = block(w, 400, 400, 4, 4, 1.0, {300.0, 0});   // 5000 px per frame
+  for (int f = 0; f < 120; ++f) {
+    Game::step(w);
+    const Vector p = w.components.position[bullet];
+    BOOST_TEST_REQUIRE((p.x > 40 && p.x < 756));  // inside the walls at every frame
+  }
+  BOOST_TEST(w.automatic.stats.swept == 120);  // the bullet, every substep; the slow ones never
+  BOOST_TEST(w.ccd.stats.impacts > 120);        // several wall hits per frame, each swept
+}
+
+BOOST_AUTO_TEST_CASE(the_headless_summary_says_what_auto_used) {
+  // One block on the floor: the first substep looks with the solver, finds
+  // no pile, and the course's pass does the rest. Two stacked: a pile.
+  World one = make_world(automatic_mode, {0, 0.001});
+  walls(one);
+  block(one, 390, 540, 20, 20, 1.0, {}, 0.0);
+  Headless::run(one, 10);
+  BOOST_TEST(Headless::auto_line(one) ==
+             "course pass 9 substeps, stable solver 1 substeps (1 contacts iterated), CCD swept 0 bodies");
+  World two = make_world(automatic_mode, {0, 0.001});
+  walls(two);
+  block(two, 390, 540, 20, 20, 1.0, {}, 0.0);
+  block(two, 390, 520, 20, 20, 1.0, {}, 0.0);
+  Headless::run(two, 10);
+  BOOST_TEST(Headless::auto_line(two) ==
+             "course pass 0 substeps, stable solver 10 substeps (20 contacts iterated), CCD swept 0 bodies");
+}
+
+BOOST_AUTO_TEST_SUITE_END()
