@@ -443,6 +443,7 @@ BOOST_AUTO_TEST_CASE(a_saved_world_runs_on_bit_for_bit) {
   check_continues(pile(Solver::stable, false, 0.6));
   check_continues(pile(Solver::course, true, 0.0));
   check_continues(pile(Solver::stable, true, 0.4));
+  check_continues(pile(Solver::automatic, false, 0.4));  // its choices' state (hold, pressed pairs) too
   // The exact integrator keeps nothing from one step to the next: a save loses nothing.
   for (const bool ccd : {false, true}) {
     SceneSpec s = pile(Solver::stable, ccd, 0.4);
@@ -465,6 +466,22 @@ BOOST_AUTO_TEST_CASE(the_stable_solvers_warm_start_is_saved) {
   World rest = make_world(saved, false);
   run(rest, 300);
   BOOST_TEST(dump(rest) != dump(whole));
+}
+
+// The auto mode's choice depends on the pairs pressed in the substeps before
+// and on its hold: both go into the file and come back as they were.
+BOOST_AUTO_TEST_CASE(the_auto_modes_state_is_saved) {
+  const SceneSpec s = pile(Solver::automatic, false, 0.6);
+  World first = make_world(s, false);
+  run(first, 300);
+  const AutoState before = first.automatic.state();
+  BOOST_TEST(before.hold > 0);
+  BOOST_TEST(!before.pressed.empty());
+  const SceneSpec saved = read_scene(to_json(Save::scene_of(first, s)), "saved.json");
+  BOOST_TEST_REQUIRE(saved.state->automatic.has_value());
+  BOOST_TEST((*saved.state->automatic == before));  // no body destroyed: the same ids
+  World rest = make_world(saved, false);
+  BOOST_TEST((rest.automatic.state() == before));
 }
 
 BOOST_AUTO_TEST_CASE(destroyed_bodies_are_left_out_and_the_others_keep_their_order) {
@@ -535,6 +552,13 @@ BOOST_AUTO_TEST_CASE(bad_values_are_named) {
   BOOST_TEST(error_of(R"({"world": {"friction": 2000}})") == "bad.json: world.friction: must be in [0, 1000] (got 2000)");
   BOOST_TEST(error_of(R"({"state": {"warm_start": [[3, 2, 0, 1, 0]]}})") ==
              "bad.json: state.warm_start[0]: must name two bodies c < b < 4 (got 3, 2)");
+}
+
+BOOST_AUTO_TEST_CASE(a_bad_auto_state_is_named) {
+  BOOST_TEST(error_of(R"({"world": {"solver": "auto"}, "state": {"auto": {"hold": 99}}})") ==
+             "bad.json: state.auto.hold: must be an integer in [0, 30] (got 99)");
+  BOOST_TEST(error_of(R"({"world": {"solver": "auto"}, "state": {"auto": {"pressed": [[2, 1, 3]]}}})") ==
+             "bad.json: state.auto.pressed[0]: must name two bodies c < b < 4 (got 2, 1)");
 }
 
 BOOST_AUTO_TEST_SUITE_END()

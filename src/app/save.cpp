@@ -50,6 +50,12 @@ SceneSpec scene_of(const World& w, const SceneSpec& from) {
     imp.pair = {new_id[imp.pair.c], new_id[imp.pair.b]};
     state.warm_start.push_back(imp);
   }
+  if (w.params.solver == Solver::automatic) {
+    AutoState a = w.automatic.state();
+    std::erase_if(a.pressed, [&](const AutoState::Run& r) { return !w.alive(r.pair.c) || !w.alive(r.pair.b); });
+    for (AutoState::Run& r : a.pressed) r.pair = {new_id[r.pair.c], new_id[r.pair.b]};
+    state.automatic = a;
+  }
   s.state = state;
   return s;
 }

@@ -131,6 +131,18 @@ void check_state(const Checker& k, const SceneSpec& s) {
     if (!(std::isfinite(w.jn) && w.jn > 0.0 && std::isfinite(w.jt)))
       k.fail(at, "impulses must be finite, the normal one > 0 (got " + num(w.jn) + ", " + num(w.jt) + ")");
   }
+  if (!s.state->automatic) return;
+  const AutoState& a = *s.state->automatic;
+  if (a.hold < 0 || a.hold > AutoMode::hold)
+    k.fail("state.auto.hold", "must be in [0, " + std::to_string(AutoMode::hold) + "] (got " + std::to_string(a.hold) + ")");
+  for (std::size_t i = 0; i < a.pressed.size(); ++i) {
+    const AutoState::Run& r = a.pressed[i];
+    const std::string at = "state.auto.pressed[" + std::to_string(i) + "]";
+    if (!(r.pair.c < r.pair.b && r.pair.b < bodies))
+      k.fail(at, "must name two bodies c < b < " + std::to_string(bodies) + " (got " + std::to_string(r.pair.c) +
+                     ", " + std::to_string(r.pair.b) + ")");
+    if (r.substeps < 1) k.fail(at, "substeps in a row must be >= 1 (got " + std::to_string(r.substeps) + ")");
+  }
 }
 
 void check_random(const Checker& k, const RandomSpec& r, const std::string& p) {
@@ -432,6 +444,7 @@ void populate(World& w, const SceneSpec& s, const std::vector<Body>& bodies) {
   if (s.state) {
     w.frame = s.state->frame;
     w.contact_solver.restore(s.state->warm_start);
+    if (s.state->automatic) w.automatic.restore(*s.state->automatic);
   }
 }
 

@@ -129,6 +129,7 @@ using BlockEntry = std::variant<BlockSpec, GridSpec, RandomSpec>;
 struct SavedState {
   std::int64_t frame = 0;
   std::vector<WarmImpulse> warm_start;
+  std::optional<AutoState> automatic;  // with solver "auto": its choice's state (key "auto")
   friend bool operator==(const SavedState&, const SavedState&) = default;
 };
 

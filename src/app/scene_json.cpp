@@ -796,10 +796,30 @@ RandomSpec read_random(const Reader& r, const json& g, const Path& p) {
   return out;
 }
 
-// A saved world's "state": {"frame": n, "warm_start": [[c, b, axis, jn, jt], ...]}.
+// The auto mode's state: {"hold": n, "pressed": [[c, b, substeps], ...]}.
+AutoState read_auto_state(const Reader& r, const json& v) {
+  r.keys(v, "state.auto", {"hold", "pressed"});
+  AutoState out;
+  if (const json* h = find(v, "hold")) out.hold = static_cast<int>(r.integer(*h, "state.auto.hold", 0, AutoMode::hold));
+  const json* pressed = find(v, "pressed");
+  if (!pressed) return out;
+  if (!pressed->is_array()) r.fail("state.auto.pressed", "must be an array (got " + r.got(*pressed) + ")");
+  const Path list = "state.auto.pressed";
+  for (std::size_t i = 0; i < pressed->size(); ++i) {
+    const json& e = (*pressed)[i];
+    const Path p(list, i);
+    if (!e.is_array() || e.size() != 3) r.fail(p, "must be [c, b, substeps] (got " + r.got(e) + ")");
+    const auto id = [&](std::size_t k) { return static_cast<EntityId>(r.integer(e[k], p, 0, max_bodies + 4)); };
+    out.pressed.push_back({{id(0), id(1)}, static_cast<int>(r.integer(e[2], p, 1, 1 << 30))});
+  }
+  return out;
+}
+
+// A saved world's "state": {"frame": n, "warm_start": [[c, b, axis, jn, jt], ...], "auto": {...}}.
 SavedState read_state(const Reader& r, const json& v) {
-  r.keys(v, "state", {"frame", "warm_start"});
+  r.keys(v, "state", {"frame", "warm_start", "auto"});
   SavedState out;
+  if (const json* a = find(v, "auto")) out.automatic = read_auto_state(r, *a);
   if (const json* f = find(v, "frame")) out.frame = r.integer(*f, "state.frame", 0, std::int64_t{1} << 53);
   const json* warm = find(v, "warm_start");
   if (!warm) return out;
@@ -1087,6 +1107,11 @@ std::string to_json(const SceneSpec& s) {
     ojson warm = ojson::array();
     for (const WarmImpulse& w : s.state->warm_start) warm.push_back({w.pair.c, w.pair.b, w.axis, w.jn, w.jt});
     o["state"] = {{"frame", s.state->frame}, {"warm_start", warm}};
+    if (s.state->automatic) {
+      ojson pressed = ojson::array();
+      for (const AutoState::Run& r : s.state->automatic->pressed) pressed.push_back({r.pair.c, r.pair.b, r.substeps});
+      o["state"]["auto"] = {{"hold", s.state->automatic->hold}, {"pressed", pressed}};
+    }
   }
   std::string out;
   write_pretty(o, 0, out);

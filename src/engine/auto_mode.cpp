@@ -12,7 +12,8 @@ bool AutoMode::plan(const Components& k, std::span<const EntityId> bodies, doubl
   // A scene under gravity starts with a solver substep: its bodies may be
   // resting on each other already (then after_solver holds the solver), and
   // three course passes would let a pile sink before it was seen.
-  first_ = stats.course_substeps + stats.solver_substeps == 0 && !Vector::is_zero(gravity);
+  first_ = !started_ && !Vector::is_zero(gravity);
+  started_ = true;
   if (hold_left_ > 0) --hold_left_;
   if (start_set_ || start_.size() != k.size()) start_.assign(k.size(), 0.0), start_set_ = false;
   mark_fast(k, bodies, h);
@@ -108,6 +109,22 @@ void AutoMode::count_pressed() {
     if (run >= persist) hold_left_ = hold;
   }
   std::swap(runs_, next_runs_);
+}
+
+AutoState AutoMode::state() const {
+  AutoState s;
+  s.hold = hold_left_;
+  for (const auto& [key, run] : runs_)
+    s.pressed.push_back({{static_cast<EntityId>(key >> 32), static_cast<EntityId>(key & 0xFFFFFFFFu)}, run});
+  return s;
+}
+
+void AutoMode::restore(const AutoState& s) {
+  hold_left_ = s.hold;
+  runs_.clear();
+  for (const AutoState::Run& r : s.pressed) runs_.emplace_back(r.pair.key(), r.substeps);
+  std::sort(runs_.begin(), runs_.end());
+  started_ = true;
 }
 
 }  // namespace physics

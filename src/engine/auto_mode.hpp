@@ -36,6 +36,20 @@
 
 namespace physics {
 
+// What the next substep's choice depends on beyond the bodies: the pairs
+// pressed together in the substeps just before and the solver's hold (a
+// saved world keeps it, so that it runs on bit for bit).
+struct AutoState {
+  struct Run {
+    Pair pair;
+    int substeps;  // in a row, up to now
+    friend bool operator==(const Run&, const Run&) = default;
+  };
+  int hold = 0;  // substeps the solver is still held for
+  std::vector<Run> pressed;
+  friend bool operator==(const AutoState&, const AutoState&) = default;
+};
+
 struct AutoStats {
   std::int64_t course_substeps = 0;  // substeps resolved by the course's pass
   std::int64_t solver_substeps = 0;  // substeps resolved by the stable solver
@@ -62,6 +76,11 @@ class AutoMode {
   // resolved by the pass before too (switches to the solver).
   void after_course_pass(const Components& k, std::span<const Contact> contacts);
 
+  // The state a saved world keeps; restore() also marks the world as
+  // started (no first-substep look with the solver).
+  AutoState state() const;
+  void restore(const AutoState& s);
+
   bool solver_path() const { return solver_path_; }
   // The bodies to sweep this substep, and how many (valid until the next plan()).
   CcdSelection selection() { return {fast_, start_, thinnest_}; }
@@ -81,6 +100,7 @@ class AutoMode {
   int hold_left_ = 0;
   bool solver_path_ = false;
   bool first_ = false;      // the scene's first substep, under gravity
+  bool started_ = false;    // a substep was planned (or a saved state restored)
   bool start_set_ = false;  // start_ holds impact times (reset at the next plan())
   double thinnest_ = -1;    // the world's thinnest side at the last plan(), px
   std::size_t fast_count_ = 0;
