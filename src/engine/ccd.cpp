@@ -93,88 +93,116 @@ std::optional<Impact> Ccd::time_of_impact(const Components& k, EntityId c, Entit
   return Impact{t0, n};
 }
 
+namespace {
+
+// One substep's predicted impacts, in time order, with what predicting them
+// needs: each entity's registration index, and a version per body (an event
+// predicted before one of its bodies changed velocity is stale).
+class ImpactQueue {
+ public:
+  ImpactQueue(Components& k, std::span<const EntityId> entities, double h, const CcdSelection* sel)
+      : k_(k), entities_(entities), h_(h), sel_(sel), index_(k.size(), 0), version_(entities.size(), 0) {
+    for (std::size_t i = 0; i < entities.size(); ++i) index_[entities[i]] = static_cast<std::uint32_t>(i);
+  }
+
+  void predict(Pair p) { predict(index_[p.c], index_[p.b], 0.0); }
+
+  // The earliest valid event, or none when the queue is empty.
+  std::optional<Event> next() {
+    while (!queue_.empty()) {
+      const Event ev = queue_.top();
+      queue_.pop();
+      if (ev.vc == version_[ev.ic] && ev.vb == version_[ev.ib]) return ev;
+    }
+    return std::nullopt;
+  }
+
+  // After an impact, the impacts of its swept bodies c and b with
+  // everything again (not only the candidates, whose sweeps assumed the old
+  // velocities). With contact rules, only with the bodies the broad phase
+  // would pair them with (its pairs are filtered already): a compile-time
+  // switch, so the loop without rules tests nothing more.
+  template <bool with_rules>
+  void predict_again(const Event& ev) {
+    ++version_[ev.ic];  // both bodies changed course
+    ++version_[ev.ib];
+    const EntityId c = entities_[ev.ic], b = entities_[ev.ib];
+    const bool c_fixed = !std::isfinite(k_.mass[c]), b_fixed = !std::isfinite(k_.mass[b]);
+    const bool again_c = swept(c, ev.t), again_b = swept(b, ev.t);
+    for (std::uint32_t j = 0; j < entities_.size(); ++j) {
+      const bool j_fixed = !std::isfinite(k_.mass[entities_[j]]);
+      if (again_c && j != ev.ic && !(c_fixed && j_fixed) && (!with_rules || solvable(k_, c, entities_[j], h_)))
+        predict(ev.ic, j, ev.t);
+      if (again_b && j != ev.ib && !(again_c && j == ev.ic) && !(b_fixed && j_fixed) &&
+          (!with_rules || solvable(k_, b, entities_[j], h_)))
+        predict(ev.ib, j, ev.t);
+    }
+  }
+
+ private:
+  void predict(std::uint32_t ic, std::uint32_t ib, double t0) {
+    if (ic > ib) std::swap(ic, ib);
+    // A selected body's line holds from its start time on (before it, the
+    // line is the one the solver's impact shifted, not the path).
+    if (sel_) t0 = std::max({t0, sel_->start[entities_[ic]], sel_->start[entities_[ib]]});
+    if (const auto hit = Ccd::time_of_impact(k_, entities_[ic], entities_[ib], t0, h_))
+      queue_.push(Event{hit->t, ic, ib, version_[ic], version_[ib]});
+  }
+  // Whether a body of an impact at t is swept for the rest of the substep.
+  bool swept(EntityId e, double t) {
+    if (!sel_ || sel_->fast[e]) return true;
+    if (Vector::norm(k_.velocity[e]) * (h_ - t) <= sel_->reach(k_, e)) return false;
+    sel_->fast[e] = 1;
+    return true;
+  }
+
+  Components& k_;
+  std::span<const EntityId> entities_;
+  double h_;
+  const CcdSelection* sel_;
+  std::vector<std::uint32_t> index_;
+  std::vector<std::uint32_t> version_;
+  std::priority_queue<Event, std::vector<Event>, Later> queue_;
+};
+
+}  // namespace
+
 void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h, Vector gravity,
                   BroadPhase& broadphase, ContactEvents& events, const CcdSelection* sel) {
-  const std::size_t count = entities.size();
-  if (count < 2) return;
+  if (entities.size() < 2) return;
   if (sel)
     broadphase.find_selected(k, entities, sel->fast, h, pairs_);
   else
     broadphase.find(k, entities, h, 0.0, pairs_);
   if (pairs_.empty()) return;
-
-  // Registration index of each entity, and a version per body: an event
-  // predicted before one of its bodies changed velocity is stale.
-  std::vector<std::uint32_t> index(k.size(), 0);
-  for (std::size_t i = 0; i < count; ++i) index[entities[i]] = static_cast<std::uint32_t>(i);
-  std::vector<std::uint32_t> version(count, 0);
-  std::priority_queue<Event, std::vector<Event>, Later> queue;
-
-  const auto predict = [&](std::uint32_t ic, std::uint32_t ib, double t0) {
-    if (ic > ib) std::swap(ic, ib);
-    // A selected body's line holds from its start time on (before it, the
-    // line is the one the solver's impact shifted, not the path).
-    if (sel) t0 = std::max({t0, sel->start[entities[ic]], sel->start[entities[ib]]});
-    if (const auto hit = time_of_impact(k, entities[ic], entities[ib], t0, h))
-      queue.push(Event{hit->t, ic, ib, version[ic], version[ib]});
-  };
-  for (const Pair& p : pairs_) predict(index[p.c], index[p.b], 0.0);
-  // Whether a body of an impact at t is swept for the rest of the substep.
-  const auto swept = [&](EntityId e, double t) {
-    if (!sel || sel->fast[e]) return true;
-    if (Vector::norm(k.velocity[e]) * (h - t) <= sel->reach(k, e)) return false;
-    sel->fast[e] = 1;
-    return true;
-  };
-  // After an impact, the impacts of its swept bodies c and b with everything
-  // again (not only the candidates, whose sweeps assumed the old velocities).
-  // With contact rules, only with the bodies the broad phase would pair them
-  // with (its pairs above are filtered already): a compile-time switch, so
-  // the loop without rules tests nothing more.
-  const auto predict_again = [&]<bool with_rules>(const Event& ev, EntityId c, EntityId b) {
-    const bool c_fixed = !std::isfinite(k.mass[c]), b_fixed = !std::isfinite(k.mass[b]);
-    const bool again_c = swept(c, ev.t), again_b = swept(b, ev.t);
-    for (std::uint32_t j = 0; j < count; ++j) {
-      const bool j_fixed = !std::isfinite(k.mass[entities[j]]);
-      if (again_c && j != ev.ic && !(c_fixed && j_fixed) && (!with_rules || solvable(k, c, entities[j], h)))
-        predict(ev.ic, j, ev.t);
-      if (again_b && j != ev.ib && !(again_c && j == ev.ic) && !(b_fixed && j_fixed) &&
-          (!with_rules || solvable(k, b, entities[j], h)))
-        predict(ev.ib, j, ev.t);
-    }
-  };
+  ImpactQueue queue(k, entities, h, sel);
+  for (const Pair& p : pairs_) queue.predict(p);
   const bool rules = k.any_rules();
-  const std::int64_t budget = 16 * static_cast<std::int64_t>(count) + 128;
+  const std::int64_t budget = 16 * static_cast<std::int64_t>(entities.size()) + 128;
   std::int64_t resolved = 0;
-  while (!queue.empty()) {
-    const Event ev = queue.top();
-    queue.pop();
-    if (ev.vc != version[ev.ic] || ev.vb != version[ev.ib]) continue;
+  while (const auto ev = queue.next()) {
     if (resolved == budget) {
       // Out of budget: stop every body where it is at this event's time for
       // the rest of the substep (Move will bring it exactly there). Nothing
       // passes through anything and no impulse is invented; the price is
       // that the scene loses h - t of motion in this substep.
       ++stats.capped_substeps;
-      for (const EntityId e : entities) k.position[e] = k.position[e] + (ev.t - h) * k.velocity[e];
+      for (const EntityId e : entities) k.position[e] = k.position[e] + (ev->t - h) * k.velocity[e];
       break;
     }
-    const EntityId c = entities[ev.ic], b = entities[ev.ib];
+    const EntityId c = entities[ev->ic], b = entities[ev->ib];
     // Predicted with these very velocities, so it still holds; recompute the
     // normal at the event's time (the function is deterministic).
-    const auto hit = time_of_impact(k, c, b, ev.t, h);
-    if (!hit || hit->t != ev.t) continue;
-    const auto [jn, jt] = impact(k, c, b, hit->n, ev.t, h, gravity);
+    const auto hit = time_of_impact(k, c, b, ev->t, h);
+    if (!hit || hit->t != ev->t) continue;
+    const auto [jn, jt] = impact(k, c, b, hit->n, ev->t, h, gravity);
     events.touch(c, b, hit->n, jn, jt);
     ++resolved;
     ++stats.impacts;
-    // Both bodies changed course.
-    ++version[ev.ic];
-    ++version[ev.ib];
     if (rules)
-      predict_again.template operator()<true>(ev, c, b);
+      queue.predict_again<true>(*ev);
     else
-      predict_again.template operator()<false>(ev, c, b);
+      queue.predict_again<false>(*ev);
   }
 }
 
