@@ -22,7 +22,7 @@ bool AutoMode::plan(const Components& k, std::span<const EntityId> bodies, doubl
   // up) or when a body is fast: what it lands on may be a pile, and CCD
   // alone would carry it down the pile one impact at a time, without end.
   const bool g = !Vector::is_zero(gravity);
-  solver_path_ = first_ || hold_left_ > 0 || (g && (fast_count_ > 0 || bouncy(k, bodies)));
+  solver_path_ = first_ || hold_left_ > 0 || fast_count_ > many_fast || (g && (fast_count_ > 0 || bouncy(k, bodies)));
   ++(solver_path_ ? stats.solver_substeps : stats.course_substeps);
   return solver_path_;
 }
@@ -72,17 +72,27 @@ void AutoMode::after_solver(const Components& k, std::span<const EntityId> bodie
     if (ct.wc > 0.0 && ct.wb > 0.0 && ct.lambda + ct.lambda2 > 0.0) pressed_.push_back(Pair{ct.c, ct.b}.key());
   count_pressed();
   if (first_ && !pressed_.empty()) hold_left_ = hold;  // a pile from the start
-  // The bodies still fast after the solver's impulses are swept from their
-  // impact time on: the solver's impact_time shifted each body hit before
-  // touching so that its line from then on is its motion (the earliest of
-  // its impacts, as there).
+  // The solver's contacts were found along each body's whole swept path
+  // (speculative), so its first impact is taken already: only a body that
+  // had one and is still fast may meet something else within the substep.
+  // It is swept from its impact time on (the solver's impact_time shifted it
+  // so that its line from then on is its motion; the earliest of its
+  // impacts, as there).
   mark_fast(k, bodies, h);
   if (fast_count_ == 0) return;
-  start_set_ = true;
+  impacted_.assign(k.size(), 0);
   for (const ContactConstraint& ct : contacts) {
-    if (ct.resting || !(ct.toi > 0.0)) continue;
+    if (ct.resting) continue;
+    impacted_[ct.c] = impacted_[ct.b] = 1;
+    if (!(ct.toi > 0.0)) continue;
     for (const EntityId e : {ct.c, ct.b})
       if (std::isfinite(k.mass[e])) start_[e] = start_[e] == 0.0 ? ct.toi : std::min(start_[e], ct.toi);
+  }
+  start_set_ = true;
+  fast_count_ = 0;
+  for (const EntityId e : bodies) {
+    fast_[e] = fast_[e] && impacted_[e];
+    fast_count_ += fast_[e];
   }
 }
 

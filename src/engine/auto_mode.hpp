@@ -64,6 +64,10 @@ class AutoMode {
   // Substeps in a row a pair of finite bodies must be pressed together
   // (an impulse between them) to count as a persistent contact.
   static constexpr int persist = 3;
+  // More fast bodies than this take the solver's path: its speculative
+  // contacts take each one's first impact at the cost of one broad phase,
+  // and CCD then sweeps only those that had one.
+  static constexpr std::size_t many_fast = 16;
 
   // Before the substep's velocities: which path it takes (true: the stable
   // solver) and which bodies are fast, from the velocities after Forces.
@@ -94,6 +98,7 @@ class AutoMode {
 
   std::vector<std::uint8_t> fast_;  // by entity id
   std::vector<double> start_;       // by entity id, ms
+  std::vector<std::uint8_t> impacted_;  // by entity id: had an impact in the solver this substep
   void count_pressed();
   std::vector<std::uint64_t> pressed_;  // keys of the pairs of finite bodies pressed together this substep
   std::vector<std::pair<std::uint64_t, int>> runs_, next_runs_;  // (key, substeps in a row), sorted

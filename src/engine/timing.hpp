@@ -22,10 +22,9 @@ enum class Stage : std::uint8_t {
   impact_time,  // stable solver: impacts moved to their time in the substep
   store,        // stable solver: impulses kept for the next warm start
   positions,    // stable solver: overlaps projected apart after Move
-  decide,       // the auto mode: which path, which bodies are fast (engine/auto_mode.hpp)
   health,       // the checks after the step (engine/health.hpp)
 };
-inline constexpr std::size_t stage_count = 14;
+inline constexpr std::size_t stage_count = 13;
 std::string_view name(Stage s);
 
 struct StageTimes {

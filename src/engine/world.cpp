@@ -44,7 +44,7 @@ std::optional<Integrator> integrator_from_name(std::string_view name) {
 std::string_view name(Stage s) {
   static constexpr std::string_view names[stage_count] = {
       "forces", "move", "collision", "pairs", "ccd", "prepare", "warm_start", "relax", "restitution", "impact_time",
-      "store", "positions", "auto", "health"};
+      "store", "positions", "health"};
   return names[static_cast<std::size_t>(s)];
 }
 
@@ -110,14 +110,14 @@ void World::before_move(double h) {
 // fast after them), then CCD for the fast bodies.
 void World::auto_before_move(std::span<const EntityId> bodies, double h) {
   systems.collision->record_contacts = true;  // the pass's contacts tell auto whether they persist
-  bool solver = false;
-  times.time(Stage::decide, [&] { solver = automatic.plan(components, bodies, h, params.gravity); });
-  if (solver) {
+  // The choice is not timed: two clock reads would cost a tenth of a small
+  // scene's step, more than the choice itself (an O(n) look at velocities).
+  if (automatic.plan(components, bodies, h, params.gravity)) {
     SolverSettings s = solver_settings(params);
     s.impacts = true;
     contact_solver.solve_velocities(components, bodies, h, params.gravity, s, broadphase, times);
     record_solver_contacts();
-    times.time(Stage::decide, [&] { automatic.after_solver(components, bodies, contact_solver.constraints(), h); });
+    automatic.after_solver(components, bodies, contact_solver.constraints(), h);
   }
   if (automatic.fast_count() == 0) return;
   automatic.stats.swept += static_cast<std::int64_t>(automatic.fast_count());
@@ -133,8 +133,6 @@ void World::enable_events() {
 // The course pass's contacts, recorded by Collision::update.
 void World::record_contacts() {
   if (!systems.collision) return;
-  // (Untimed: a merge of the pass's few contacts, where a clock read would
-  // cost a tenth of a small scene's step.)
   if (params.solver == Solver::automatic) automatic.after_course_pass(components, systems.collision->contacts());
   if (!events.enabled) return;
   for (const Contact& c : systems.collision->contacts()) events.touch(c.c, c.b, c.normal, c.jn, c.jt);
