@@ -134,6 +134,17 @@ std::string exact_reading(const Families& fam) {
   return o.str();
 }
 
+// The auto mode's sentence: its error and cost at the sheet's dt, beside the course's.
+std::string auto_reading(const Families& fam) {
+  const Row* a60 = find_row(fam, "auto (dt)", "dt=1000/60");
+  const Row* c60 = find_row(fam, "course (dt)", "dt=1000/60");
+  if (!a60 || !c60) return "";
+  std::ostringstream o;
+  o << "Auto at dt = 1000/60: " << num(a60->err.pos_rms) << " px for " << num(a60->cost / c60->cost, 2)
+    << "x the course's cost. ";
+  return o.str();
+}
+
 // One paragraph per scenario, from the numbers.
 std::string reading(const std::vector<const Row*>& rows) {
   Families fam;
@@ -162,7 +173,7 @@ std::string reading(const std::vector<const Row*>& rows) {
     o << "At dt = 1000/60: ccd " << num(ccd1->err.pos_rms) << " px (" << num(ccd1->cost) << " ms/s), stable (8 it.) "
       << num(st8->err.pos_rms) << " px (" << num(st8->cost) << " ms/s), stable+ccd " << num(sc1->err.pos_rms) << " px ("
       << num(sc1->cost) << " ms/s). ";
-  o << exact_reading(fam);
+  o << exact_reading(fam) << auto_reading(fam);
   const Row* best = nullptr;
   for (const Row* r : rows)
     if (!best || r->err.pos_rms < best->err.pos_rms ||
@@ -303,7 +314,7 @@ void write_plot_data(const std::string& path, const std::vector<Row>& rows, cons
 
 constexpr const char* styles[] = {"lc rgb '#1f77b4' pt 7", "lc rgb '#ff7f0e' pt 5", "lc rgb '#2ca02c' pt 9",
                                   "lc rgb '#d62728' pt 11", "lc rgb '#9467bd' pt 13", "lc rgb '#8c564b' pt 4",
-                                  "lc rgb '#e377c2' pt 6"};
+                                  "lc rgb '#e377c2' pt 6", "lc rgb '#000000' pt 3"};
 constexpr std::size_t style_count = std::size(styles);
 
 void write_plot_script(const std::string& path, const std::string& dir, const std::string& work,
