@@ -141,7 +141,6 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
 // separating axis, or will be within this substep (speculative).
 void ContactSolver::prepare(const Components& k, double h, Vector g, const SolverSettings& s) {
   contacts_.clear();
-  have_order_ = false;
   // Slower than the speed gravity gives in two substeps: a resting contact,
   // not an impact, so no bounce (otherwise a block on the floor would hop).
   const double threshold = 2.0 * Vector::norm(g) * h + 1e-12;
@@ -173,6 +172,7 @@ void ContactSolver::prepare(const Components& k, double h, Vector g, const Solve
   }
   stats.contacts += static_cast<std::int64_t>(contacts_.size());
   prepare_friction(k);
+  schedule(k, g);
   // Velocities before any impulse, for the energy guard and the impact time.
   v_start_.resize(k.size());
   v_inelastic_.resize(k.size());
@@ -222,10 +222,12 @@ void ContactSolver::relax(Components& k, Vector g, const SolverSettings& s) {
   for (ContactConstraint& ct : contacts_) ct.lambda2 = 0.0;
   for (FrictionRow& f : friction_) f.lambda2 = 0.0;
   const auto target = [&](const ContactConstraint& ct) { return after_bounce && !ct.resting ? 0.0 : ct.target; };
+  load_rows<after_bounce>(k);
   if (friction_.empty())
-    iterate<after_bounce, false>(k, s);
+    iterate<false>(s);
   else
-    iterate<after_bounce, true>(k, s);
+    iterate<true>(s);
+  store_rows<after_bounce>(k);
   if (!s.shock_propagation || Vector::is_zero(g)) return;
   if (!have_order_) support_order_ = bottom_up(k, contacts_, g), have_order_ = true;
   for (const std::size_t i : support_order_) {
@@ -242,31 +244,133 @@ void ContactSolver::relax(Components& k, Vector g, const SolverSettings& s) {
   }
 }
 
-// Sequential impulses with accumulated clamping: the normal impulse never
-// pulls; with friction, the tangential one then stays within mu times the
-// normal impulse accumulated so far (Coulomb's cone, as Box2D clamps it).
-// `friction` is a compile-time constant: the frictionless loop is the one
-// that ran before friction existed.
-template <bool after_bounce, bool friction>
-void ContactSolver::iterate(Components& k, const SolverSettings& s) {
-  const auto target = [&](const ContactConstraint& ct) { return after_bounce && !ct.resting ? 0.0 : ct.target; };
+// The iterations' order (order_) and the bodies' slots. Each contact reads
+// and changes its two bodies' velocities only, so any order that keeps, for
+// every body, the order of its contacts gives the same bits as the given
+// one (by pair). In the given order nearly every contact shares a body with
+// the one before it (a body's contacts come together, and its last one
+// shares a body with the next body's first), so each waits for the one
+// before it to store its velocities. Here, within chunks of contacts (few
+// enough bodies to stay in cache), contacts are sorted by level: one more
+// than the highest level of the earlier contacts of their bodies. The
+// contacts of a level share no body, and the processor overlaps them.
+// A fixed body links nothing: its contacts add (0·j)·n to its velocity,
+// which leaves it as it is unless a component is -0 (then it links).
+void ContactSolver::schedule(const Components& k, Vector g) {
+  const auto links = [&](EntityId e) {
+    const Vector v = k.velocity[e];
+    return std::isfinite(k.mass[e]) || (v.x == 0.0 && std::signbit(v.x)) || (v.y == 0.0 && std::signbit(v.y));
+  };
+  // All this (and the support order) depends only on the contacts' bodies,
+  // axes and links, and on gravity's direction: a resting pile keeps them
+  // from substep to substep.
+  topology_next_.clear();
+  for (const ContactConstraint& ct : contacts_) {
+    const std::uint32_t flags = static_cast<std::uint32_t>(ct.axis) | (ct.wc == 0.0) << 2 | (ct.wb == 0.0) << 3 |
+                                links(ct.c) << 4 | links(ct.b) << 5;
+    topology_next_.push_back({ct.c, ct.b, flags});
+  }
+  topology_.swap(topology_next_);
+  if (scheduled_ && g == topology_g_ && topology_ == topology_next_) return;
+  scheduled_ = true, have_order_ = false;
+  topology_g_ = g;
+  for (const EntityId e : slot_body_)
+    if (e < slot_of_.size()) slot_of_[e] = none;
+  slot_of_.resize(k.size(), none);
+  slot_body_.clear();
+  for (const ContactConstraint& ct : contacts_)
+    for (const EntityId e : {ct.c, ct.b})
+      if (slot_of_[e] == none) slot_of_[e] = static_cast<std::uint32_t>(slot_body_.size()), slot_body_.push_back(e);
+  constexpr std::size_t chunk = 4096;
+  const std::size_t n = contacts_.size();
+  last_level_.assign(slot_body_.size(), 0);  // per slot: the level after its last contact's, in this chunk
+  level_.resize(n);
+  order_.resize(n);
+  for (std::size_t start = 0; start < n; start += chunk) {
+    const std::size_t end = std::min(n, start + chunk);
+    std::uint32_t levels = 0;
+    for (std::size_t i = start; i < end; ++i) {
+      const ContactConstraint& ct = contacts_[i];
+      const bool lc = topology_[i].flags >> 4 & 1, lb = topology_[i].flags >> 5 & 1;
+      std::uint32_t& nc = last_level_[slot_of_[ct.c]];
+      std::uint32_t& nb = last_level_[slot_of_[ct.b]];
+      const std::uint32_t level = std::max(lc ? nc : 0, lb ? nb : 0);
+      if (lc) nc = level + 1;
+      if (lb) nb = level + 1;
+      level_[i] = level, levels = std::max(levels, level + 1);
+    }
+    // Stable counting sort of the chunk by level; then the chunk's bodies start again at 0.
+    level_count_.assign(levels + 1, 0);
+    for (std::size_t i = start; i < end; ++i) ++level_count_[level_[i] + 1];
+    for (std::size_t l = 1; l <= levels; ++l) level_count_[l] += level_count_[l - 1];
+    for (std::size_t i = start; i < end; ++i) order_[start + level_count_[level_[i]]++] = static_cast<std::uint32_t>(i);
+    for (std::size_t i = start; i < end; ++i) last_level_[slot_of_[contacts_[i].c]] = last_level_[slot_of_[contacts_[i].b]] = 0;
+  }
+}
+
+// The hot copies for a relaxation: the bodies' velocities and inverse
+// masses by slot, the contacts in order_ with the relaxation's targets and
+// accumulators (`after_bounce`: lambda2, no approach allowed at the impacts).
+template <bool after_bounce>
+void ContactSolver::load_rows(const Components& k) {
+  solver_bodies_.resize(slot_body_.size());
+  for (std::size_t i = 0; i < slot_body_.size(); ++i) {
+    const EntityId e = slot_body_[i];
+    solver_bodies_[i] = {k.velocity[e], inverse_mass(k.mass[e])};
+  }
+  rows_.resize(order_.size());
+  for (std::size_t i = 0; i < order_.size(); ++i) {
+    const ContactConstraint& ct = contacts_[order_[i]];
+    const double target = after_bounce && !ct.resting ? 0.0 : ct.target;
+    rows_[i] = {slot_of_[ct.c], slot_of_[ct.b], static_cast<std::uint32_t>(ct.axis), ct.inv_w, target,
+                after_bounce ? ct.lambda2 : ct.lambda};
+  }
+  friction_rows_.resize(friction_.size());
+  for (std::size_t i = 0; i < friction_.size(); ++i) {
+    const FrictionRow& f = friction_[order_[i]];
+    friction_rows_[i] = {f.mu, after_bounce ? f.lambda2 : f.lambda};
+  }
+}
+
+// The relaxation's results back: accumulators and velocities.
+template <bool after_bounce>
+void ContactSolver::store_rows(Components& k) {
+  for (std::size_t i = 0; i < order_.size(); ++i) {
+    ContactConstraint& ct = contacts_[order_[i]];
+    (after_bounce ? ct.lambda2 : ct.lambda) = rows_[i].lambda;
+  }
+  for (std::size_t i = 0; i < friction_rows_.size(); ++i) {
+    FrictionRow& f = friction_[order_[i]];
+    (after_bounce ? f.lambda2 : f.lambda) = friction_rows_[i].lambda;
+  }
+  for (std::size_t i = 0; i < slot_body_.size(); ++i) k.velocity[slot_body_[i]] = solver_bodies_[i].v;
+}
+
+// Sequential impulses with accumulated clamping, on the hot copies: the
+// normal impulse never pulls; with friction, the tangential one then stays
+// within mu times the normal impulse accumulated so far (Coulomb's cone, as
+// Box2D clamps it). `friction` is a compile-time constant: the frictionless
+// loop reads no friction row.
+template <bool friction>
+void ContactSolver::iterate(const SolverSettings& s) {
   for (int it = 0; it < s.iterations; ++it) {
-    for (std::size_t i = 0; i < contacts_.size(); ++i) {
-      ContactConstraint& ct = contacts_[i];
-      const double vn = Vector::dot(k.velocity[ct.c] - k.velocity[ct.b], axis_normal[ct.axis]);
-      double& acc = after_bounce ? ct.lambda2 : ct.lambda;
-      const double lambda = std::max(acc - (vn - target(ct)) * ct.inv_w, 0.0);
-      apply(k, ct, lambda - acc);
-      acc = lambda;
+    for (std::size_t i = 0; i < rows_.size(); ++i) {
+      SolverRow& r = rows_[i];
+      SolverBody& bc = solver_bodies_[r.c];
+      SolverBody& bb = solver_bodies_[r.b];
+      const Vector n = axis_normal[r.axis];
+      const double vn = Vector::dot(bc.v - bb.v, n);
+      const double lambda = std::max(r.lambda - (vn - r.target) * r.inv_w, 0.0);
+      apply_normal_impulse(bc.v, bb.v, n, lambda - r.lambda, bc.w, bb.w);
+      r.lambda = lambda;
       if constexpr (friction) {
-        FrictionRow& f = friction_[i];
+        FrictionHot& f = friction_rows_[i];
         if (f.mu == 0.0) continue;
-        const double vt = Vector::dot(k.velocity[ct.c] - k.velocity[ct.b], tangent(axis_normal[ct.axis]));
-        double& acc_t = after_bounce ? f.lambda2 : f.lambda;
-        const double limit = f.mu * acc;
-        const double lt = std::clamp(acc_t - vt * ct.inv_w, -limit, limit);
-        apply_tangent(k, ct, lt - acc_t);
-        acc_t = lt;
+        const double vt = Vector::dot(bc.v - bb.v, tangent(n));
+        const double limit = f.mu * lambda;
+        const double lt = std::clamp(f.lambda - vt * r.inv_w, -limit, limit);
+        apply_normal_impulse(bc.v, bb.v, tangent(n), lt - f.lambda, bc.w, bb.w);
+        f.lambda = lt;
       }
     }
   }

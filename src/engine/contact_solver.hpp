@@ -112,11 +112,16 @@ class ContactSolver {
  private:
   // The stages of solve_velocities, in order.
   void prepare(const Components& k, double h, Vector g, const SolverSettings& s);
+  void schedule(const Components& k, Vector g);
   void warm_start(Components& k);
   template <bool after_bounce>
   void relax(Components& k, Vector g, const SolverSettings& s);
-  template <bool after_bounce, bool friction>
-  void iterate(Components& k, const SolverSettings& s);
+  template <bool after_bounce>
+  void load_rows(const Components& k);
+  template <bool after_bounce>
+  void store_rows(Components& k);
+  template <bool friction>
+  void iterate(const SolverSettings& s);
   void prepare_friction(const Components& k);
   void restitution(Components& k, Vector g, const SolverSettings& s);
   void guard_energy(Components& k);
@@ -130,6 +135,37 @@ class ContactSolver {
 
   std::vector<Pair> pairs_;
   std::vector<ContactConstraint> contacts_;
+  // The iterations' copy of the contacts and their bodies (schedule()):
+  // what the hot loop reads and nothing else, bodies by a dense slot.
+  struct SolverBody {
+    Vector v;  // velocity
+    double w;  // inverse mass
+  };
+  struct SolverRow {
+    std::uint32_t c, b;  // slots
+    std::uint32_t axis;
+    double inv_w, target, lambda;  // as ContactConstraint's (lambda: the relaxation's accumulator)
+  };
+  struct FrictionHot {
+    double mu, lambda;
+  };
+  std::vector<std::uint32_t> slot_of_;     // by entity id: slot, or none when not in a contact
+  std::vector<EntityId> slot_body_;        // by slot: the entity
+  std::vector<SolverBody> solver_bodies_;  // by slot
+  std::vector<std::uint32_t> order_;       // contacts in the iterations' order
+  std::vector<SolverRow> rows_;            // contacts_[order_[i]], hot fields
+  std::vector<FrictionHot> friction_rows_; // friction_[order_[i]], hot fields
+  std::vector<std::uint32_t> last_level_, level_, level_count_;  // schedule()'s scratch
+  // What order_, the slots and support_order_ were made for (schedule()):
+  // each contact's bodies, axis, fixed ends (bits 2, 3) and links (bits 4, 5).
+  struct TopologyKey {
+    EntityId c, b;
+    std::uint32_t flags;
+    friend bool operator==(const TopologyKey&, const TopologyKey&) = default;
+  };
+  std::vector<TopologyKey> topology_, topology_next_;
+  bool scheduled_ = false;
+  Vector topology_g_{};
   std::vector<FrictionRow> friction_;          // empty, or one per contact
   std::vector<std::size_t> support_order_;     // bottom-up order of this substep's contacts
   bool have_order_ = false;
