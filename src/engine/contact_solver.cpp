@@ -141,6 +141,8 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
 // separating axis, or will be within this substep (speculative).
 void ContactSolver::prepare(const Components& k, double h, Vector g, const SolverSettings& s) {
   contacts_.clear();
+  impacts_.clear();
+  bool friction = false;
   // Slower than the speed gravity gives in two substeps: a resting contact,
   // not an impact, so no bounce (otherwise a block on the floor would hop).
   const double threshold = 2.0 * Vector::norm(g) * h + 1e-12;
@@ -164,19 +166,21 @@ void ContactSolver::prepare(const Components& k, double h, Vector g, const Solve
       ct.restitution = std::min(k.restitution[p.c], k.restitution[p.b]);
       ct.resting = false;
       ct.toi = gap > 0.0 ? gap / -vn : 0.0;
+      impacts_.push_back(static_cast<std::uint32_t>(contacts_.size()));
     } else {
       // Close at most the gap (a speculative contact), never approach once touching.
       ct.target = gap > 0.0 ? -gap / h : 0.0;
     }
     contacts_.push_back(ct);
+    friction = friction || pair_friction(k, p.c, p.b) > 0.0;
   }
   stats.contacts += static_cast<std::int64_t>(contacts_.size());
-  prepare_friction(k);
+  prepare_friction(k, friction);
   schedule(k, g);
   // Velocities before any impulse, for the energy guard and the impact time.
-  v_start_.resize(k.size());
-  v_inelastic_.resize(k.size());
-  for (const ContactConstraint& ct : contacts_) v_start_[ct.c] = k.velocity[ct.c], v_start_[ct.b] = k.velocity[ct.b];
+  v_start_.resize(slot_body_.size());
+  v_inelastic_.resize(slot_body_.size());
+  for (std::size_t i = 0; i < slot_body_.size(); ++i) v_start_[i] = k.velocity[slot_body_[i]];
 }
 
 // A resting contact that was there last substep starts with the impulse it
@@ -219,8 +223,6 @@ void ContactSolver::warm_start(Components& k) {
 // depends only on the contacts, not on velocities: both relaxations share it.
 template <bool after_bounce>
 void ContactSolver::relax(Components& k, Vector g, const SolverSettings& s) {
-  for (ContactConstraint& ct : contacts_) ct.lambda2 = 0.0;
-  for (FrictionRow& f : friction_) f.lambda2 = 0.0;
   const auto target = [&](const ContactConstraint& ct) { return after_bounce && !ct.resting ? 0.0 : ct.target; };
   load_rows<after_bounce>(k);
   if (friction_.empty())
@@ -323,12 +325,12 @@ void ContactSolver::load_rows(const Components& k) {
     const ContactConstraint& ct = contacts_[order_[i]];
     const double target = after_bounce && !ct.resting ? 0.0 : ct.target;
     rows_[i] = {slot_of_[ct.c], slot_of_[ct.b], static_cast<std::uint32_t>(ct.axis), ct.inv_w, target,
-                after_bounce ? ct.lambda2 : ct.lambda};
+                after_bounce ? 0.0 : ct.lambda};
   }
   friction_rows_.resize(friction_.size());
   for (std::size_t i = 0; i < friction_.size(); ++i) {
     const FrictionRow& f = friction_[order_[i]];
-    friction_rows_[i] = {f.mu, after_bounce ? f.lambda2 : f.lambda};
+    friction_rows_[i] = {f.mu, after_bounce ? 0.0 : f.lambda};
   }
 }
 
@@ -377,10 +379,8 @@ void ContactSolver::iterate(const SolverSettings& s) {
 }
 
 // One friction row per contact if any contact has friction, none otherwise.
-void ContactSolver::prepare_friction(const Components& k) {
+void ContactSolver::prepare_friction(const Components& k, bool any) {
   friction_.clear();
-  bool any = false;
-  for (const ContactConstraint& ct : contacts_) any = any || pair_friction(k, ct.c, ct.b) > 0.0;
   if (!any) return;
   friction_.reserve(contacts_.size());
   for (const ContactConstraint& ct : contacts_)
@@ -393,11 +393,12 @@ void ContactSolver::prepare_friction(const Components& k) {
 // the energy never grows, even for simultaneous contacts (a target velocity
 // -e·v_n per contact, Newton's way, can gain energy there).
 void ContactSolver::restitution(Components& k, Vector g, const SolverSettings& s) {
-  for (const ContactConstraint& ct : contacts_)
-    v_inelastic_[ct.c] = k.velocity[ct.c], v_inelastic_[ct.b] = k.velocity[ct.b];
+  for (std::size_t i = 0; i < slot_body_.size(); ++i) v_inelastic_[i] = k.velocity[slot_body_[i]];
   bool bounced = false;
-  for (ContactConstraint& ct : contacts_)
-    if (!ct.resting && ct.restitution > 0.0 && ct.lambda > 0.0) apply(k, ct, ct.restitution * ct.lambda), bounced = true;
+  for (const std::uint32_t i : impacts_) {
+    const ContactConstraint& ct = contacts_[i];
+    if (ct.restitution > 0.0 && ct.lambda > 0.0) apply(k, ct, ct.restitution * ct.lambda), bounced = true;
+  }
   // The bounce impulses were computed contact by contact: a light block
   // lying on the floor when a heavy one lands on it gets e times its share
   // pushing it into the floor, which nothing would then hold. Relax again.
@@ -418,8 +419,8 @@ void ContactSolver::restitution(Components& k, Vector g, const SolverSettings& s
 // the floor then rests instead of hopping g·h, and bounces do not drift the
 // energy up.
 void ContactSolver::impact_time(Components& k, double h, Vector g) {
-  for (const ContactConstraint& ct : contacts_) {
-    if (ct.resting) continue;
+  for (const std::uint32_t i : impacts_) {
+    const ContactConstraint& ct = contacts_[i];
     const Vector n = axis_normal[ct.axis];
     const Vector a = (ct.wc > 0.0 ? g : Vector{}) - (ct.wb > 0.0 ? g : Vector{});
     const double vn = Vector::dot(k.velocity[ct.c] - k.velocity[ct.b], n);
@@ -430,17 +431,18 @@ void ContactSolver::impact_time(Components& k, double h, Vector g) {
   // The shift uses each body's net velocity change (a light block lying on
   // the floor when a heavy one lands on it is held by the floor: it must not
   // be shifted by what the heavy one's impulse alone would do), and its
-  // earliest such impact.
-  toi_.assign(k.size(), infinity);
-  for (const ContactConstraint& ct : contacts_) {
-    if (ct.resting || ct.toi <= 0.0) continue;
+  // earliest such impact. toi_ is infinite but while this runs.
+  toi_.resize(k.size(), infinity);
+  for (const std::uint32_t i : impacts_) {
+    const ContactConstraint& ct = contacts_[i];
+    if (ct.toi <= 0.0) continue;
     toi_[ct.c] = std::min(toi_[ct.c], ct.toi);
     toi_[ct.b] = std::min(toi_[ct.b], ct.toi);
   }
-  for (const ContactConstraint& ct : contacts_) {
-    for (const EntityId e : {ct.c, ct.b}) {
-      if (!(toi_[e] < infinity) || !std::isfinite(k.mass[e])) continue;
-      k.position[e] = k.position[e] + toi_[e] * (v_start_[e] - k.velocity[e]);
+  for (const std::uint32_t i : impacts_) {
+    for (const EntityId e : {contacts_[i].c, contacts_[i].b}) {
+      if (toi_[e] < infinity && std::isfinite(k.mass[e]))
+        k.position[e] = k.position[e] + toi_[e] * (v_start_[slot_of_[e]] - k.velocity[e]);
       toi_[e] = infinity;  // once per body
     }
   }
@@ -507,8 +509,9 @@ void ContactSolver::guard_energy(Components& k) {
   for (const EntityId e : bodies_) {
     const std::uint32_t i = island_[e];
     if (s_rest[i] == 1.0 && s_back[i] == 1.0) continue;
-    const Vector vi = v_start_[e] + s_back[i] * (v_inelastic_[e] - v_start_[e]);
-    k.velocity[e] = vi + s_rest[i] * (k.velocity[e] - v_inelastic_[e]);
+    const std::uint32_t slot = slot_of_[e];
+    const Vector vi = v_start_[slot] + s_back[i] * (v_inelastic_[slot] - v_start_[slot]);
+    k.velocity[e] = vi + s_rest[i] * (k.velocity[e] - v_inelastic_[slot]);
     ++stats.energy_clamps;
   }
 }
@@ -518,15 +521,13 @@ void ContactSolver::guard_energy(Components& k) {
 // terms, and rounding is monotone): nothing to do. A resting pile is the
 // common case, and this skips the islands' bookkeeping there.
 bool ContactSolver::any_body_gained(const Components& k) const {
-  const auto body_gained = [&](EntityId e) {
+  for (std::size_t i = 0; i < slot_body_.size(); ++i) {
+    const EntityId e = slot_body_[i];
     const double m = k.mass[e];
-    const Vector v0 = v_start_[e], v1 = k.velocity[e];
-    return 0.5 * m * Vector::dot(v1, v1) > 0.5 * m * Vector::dot(v0, v0);
-  };
-  bool gained = false;
-  for (const ContactConstraint& ct : contacts_)
-    gained = gained || (ct.wc > 0.0 && body_gained(ct.c)) || (ct.wb > 0.0 && body_gained(ct.b));
-  return gained;
+    const Vector v0 = v_start_[i], v1 = k.velocity[e];
+    if (std::isfinite(m) && 0.5 * m * Vector::dot(v1, v1) > 0.5 * m * Vector::dot(v0, v0)) return true;
+  }
+  return false;
 }
 
 // The islands of touching finite bodies (union-find over the contacts), and
@@ -564,7 +565,7 @@ void ContactSolver::island_energies(const Components& k) {
     const std::uint32_t i = root_index_[find(e)];
     island_[e] = i;
     const double m = k.mass[e];
-    const Vector v0 = v_start_[e], vi = v_inelastic_[e], v1 = k.velocity[e];
+    const Vector v0 = v_start_[slot_of_[e]], vi = v_inelastic_[slot_of_[e]], v1 = k.velocity[e];
     const Vector rest = v1 - vi, back = vi - v0;
     IslandEnergy& su = sums_[i];
     su.start += 0.5 * m * Vector::dot(v0, v0);

@@ -122,7 +122,7 @@ class ContactSolver {
   void store_rows(Components& k);
   template <bool friction>
   void iterate(const SolverSettings& s);
-  void prepare_friction(const Components& k);
+  void prepare_friction(const Components& k, bool any);
   void restitution(Components& k, Vector g, const SolverSettings& s);
   void guard_energy(Components& k);
   bool any_body_gained(const Components& k) const;
@@ -169,7 +169,8 @@ class ContactSolver {
   std::vector<FrictionRow> friction_;          // empty, or one per contact
   std::vector<std::size_t> support_order_;     // bottom-up order of this substep's contacts
   bool have_order_ = false;
-  std::vector<Vector> v_start_, v_inelastic_;  // indexed by entity id
+  std::vector<Vector> v_start_, v_inelastic_;  // by slot
+  std::vector<std::uint32_t> impacts_;         // the contacts that are not resting, in order
   // The energy guard's islands: kinetic energies at the start, after the
   // inelastic relaxation and at the end, and the coefficients of the
   // quadratics in the blend factors (rest: the bounces; back: towards the start).
@@ -182,7 +183,7 @@ class ContactSolver {
   std::vector<std::uint32_t> island_;
   std::vector<std::uint8_t> seen_;             // guard_energy: bodies of the contacts
   std::vector<std::uint32_t> root_index_;      // guard_energy: island of each root
-  std::vector<double> toi_;                    // earliest impact time per body, indexed by entity id
+  std::vector<double> toi_;                    // earliest impact time per body, by entity id (infinity between calls)
   // Impulses of the previous substep's resting contacts: (pair key, axis,
   // normal impulse, tangential impulse), sorted.
   std::vector<std::tuple<std::uint64_t, int, double, double>> warm_;
