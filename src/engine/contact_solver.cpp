@@ -184,11 +184,26 @@ void ContactSolver::prepare(const Components& k, double h, Vector g, const Solve
 }
 
 // A resting contact that was there last substep starts with the impulse it
-// ended with (a stack's weight is then carried from the start). Contacts
-// mostly come in the order of warm_ (pairs in registration order, ids mostly
-// registered in increasing order), so each search starts where the last one
-// ended when it can: a merge, not a binary search from scratch per contact.
+// ended with (a stack's weight is then carried from the start). When the
+// contacts are those of last substep, in the same order (schedule(): a
+// resting pile), contact i's impulse is last substep's i-th.
 void ContactSolver::warm_start(Components& k) {
+  if (restored_ || !same_topology_) {
+    warm_start_search(k);
+    return;
+  }
+  for (std::size_t i = 0; i < contacts_.size(); ++i)
+    if (contacts_[i].resting && last_jn_[i] > 0.0) warm_start_one(k, i, last_jn_[i], last_jt_[i]);
+}
+
+// Otherwise each contact's impulse is looked up by pair and axis in the
+// sorted list. Contacts mostly come in the order of the list (pairs in
+// registration order, ids mostly registered in increasing order), so each
+// search starts where the last one ended when it can: a merge, not a binary
+// search from scratch per contact.
+void ContactSolver::warm_start_search(Components& k) {
+  if (!restored_) warm_ = last_impulses(topology_next_);
+  restored_ = false;
   auto from = warm_.begin();
   for (ContactConstraint& ct : contacts_) {
     if (!ct.resting) continue;
@@ -203,17 +218,21 @@ void ContactSolver::warm_start(Components& k) {
     }
     const auto it = std::lower_bound(from, hi, probe);
     from = it;
-    if (it != warm_.end() && std::get<0>(*it) == kk && std::get<1>(*it) == ct.axis) {
-      ct.lambda = std::get<2>(*it);
-      apply(k, ct, ct.lambda);
-      if (!friction_.empty()) {
-        FrictionRow& f = friction_[static_cast<std::size_t>(&ct - contacts_.data())];
-        // Within the cone of this substep's start (mu may be 0 for a pair that had none).
-        f.lambda = std::clamp(std::get<3>(*it), -f.mu * ct.lambda, f.mu * ct.lambda);
-        if (f.lambda != 0.0) apply_tangent(k, ct, f.lambda);
-      }
-    }
+    if (it != warm_.end() && std::get<0>(*it) == kk && std::get<1>(*it) == ct.axis)
+      warm_start_one(k, static_cast<std::size_t>(&ct - contacts_.data()), std::get<2>(*it), std::get<3>(*it));
   }
+}
+
+// Contact i starts with the normal impulse jn and the tangential jt.
+void ContactSolver::warm_start_one(Components& k, std::size_t i, double jn, double jt) {
+  ContactConstraint& ct = contacts_[i];
+  ct.lambda = jn;
+  apply(k, ct, ct.lambda);
+  if (friction_.empty()) return;
+  FrictionRow& f = friction_[i];
+  // Within the cone of this substep's start (mu may be 0 for a pair that had none).
+  f.lambda = std::clamp(jt, -f.mu * ct.lambda, f.mu * ct.lambda);
+  if (f.lambda != 0.0) apply_tangent(k, ct, f.lambda);
 }
 
 // Sequential impulses with accumulated clamping, then the bottom-up pass.
@@ -273,7 +292,8 @@ void ContactSolver::schedule(const Components& k, Vector g) {
     topology_next_.push_back({ct.c, ct.b, flags});
   }
   topology_.swap(topology_next_);
-  if (scheduled_ && g == topology_g_ && topology_ == topology_next_) return;
+  same_topology_ = topology_ == topology_next_;
+  if (scheduled_ && g == topology_g_ && same_topology_) return;
   scheduled_ = true, have_order_ = false;
   topology_g_ = g;
   for (const EntityId e : slot_body_)
@@ -448,22 +468,37 @@ void ContactSolver::impact_time(Components& k, double h, Vector g) {
   }
 }
 
-// The resting contacts' impulses, for the next substep's warm start.
+// The resting contacts' impulses, for the next substep's warm start, by
+// contact (last_jn_: 0 for none); the sorted list is made only when asked for.
 void ContactSolver::store() {
-  std::vector<std::tuple<std::uint64_t, int, double, double>> next_warm;
+  last_jn_.resize(contacts_.size());
+  last_jt_.resize(contacts_.size());
   for (std::size_t i = 0; i < contacts_.size(); ++i) {
     const ContactConstraint& ct = contacts_[i];
-    const double jt = friction_.empty() ? 0.0 : friction_[i].lambda + friction_[i].lambda2;
-    if (ct.resting && ct.lambda + ct.lambda2 > 0.0) next_warm.emplace_back(key(ct.c, ct.b), ct.axis, ct.lambda + ct.lambda2, jt);
+    const bool keep = ct.resting && ct.lambda + ct.lambda2 > 0.0;
+    last_jn_[i] = keep ? ct.lambda + ct.lambda2 : 0.0;
+    last_jt_[i] = friction_.empty() ? 0.0 : friction_[i].lambda + friction_[i].lambda2;
   }
-  if (!std::is_sorted(next_warm.begin(), next_warm.end())) std::sort(next_warm.begin(), next_warm.end());
-  warm_ = std::move(next_warm);
+  restored_ = false;
+}
+
+// The impulses store() kept, as the sorted list of (pair key, axis, normal
+// impulse, tangential impulse); `contacts`: the keys of the contacts they were stored for.
+std::vector<std::tuple<std::uint64_t, int, double, double>> ContactSolver::last_impulses(
+    std::span<const TopologyKey> contacts) const {
+  std::vector<std::tuple<std::uint64_t, int, double, double>> out;
+  for (std::size_t i = 0; i < last_jn_.size(); ++i)
+    if (last_jn_[i] > 0.0)
+      out.emplace_back(key(contacts[i].c, contacts[i].b), static_cast<int>(contacts[i].flags & 3), last_jn_[i], last_jt_[i]);
+  if (!std::is_sorted(out.begin(), out.end())) std::sort(out.begin(), out.end());
+  return out;
 }
 
 std::vector<WarmImpulse> ContactSolver::warm_impulses() const {
+  const auto warm = restored_ ? warm_ : last_impulses(topology_);
   std::vector<WarmImpulse> out;
-  out.reserve(warm_.size());
-  for (const auto& [kk, axis, jn, jt] : warm_)
+  out.reserve(warm.size());
+  for (const auto& [kk, axis, jn, jt] : warm)
     out.push_back({{static_cast<EntityId>(kk >> 32), static_cast<EntityId>(kk & 0xFFFFFFFFu)}, axis, jn, jt});
   return out;
 }
@@ -472,6 +507,7 @@ void ContactSolver::restore(std::span<const WarmImpulse> impulses) {
   warm_.clear();
   for (const WarmImpulse& w : impulses) warm_.emplace_back(w.pair.key(), w.axis, w.jn, w.jt);
   std::sort(warm_.begin(), warm_.end());
+  restored_ = true;
 }
 
 // Poisson's restitution keeps the energy from growing only when the

@@ -114,6 +114,8 @@ class ContactSolver {
   void prepare(const Components& k, double h, Vector g, const SolverSettings& s);
   void schedule(const Components& k, Vector g);
   void warm_start(Components& k);
+  void warm_start_search(Components& k);
+  void warm_start_one(Components& k, std::size_t i, double jn, double jt);
   template <bool after_bounce>
   void relax(Components& k, Vector g, const SolverSettings& s);
   template <bool after_bounce>
@@ -165,6 +167,7 @@ class ContactSolver {
   };
   std::vector<TopologyKey> topology_, topology_next_;
   bool scheduled_ = false;
+  bool same_topology_ = false;  // this substep's contacts are last substep's (topology_next_ holds last substep's)
   Vector topology_g_{};
   std::vector<FrictionRow> friction_;          // empty, or one per contact
   std::vector<std::size_t> support_order_;     // bottom-up order of this substep's contacts
@@ -184,8 +187,14 @@ class ContactSolver {
   std::vector<std::uint8_t> seen_;             // guard_energy: bodies of the contacts
   std::vector<std::uint32_t> root_index_;      // guard_energy: island of each root
   std::vector<double> toi_;                    // earliest impact time per body, by entity id (infinity between calls)
-  // Impulses of the previous substep's resting contacts: (pair key, axis,
-  // normal impulse, tangential impulse), sorted.
+  // The impulses of the last substep's contacts (store()), by contact; the
+  // normal one 0 for a contact that does not warm start the next substep.
+  std::vector<double> last_jn_, last_jt_;
+  std::vector<std::tuple<std::uint64_t, int, double, double>> last_impulses(std::span<const TopologyKey> contacts) const;
+  // The warm_start's sorted list (pair key, axis, normal impulse, tangential
+  // impulse): made from the above when the contacts changed, or given by
+  // restore() (restored_: the list holds the impulses, the above do not).
+  bool restored_ = false;
   std::vector<std::tuple<std::uint64_t, int, double, double>> warm_;
 };
 

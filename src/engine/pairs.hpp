@@ -66,6 +66,8 @@ class BroadPhase {
   // px. Larger keeps a grid longer but lists more candidates to filter;
   // 2 px is a fifth of the bench's blocks and above a resting body's drift.
   double fat_margin = 2.0;
+  // Calls of h ms ahead that a fat box reaches along its body's velocity.
+  double fat_steps = 3.0;
 
   // What the last course pass did, for the benchmark.
   struct Stats {
@@ -97,7 +99,7 @@ class BroadPhase {
   }
   bool refresh(const Components& k, std::uint32_t i, PairKey current);
   // find().
-  void fat_rebuild(const Components& k, std::span<const EntityId> entities);
+  void fat_rebuild(const Components& k, std::span<const EntityId> entities, double h);
 
   UniformGrid grid_;
   std::vector<EntityId> entities_;   // the bodies of find()'s fat grid, in registration order
