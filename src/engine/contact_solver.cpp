@@ -13,24 +13,14 @@ namespace physics {
 
 namespace {
 
-// Signed distance between the boxes of c and b along an axis (negative:
-// overlap), from their Minkowski difference s = b ⊖ c (the sheet's mdiff):
-// -x: s.x, +x: -(s.x + s.w), -y: s.y, +y: -(s.y + s.h). Rect::mdiff's
-// arithmetic is written out (same operations in the same order, so the same
-// bits): this runs per contact per iteration, where the call cost more than
-// the sums.
-double gap_along(const Components& k, EntityId c, EntityId b, int axis) {
-  const Vector pc = k.position[c], pb = k.position[b];
-  const Rect rc = k.box[c], rb = k.box[b];
-  switch (axis) {
-    case 0: return pb.x - pc.x - rc.width;
-    case 1: return -((pb.x - pc.x - rc.width) + (rb.width + rc.width));
-    case 2: return pb.y - pc.y - rc.height;
-    default: return -((pb.y - pc.y - rc.height) + (rb.height + rc.height));
-  }
-}
-
 std::uint64_t key(EntityId c, EntityId b) { return Pair{c, b}.key(); }
+
+// Whether a body of inverse mass w and velocity v links the contacts it is
+// in (ContactSolver::schedule): any finite mass; a fixed body only when a
+// component of its velocity is -0 (which a contact would turn to +0).
+bool links(double w, Vector v) {
+  return w > 0.0 || (v.x == 0.0 && std::signbit(v.x)) || (v.y == 0.0 && std::signbit(v.y));
+}
 
 // The contact law (engine/contact.hpp) on a contact's axis.
 inline void apply(Components& k, const ContactConstraint& ct, double impulse) {
@@ -142,6 +132,7 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
 void ContactSolver::prepare(const Components& k, double h, Vector g, const SolverSettings& s) {
   contacts_.clear();
   impacts_.clear();
+  topology_next_.clear();
   bool friction = false;
   // Slower than the speed gravity gives in two substeps: a resting contact,
   // not an impact, so no bounce (otherwise a block on the floor would hop).
@@ -173,6 +164,9 @@ void ContactSolver::prepare(const Components& k, double h, Vector g, const Solve
     }
     contacts_.push_back(ct);
     friction = friction || pair_friction(k, p.c, p.b) > 0.0;
+    const std::uint32_t flags = static_cast<std::uint32_t>(axis) | (wc == 0.0) << 2 | (wb == 0.0) << 3 |
+                                links(wc, k.velocity[p.c]) << 4 | links(wb, k.velocity[p.b]) << 5;
+    topology_next_.push_back({p.c, p.b, flags});
   }
   stats.contacts += static_cast<std::int64_t>(contacts_.size());
   prepare_friction(k, friction);
@@ -277,20 +271,11 @@ void ContactSolver::relax(Components& k, Vector g, const SolverSettings& s) {
 // contacts of a level share no body, and the processor overlaps them.
 // A fixed body links nothing: its contacts add (0·j)·n to its velocity,
 // which leaves it as it is unless a component is -0 (then it links).
+// prepare() lists the contacts' keys for it.
 void ContactSolver::schedule(const Components& k, Vector g) {
-  const auto links = [&](EntityId e) {
-    const Vector v = k.velocity[e];
-    return std::isfinite(k.mass[e]) || (v.x == 0.0 && std::signbit(v.x)) || (v.y == 0.0 && std::signbit(v.y));
-  };
   // All this (and the support order) depends only on the contacts' bodies,
-  // axes and links, and on gravity's direction: a resting pile keeps them
-  // from substep to substep.
-  topology_next_.clear();
-  for (const ContactConstraint& ct : contacts_) {
-    const std::uint32_t flags = static_cast<std::uint32_t>(ct.axis) | (ct.wc == 0.0) << 2 | (ct.wb == 0.0) << 3 |
-                                links(ct.c) << 4 | links(ct.b) << 5;
-    topology_next_.push_back({ct.c, ct.b, flags});
-  }
+  // axes and links (prepare() lists them in topology_next_), and on
+  // gravity's direction: a resting pile keeps them from substep to substep.
   topology_.swap(topology_next_);
   same_topology_ = topology_ == topology_next_;
   if (scheduled_ && g == topology_g_ && same_topology_) return;
@@ -626,42 +611,65 @@ void ContactSolver::solve_positions(Components& k, std::span<const EntityId> ent
 
 // The contacts within the margin; whether any overlaps by more than the slop.
 bool ContactSolver::prepare_positions(const Components& k, const SolverSettings& s) {
-  contacts_.clear();
+  positions_.clear();
   bool any_overlap = false;
   for (const Pair& p : pairs_) {
     const auto [axis, gap] = best_axis(k, p.c, p.b);
     if (gap > s.margin) continue;
     any_overlap = any_overlap || gap < -s.slop;
-    const double wc = inverse_mass(k.mass[p.c]), wb = inverse_mass(k.mass[p.b]);
-    contacts_.push_back(ContactConstraint{p.c, p.b, axis, wc, wb, 1.0 / (wc + wb), 0, 0, 0, 0, 0, true});
+    positions_.push_back({p.c, p.b, axis, 0.0, 0.0, 0.0, 0.0});
   }
   return any_overlap;
+}
+
+// Signed distance between the boxes of a position contact along its axis
+// (negative: overlap), from their Minkowski difference s = b ⊖ c (the
+// sheet's mdiff): -x: s.x, +x: -(s.x + s.w), -y: s.y, +y: -(s.y + s.h).
+// Rect::mdiff's arithmetic, written out with the box sizes it adds taken
+// once per substep (same operations in the same order, so the same bits):
+// this runs per contact per iteration.
+double ContactSolver::gap(const Components& k, const PositionContact& ct) {
+  const Vector pc = k.position[ct.c], pb = k.position[ct.b];
+  switch (ct.axis) {
+    case 0: return pb.x - pc.x - ct.size_c;
+    case 1: return -((pb.x - pc.x - ct.size_c) + ct.sizes);
+    case 2: return pb.y - pc.y - ct.size_c;
+    default: return -((pb.y - pc.y - ct.size_c) + ct.sizes);
+  }
 }
 
 // Non-linear Gauss-Seidel on positions, shared in proportion to inverse
 // masses, then the same bottom-up pass as the velocities'.
 void ContactSolver::project(Components& k, Vector g, const SolverSettings& s) {
+  for (PositionContact& ct : positions_) {
+    const Rect rc = k.box[ct.c], rb = k.box[ct.b];
+    const bool x = ct.axis < 2;
+    ct.size_c = x ? rc.width : rc.height;
+    ct.sizes = x ? rb.width + rc.width : rb.height + rc.height;
+    const double wc = inverse_mass(k.mass[ct.c]), wb = inverse_mass(k.mass[ct.b]);
+    const double w = wc + wb;
+    ct.share_c = wc / w, ct.share_b = wb / w;
+  }
   for (int it = 0; it < s.iterations; ++it) {
-    for (const ContactConstraint& ct : contacts_) {
-      const double depth = -gap_along(k, ct.c, ct.b, ct.axis) - s.slop;
+    for (const PositionContact& ct : positions_) {
+      const double depth = -gap(k, ct) - s.slop;
       if (!(depth > 0.0)) continue;
       const Vector n = axis_normal[ct.axis];
-      const double w = ct.wc + ct.wb;
       const double push = s.projection * depth;
-      k.position[ct.c] = k.position[ct.c] + (push * (ct.wc / w)) * n;
-      k.position[ct.b] = k.position[ct.b] - (push * (ct.wb / w)) * n;
+      k.position[ct.c] = k.position[ct.c] + (push * ct.share_c) * n;
+      k.position[ct.b] = k.position[ct.b] - (push * ct.share_b) * n;
     }
   }
   if (!s.shock_propagation || Vector::is_zero(g)) return;
-  for (const std::size_t i : bottom_up(k, contacts_, g)) {
-    const ContactConstraint& ct = contacts_[i];
-    const double depth = -gap_along(k, ct.c, ct.b, ct.axis) - s.slop;
+  for (const std::size_t i : bottom_up(k, positions_, g)) {
+    const PositionContact& ct = positions_[i];
+    const double depth = -gap(k, ct) - s.slop;
     if (!(depth > 0.0)) continue;
     const Vector n = axis_normal[ct.axis];
     if (support_sign(ct.axis, g) > 0) {
-      if (ct.wc > 0.0) k.position[ct.c] = k.position[ct.c] + depth * n;
+      if (std::isfinite(k.mass[ct.c])) k.position[ct.c] = k.position[ct.c] + depth * n;
     } else {
-      if (ct.wb > 0.0) k.position[ct.b] = k.position[ct.b] - depth * n;
+      if (std::isfinite(k.mass[ct.b])) k.position[ct.b] = k.position[ct.b] - depth * n;
     }
   }
 }

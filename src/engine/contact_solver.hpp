@@ -134,6 +134,15 @@ class ContactSolver {
   // solve_positions' stages.
   bool prepare_positions(const Components& k, const SolverSettings& s);
   void project(Components& k, Vector g, const SolverSettings& s);
+  // A contact of the position stage: the pair and its axis, and (project())
+  // c's size along it, the sum of both sizes, each body's share of a correction.
+  struct PositionContact {
+    EntityId c, b;
+    int axis;  // as ContactConstraint::axis
+    double size_c, sizes, share_c, share_b;
+  };
+  static double gap(const Components& k, const PositionContact& ct);
+  std::vector<PositionContact> positions_;
 
   std::vector<Pair> pairs_;
   std::vector<ContactConstraint> contacts_;
