@@ -641,6 +641,7 @@ double ContactSolver::gap(const Components& k, const PositionContact& ct) {
 // Non-linear Gauss-Seidel on positions, shared in proportion to inverse
 // masses, then the same bottom-up pass as the velocities'.
 void ContactSolver::project(Components& k, Vector g, const SolverSettings& s) {
+  position_keys_next_.clear();
   for (PositionContact& ct : positions_) {
     const Rect rc = k.box[ct.c], rb = k.box[ct.b];
     const bool x = ct.axis < 2;
@@ -649,6 +650,8 @@ void ContactSolver::project(Components& k, Vector g, const SolverSettings& s) {
     const double wc = inverse_mass(k.mass[ct.c]), wb = inverse_mass(k.mass[ct.b]);
     const double w = wc + wb;
     ct.share_c = wc / w, ct.share_b = wb / w;
+    const auto flags = static_cast<std::uint32_t>(ct.axis) | (wc == 0.0) << 2 | (wb == 0.0) << 3;
+    position_keys_next_.push_back({ct.c, ct.b, flags});
   }
   for (int it = 0; it < s.iterations; ++it) {
     for (const PositionContact& ct : positions_) {
@@ -661,7 +664,12 @@ void ContactSolver::project(Components& k, Vector g, const SolverSettings& s) {
     }
   }
   if (!s.shock_propagation || Vector::is_zero(g)) return;
-  for (const std::size_t i : bottom_up(k, positions_, g)) {
+  // The order depends only on the contacts' bodies, axes and fixed ends, and
+  // on gravity: a resting pile keeps it from substep to substep.
+  position_keys_.swap(position_keys_next_);
+  if (!have_position_order_ || g != position_g_ || position_keys_ != position_keys_next_)
+    position_order_ = bottom_up(k, positions_, g), position_g_ = g, have_position_order_ = true;
+  for (const std::size_t i : position_order_) {
     const PositionContact& ct = positions_[i];
     const double depth = -gap(k, ct) - s.slop;
     if (!(depth > 0.0)) continue;

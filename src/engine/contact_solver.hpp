@@ -178,6 +178,12 @@ class ContactSolver {
   bool scheduled_ = false;
   bool same_topology_ = false;  // this substep's contacts are last substep's (topology_next_ holds last substep's)
   Vector topology_g_{};
+  // The position stage's bottom-up order, and what it was made for: each
+  // contact's bodies, axis and fixed ends (bits 2, 3), gravity.
+  std::vector<std::size_t> position_order_;
+  std::vector<TopologyKey> position_keys_, position_keys_next_;
+  Vector position_g_{};
+  bool have_position_order_ = false;
   std::vector<FrictionRow> friction_;          // empty, or one per contact
   std::vector<std::size_t> support_order_;     // bottom-up order of this substep's contacts
   bool have_order_ = false;
