@@ -628,7 +628,7 @@ bool ContactSolver::prepare_positions(const Components& k, const SolverSettings&
 // Rect::mdiff's arithmetic, written out with the box sizes it adds taken
 // once per substep (same operations in the same order, so the same bits):
 // this runs per contact per iteration.
-double ContactSolver::gap(const Components& k, const PositionContact& ct) {
+inline double ContactSolver::gap(const Components& k, const PositionContact& ct) {
   const Vector pc = k.position[ct.c], pb = k.position[ct.b];
   switch (ct.axis) {
     case 0: return pb.x - pc.x - ct.size_c;
