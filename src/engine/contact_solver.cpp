@@ -628,14 +628,12 @@ bool ContactSolver::prepare_positions(const Components& k, const SolverSettings&
 // Rect::mdiff's arithmetic, written out with the box sizes it adds taken
 // once per substep (same operations in the same order, so the same bits):
 // this runs per contact per iteration.
+// Selects, not branches: the axes of a pile's contacts alternate unpredictably.
 inline double ContactSolver::gap(const Components& k, const PositionContact& ct) {
   const Vector pc = k.position[ct.c], pb = k.position[ct.b];
-  switch (ct.axis) {
-    case 0: return pb.x - pc.x - ct.size_c;
-    case 1: return -((pb.x - pc.x - ct.size_c) + ct.sizes);
-    case 2: return pb.y - pc.y - ct.size_c;
-    default: return -((pb.y - pc.y - ct.size_c) + ct.sizes);
-  }
+  const bool y = ct.axis >= 2;
+  const double d = (y ? pb.y : pb.x) - (y ? pc.y : pc.x) - ct.size_c;
+  return ct.axis & 1 ? -(d + ct.sizes) : d;
 }
 
 // Non-linear Gauss-Seidel on positions, shared in proportion to inverse
