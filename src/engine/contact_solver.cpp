@@ -119,7 +119,12 @@ std::vector<std::size_t> bottom_up(const Components& k, const Contacts& contacts
 void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> entities, double h, Vector g,
                                      const SolverSettings& s, BroadPhase& broadphase, StageTimes& times) {
   times.time(Stage::pairs, [&] { broadphase.find(k, entities, h, s.margin, pairs_); });
-  times.time(Stage::prepare, [&] { prepare(k, h, g, s); });
+  times.time(Stage::prepare, [&] {
+    // Once per body, not per contact end (a division each).
+    inverse_mass_.resize(k.size());
+    for (const EntityId e : entities) inverse_mass_[e] = inverse_mass(k.mass[e]);
+    prepare(k, h, g, s);
+  });
   times.time(Stage::warm_start, [&] { warm_start(k); });
   times.time(Stage::relax, [&] { relax<false>(k, g, s); });
   times.time(Stage::restitution, [&] { restitution(k, g, s); });
@@ -149,8 +154,8 @@ void ContactSolver::prepare(const Components& k, double h, Vector g, const Solve
     // and resolves chains of them one after the other (a cradle). The solver
     // keeps the resting contacts, which CCD alone cannot hold.
     if (impact && !s.impacts) continue;
-    const double wc = inverse_mass(k.mass[p.c]), wb = inverse_mass(k.mass[p.b]);
-    ContactConstraint ct{p.c, p.b, axis, wc, wb, 1.0 / (wc + wb), 0.0, 0.0, 0.0, 0.0, 0.0, true};
+    const double wc = inverse_mass_[p.c], wb = inverse_mass_[p.b];
+    ContactConstraint ct{p.c, p.b, axis, true, wc, wb, 1.0 / (wc + wb), 0.0, 0.0, 0.0, 0.0, 0.0};
     if (impact) {
       // A real impact this substep: stopped here (target 0), then bounced by
       // e times the stopping impulse once the iterations are done.
@@ -323,7 +328,7 @@ void ContactSolver::load_rows(const Components& k) {
   solver_bodies_.resize(slot_body_.size());
   for (std::size_t i = 0; i < slot_body_.size(); ++i) {
     const EntityId e = slot_body_[i];
-    solver_bodies_[i] = {k.velocity[e], inverse_mass(k.mass[e])};
+    solver_bodies_[i] = {k.velocity[e], inverse_mass_[e]};
   }
   rows_.resize(order_.size());
   for (std::size_t i = 0; i < order_.size(); ++i) {

@@ -72,6 +72,8 @@ struct SolverStats {
 struct ContactConstraint {
   EntityId c, b;
   int axis;          // 0: -x, 1: +x, 2: -y, 3: +y (the normal that moves c away from b)
+  bool resting;      // no restitution target: its impulse may warm start the next substep
+                     // (here, not last: it fills the padding after axis)
   double wc, wb;     // inverse masses
   double inv_w;      // 1 / (wc + wb): the iterations multiply by it (a division there sat on the dependency chain)
   double target;     // lowest allowed (v_c - v_b)·n
@@ -79,7 +81,6 @@ struct ContactConstraint {
   double lambda2;    // accumulated in the relaxation after the bounces
   double restitution;  // of an impact: bounce impulse = restitution × lambda
   double toi;          // of an impact found before touching: ms into the substep
-  bool resting;      // no restitution target: its impulse may warm start the next substep
 };
 
 // A contact's friction, beside its ContactConstraint (same index), kept only
@@ -187,6 +188,7 @@ class ContactSolver {
   std::vector<FrictionRow> friction_;          // empty, or one per contact
   std::vector<std::size_t> support_order_;     // bottom-up order of this substep's contacts
   bool have_order_ = false;
+  std::vector<double> inverse_mass_;           // by entity id, this substep's (solve_velocities)
   std::vector<Vector> v_start_, v_inelastic_;  // by slot
   std::vector<std::uint32_t> impacts_;         // the contacts that are not resting, in order
   // The energy guard's islands: kinetic energies at the start, after the
