@@ -614,17 +614,18 @@ void ContactSolver::solve_positions(Components& k, std::span<const EntityId> ent
   });
 }
 
-// The contacts within the margin; whether any overlaps by more than the slop.
+// Whether any pair overlaps by more than the slop; if so, the contacts
+// within the margin. A resting pile often has no such overlap: then the
+// look stops there, without listing the contacts.
 bool ContactSolver::prepare_positions(const Components& k, const SolverSettings& s) {
   positions_.clear();
-  bool any_overlap = false;
+  const auto overlaps = [&](const Pair& p) { return best_axis(k, p.c, p.b).second < -s.slop; };
+  if (std::none_of(pairs_.begin(), pairs_.end(), overlaps)) return false;
   for (const Pair& p : pairs_) {
     const auto [axis, gap] = best_axis(k, p.c, p.b);
-    if (gap > s.margin) continue;
-    any_overlap = any_overlap || gap < -s.slop;
-    positions_.push_back({p.c, p.b, axis, 0.0, 0.0, 0.0, 0.0});
+    if (!(gap > s.margin)) positions_.push_back({p.c, p.b, axis, 0.0, 0.0, 0.0, 0.0});
   }
-  return any_overlap;
+  return true;
 }
 
 // Signed distance between the boxes of a position contact along its axis
