@@ -26,6 +26,13 @@
 //     ground up, the lower body treated as immovable. It runs only on bodies
 //     that rest on a fixed one through such contacts; free bodies keep the
 //     plain, momentum-conserving impulses.
+//     The iterations run on a hot copy (schedule(), load_rows()): the
+//     bodies' velocities and inverse masses by a dense slot, the contacts'
+//     few fields they read, in an order that keeps every body's contacts in
+//     the given order (so the same bits) but puts contacts that share no
+//     body side by side, for the processor to overlap. What depends only on
+//     which contacts there are (that order, the slots, the bottom-up order,
+//     the warm start's matching) is kept while they stay the same.
 //  2. solve_positions (stage `positions`), after Move: what still overlaps by more than `slop` is
 //     projected apart (non-linear Gauss-Seidel on positions, shared in
 //     proportion to inverse masses, then the same bottom-up pass). Positions

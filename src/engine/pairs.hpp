@@ -13,8 +13,9 @@
 //  - find(h, reach): every pair whose boxes, each swept over h ms at its
 //    velocity and grown by `reach`, overlap or touch; exactly the all-pairs
 //    definition brute_force_pairs() keeps for the tests. The grid is built
-//    on boxes grown by `fat_margin` and kept while every body stays inside
-//    its fat box: a resting pile costs a filter per call, not a grid.
+//    on boxes grown by `fat_margin` (and by `fat_steps` calls' motion along
+//    the velocity) and kept while every body stays inside its fat box: a
+//    resting pile, or bodies falling together, cost a filter per call, not a grid.
 // Pairs of two infinite masses are never listed (two walls never collide),
 // nor pairs the bodies' contact rules exclude (engine/rules.hpp: filters,
 // sensors, one-way platforms), tested only while some body has rules.
