@@ -13,24 +13,14 @@ namespace physics {
 
 namespace {
 
-// Signed distance between the boxes of c and b along an axis (negative:
-// overlap), from their Minkowski difference s = b ⊖ c (the sheet's mdiff):
-// -x: s.x, +x: -(s.x + s.w), -y: s.y, +y: -(s.y + s.h). Rect::mdiff's
-// arithmetic is written out (same operations in the same order, so the same
-// bits): this runs per contact per iteration, where the call cost more than
-// the sums.
-double gap_along(const Components& k, EntityId c, EntityId b, int axis) {
-  const Vector pc = k.position[c], pb = k.position[b];
-  const Rect rc = k.box[c], rb = k.box[b];
-  switch (axis) {
-    case 0: return pb.x - pc.x - rc.width;
-    case 1: return -((pb.x - pc.x - rc.width) + (rb.width + rc.width));
-    case 2: return pb.y - pc.y - rc.height;
-    default: return -((pb.y - pc.y - rc.height) + (rb.height + rc.height));
-  }
-}
-
 std::uint64_t key(EntityId c, EntityId b) { return Pair{c, b}.key(); }
+
+// Whether a body of inverse mass w and velocity v links the contacts it is
+// in (ContactSolver::schedule): any finite mass; a fixed body only when a
+// component of its velocity is -0 (which a contact would turn to +0).
+bool links(double w, Vector v) {
+  return w > 0.0 || (v.x == 0.0 && std::signbit(v.x)) || (v.y == 0.0 && std::signbit(v.y));
+}
 
 // The contact law (engine/contact.hpp) on a contact's axis.
 inline void apply(Components& k, const ContactConstraint& ct, double impulse) {
@@ -129,7 +119,12 @@ std::vector<std::size_t> bottom_up(const Components& k, const Contacts& contacts
 void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> entities, double h, Vector g,
                                      const SolverSettings& s, BroadPhase& broadphase, StageTimes& times) {
   times.time(Stage::pairs, [&] { broadphase.find(k, entities, h, s.margin, pairs_); });
-  times.time(Stage::prepare, [&] { prepare(k, h, g, s); });
+  times.time(Stage::prepare, [&] {
+    // Once per body, not per contact end (a division each).
+    inverse_mass_.resize(k.size());
+    for (const EntityId e : entities) inverse_mass_[e] = inverse_mass(k.mass[e]);
+    prepare(k, h, g, s);
+  });
   times.time(Stage::warm_start, [&] { warm_start(k); });
   times.time(Stage::relax, [&] { relax<false>(k, g, s); });
   times.time(Stage::restitution, [&] { restitution(k, g, s); });
@@ -141,7 +136,9 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
 // separating axis, or will be within this substep (speculative).
 void ContactSolver::prepare(const Components& k, double h, Vector g, const SolverSettings& s) {
   contacts_.clear();
-  have_order_ = false;
+  impacts_.clear();
+  topology_next_.clear();
+  bool friction = false;
   // Slower than the speed gravity gives in two substeps: a resting contact,
   // not an impact, so no bounce (otherwise a block on the floor would hop).
   const double threshold = 2.0 * Vector::norm(g) * h + 1e-12;
@@ -157,34 +154,55 @@ void ContactSolver::prepare(const Components& k, double h, Vector g, const Solve
     // and resolves chains of them one after the other (a cradle). The solver
     // keeps the resting contacts, which CCD alone cannot hold.
     if (impact && !s.impacts) continue;
-    const double wc = inverse_mass(k.mass[p.c]), wb = inverse_mass(k.mass[p.b]);
-    ContactConstraint ct{p.c, p.b, axis, wc, wb, 1.0 / (wc + wb), 0.0, 0.0, 0.0, 0.0, 0.0, true};
+    const double wc = inverse_mass_[p.c], wb = inverse_mass_[p.b];
+    ContactConstraint ct{p.c, p.b, axis, true, wc, wb, 1.0 / (wc + wb), 0.0, 0.0, 0.0, 0.0, 0.0};
     if (impact) {
       // A real impact this substep: stopped here (target 0), then bounced by
       // e times the stopping impulse once the iterations are done.
       ct.restitution = std::min(k.restitution[p.c], k.restitution[p.b]);
       ct.resting = false;
       ct.toi = gap > 0.0 ? gap / -vn : 0.0;
+      impacts_.push_back(static_cast<std::uint32_t>(contacts_.size()));
     } else {
       // Close at most the gap (a speculative contact), never approach once touching.
       ct.target = gap > 0.0 ? -gap / h : 0.0;
     }
     contacts_.push_back(ct);
+    friction = friction || pair_friction(k, p.c, p.b) > 0.0;
+    const std::uint32_t flags = static_cast<std::uint32_t>(axis) | (wc == 0.0) << 2 | (wb == 0.0) << 3 |
+                                links(wc, k.velocity[p.c]) << 4 | links(wb, k.velocity[p.b]) << 5;
+    topology_next_.push_back({p.c, p.b, flags});
   }
   stats.contacts += static_cast<std::int64_t>(contacts_.size());
-  prepare_friction(k);
+  prepare_friction(k, friction);
+  schedule(k, g);
   // Velocities before any impulse, for the energy guard and the impact time.
-  v_start_.resize(k.size());
-  v_inelastic_.resize(k.size());
-  for (const ContactConstraint& ct : contacts_) v_start_[ct.c] = k.velocity[ct.c], v_start_[ct.b] = k.velocity[ct.b];
+  v_start_.resize(slot_body_.size());
+  v_inelastic_.resize(slot_body_.size());
+  for (std::size_t i = 0; i < slot_body_.size(); ++i) v_start_[i] = k.velocity[slot_body_[i]];
 }
 
 // A resting contact that was there last substep starts with the impulse it
-// ended with (a stack's weight is then carried from the start). Contacts
-// mostly come in the order of warm_ (pairs in registration order, ids mostly
-// registered in increasing order), so each search starts where the last one
-// ended when it can: a merge, not a binary search from scratch per contact.
+// ended with (a stack's weight is then carried from the start). When the
+// contacts are those of last substep, in the same order (schedule(): a
+// resting pile), contact i's impulse is last substep's i-th.
 void ContactSolver::warm_start(Components& k) {
+  if (restored_ || !same_topology_) {
+    warm_start_search(k);
+    return;
+  }
+  for (std::size_t i = 0; i < contacts_.size(); ++i)
+    if (contacts_[i].resting && last_jn_[i] > 0.0) warm_start_one(k, i, last_jn_[i], last_jt_[i]);
+}
+
+// Otherwise each contact's impulse is looked up by pair and axis in the
+// sorted list. Contacts mostly come in the order of the list (pairs in
+// registration order, ids mostly registered in increasing order), so each
+// search starts where the last one ended when it can: a merge, not a binary
+// search from scratch per contact.
+void ContactSolver::warm_start_search(Components& k) {
+  if (!restored_) warm_ = last_impulses(topology_next_);
+  restored_ = false;
   auto from = warm_.begin();
   for (ContactConstraint& ct : contacts_) {
     if (!ct.resting) continue;
@@ -199,17 +217,21 @@ void ContactSolver::warm_start(Components& k) {
     }
     const auto it = std::lower_bound(from, hi, probe);
     from = it;
-    if (it != warm_.end() && std::get<0>(*it) == kk && std::get<1>(*it) == ct.axis) {
-      ct.lambda = std::get<2>(*it);
-      apply(k, ct, ct.lambda);
-      if (!friction_.empty()) {
-        FrictionRow& f = friction_[static_cast<std::size_t>(&ct - contacts_.data())];
-        // Within the cone of this substep's start (mu may be 0 for a pair that had none).
-        f.lambda = std::clamp(std::get<3>(*it), -f.mu * ct.lambda, f.mu * ct.lambda);
-        if (f.lambda != 0.0) apply_tangent(k, ct, f.lambda);
-      }
-    }
+    if (it != warm_.end() && std::get<0>(*it) == kk && std::get<1>(*it) == ct.axis)
+      warm_start_one(k, static_cast<std::size_t>(&ct - contacts_.data()), std::get<2>(*it), std::get<3>(*it));
   }
+}
+
+// Contact i starts with the normal impulse jn and the tangential jt.
+void ContactSolver::warm_start_one(Components& k, std::size_t i, double jn, double jt) {
+  ContactConstraint& ct = contacts_[i];
+  ct.lambda = jn;
+  apply(k, ct, ct.lambda);
+  if (friction_.empty()) return;
+  FrictionRow& f = friction_[i];
+  // Within the cone of this substep's start (mu may be 0 for a pair that had none).
+  f.lambda = std::clamp(jt, -f.mu * ct.lambda, f.mu * ct.lambda);
+  if (f.lambda != 0.0) apply_tangent(k, ct, f.lambda);
 }
 
 // Sequential impulses with accumulated clamping, then the bottom-up pass.
@@ -219,13 +241,13 @@ void ContactSolver::warm_start(Components& k) {
 // depends only on the contacts, not on velocities: both relaxations share it.
 template <bool after_bounce>
 void ContactSolver::relax(Components& k, Vector g, const SolverSettings& s) {
-  for (ContactConstraint& ct : contacts_) ct.lambda2 = 0.0;
-  for (FrictionRow& f : friction_) f.lambda2 = 0.0;
   const auto target = [&](const ContactConstraint& ct) { return after_bounce && !ct.resting ? 0.0 : ct.target; };
+  load_rows<after_bounce>(k);
   if (friction_.empty())
-    iterate<after_bounce, false>(k, s);
+    iterate<false>(s);
   else
-    iterate<after_bounce, true>(k, s);
+    iterate<true>(s);
+  store_rows<after_bounce>(k);
   if (!s.shock_propagation || Vector::is_zero(g)) return;
   if (!have_order_) support_order_ = bottom_up(k, contacts_, g), have_order_ = true;
   for (const std::size_t i : support_order_) {
@@ -242,41 +264,133 @@ void ContactSolver::relax(Components& k, Vector g, const SolverSettings& s) {
   }
 }
 
-// Sequential impulses with accumulated clamping: the normal impulse never
-// pulls; with friction, the tangential one then stays within mu times the
-// normal impulse accumulated so far (Coulomb's cone, as Box2D clamps it).
-// `friction` is a compile-time constant: the frictionless loop is the one
-// that ran before friction existed.
-template <bool after_bounce, bool friction>
-void ContactSolver::iterate(Components& k, const SolverSettings& s) {
-  const auto target = [&](const ContactConstraint& ct) { return after_bounce && !ct.resting ? 0.0 : ct.target; };
+// The iterations' order (order_) and the bodies' slots. Each contact reads
+// and changes its two bodies' velocities only, so any order that keeps, for
+// every body, the order of its contacts gives the same bits as the given
+// one (by pair). In the given order nearly every contact shares a body with
+// the one before it (a body's contacts come together, and its last one
+// shares a body with the next body's first), so each waits for the one
+// before it to store its velocities. Here, within chunks of contacts (few
+// enough bodies to stay in cache), contacts are sorted by level: one more
+// than the highest level of the earlier contacts of their bodies. The
+// contacts of a level share no body, and the processor overlaps them.
+// A fixed body links nothing: its contacts add (0·j)·n to its velocity,
+// which leaves it as it is unless a component is -0 (then it links).
+// prepare() lists the contacts' keys for it.
+void ContactSolver::schedule(const Components& k, Vector g) {
+  // All this (and the support order) depends only on the contacts' bodies,
+  // axes and links (prepare() lists them in topology_next_), and on
+  // gravity's direction: a resting pile keeps them from substep to substep.
+  topology_.swap(topology_next_);
+  same_topology_ = topology_ == topology_next_;
+  if (scheduled_ && g == topology_g_ && same_topology_) return;
+  scheduled_ = true, have_order_ = false;
+  topology_g_ = g;
+  for (const EntityId e : slot_body_)
+    if (e < slot_of_.size()) slot_of_[e] = none;
+  slot_of_.resize(k.size(), none);
+  slot_body_.clear();
+  for (const ContactConstraint& ct : contacts_)
+    for (const EntityId e : {ct.c, ct.b})
+      if (slot_of_[e] == none) slot_of_[e] = static_cast<std::uint32_t>(slot_body_.size()), slot_body_.push_back(e);
+  constexpr std::size_t chunk = 4096;
+  const std::size_t n = contacts_.size();
+  last_level_.assign(slot_body_.size(), 0);  // per slot: the level after its last contact's, in this chunk
+  level_.resize(n);
+  order_.resize(n);
+  for (std::size_t start = 0; start < n; start += chunk) {
+    const std::size_t end = std::min(n, start + chunk);
+    std::uint32_t levels = 0;
+    for (std::size_t i = start; i < end; ++i) {
+      const ContactConstraint& ct = contacts_[i];
+      const bool lc = topology_[i].flags >> 4 & 1, lb = topology_[i].flags >> 5 & 1;
+      std::uint32_t& nc = last_level_[slot_of_[ct.c]];
+      std::uint32_t& nb = last_level_[slot_of_[ct.b]];
+      const std::uint32_t level = std::max(lc ? nc : 0, lb ? nb : 0);
+      if (lc) nc = level + 1;
+      if (lb) nb = level + 1;
+      level_[i] = level, levels = std::max(levels, level + 1);
+    }
+    // Stable counting sort of the chunk by level; then the chunk's bodies start again at 0.
+    level_count_.assign(levels + 1, 0);
+    for (std::size_t i = start; i < end; ++i) ++level_count_[level_[i] + 1];
+    for (std::size_t l = 1; l <= levels; ++l) level_count_[l] += level_count_[l - 1];
+    for (std::size_t i = start; i < end; ++i) order_[start + level_count_[level_[i]]++] = static_cast<std::uint32_t>(i);
+    for (std::size_t i = start; i < end; ++i) last_level_[slot_of_[contacts_[i].c]] = last_level_[slot_of_[contacts_[i].b]] = 0;
+  }
+}
+
+// The hot copies for a relaxation: the bodies' velocities and inverse
+// masses by slot, the contacts in order_ with the relaxation's targets and
+// accumulators (`after_bounce`: lambda2, no approach allowed at the impacts).
+template <bool after_bounce>
+void ContactSolver::load_rows(const Components& k) {
+  solver_bodies_.resize(slot_body_.size());
+  for (std::size_t i = 0; i < slot_body_.size(); ++i) {
+    const EntityId e = slot_body_[i];
+    solver_bodies_[i] = {k.velocity[e], inverse_mass_[e]};
+  }
+  rows_.resize(order_.size());
+  for (std::size_t i = 0; i < order_.size(); ++i) {
+    const ContactConstraint& ct = contacts_[order_[i]];
+    const double target = after_bounce && !ct.resting ? 0.0 : ct.target;
+    rows_[i] = {slot_of_[ct.c], slot_of_[ct.b], static_cast<std::uint32_t>(ct.axis), ct.inv_w, target,
+                after_bounce ? 0.0 : ct.lambda};
+  }
+  friction_rows_.resize(friction_.size());
+  for (std::size_t i = 0; i < friction_.size(); ++i) {
+    const FrictionRow& f = friction_[order_[i]];
+    friction_rows_[i] = {f.mu, after_bounce ? 0.0 : f.lambda};
+  }
+}
+
+// The relaxation's results back: accumulators and velocities.
+template <bool after_bounce>
+void ContactSolver::store_rows(Components& k) {
+  for (std::size_t i = 0; i < order_.size(); ++i) {
+    ContactConstraint& ct = contacts_[order_[i]];
+    (after_bounce ? ct.lambda2 : ct.lambda) = rows_[i].lambda;
+  }
+  for (std::size_t i = 0; i < friction_rows_.size(); ++i) {
+    FrictionRow& f = friction_[order_[i]];
+    (after_bounce ? f.lambda2 : f.lambda) = friction_rows_[i].lambda;
+  }
+  for (std::size_t i = 0; i < slot_body_.size(); ++i) k.velocity[slot_body_[i]] = solver_bodies_[i].v;
+}
+
+// Sequential impulses with accumulated clamping, on the hot copies: the
+// normal impulse never pulls; with friction, the tangential one then stays
+// within mu times the normal impulse accumulated so far (Coulomb's cone, as
+// Box2D clamps it). `friction` is a compile-time constant: the frictionless
+// loop reads no friction row.
+template <bool friction>
+void ContactSolver::iterate(const SolverSettings& s) {
   for (int it = 0; it < s.iterations; ++it) {
-    for (std::size_t i = 0; i < contacts_.size(); ++i) {
-      ContactConstraint& ct = contacts_[i];
-      const double vn = Vector::dot(k.velocity[ct.c] - k.velocity[ct.b], axis_normal[ct.axis]);
-      double& acc = after_bounce ? ct.lambda2 : ct.lambda;
-      const double lambda = std::max(acc - (vn - target(ct)) * ct.inv_w, 0.0);
-      apply(k, ct, lambda - acc);
-      acc = lambda;
+    for (std::size_t i = 0; i < rows_.size(); ++i) {
+      SolverRow& r = rows_[i];
+      SolverBody& bc = solver_bodies_[r.c];
+      SolverBody& bb = solver_bodies_[r.b];
+      const Vector n = axis_normal[r.axis];
+      const double vn = Vector::dot(bc.v - bb.v, n);
+      const double lambda = std::max(r.lambda - (vn - r.target) * r.inv_w, 0.0);
+      apply_normal_impulse(bc.v, bb.v, n, lambda - r.lambda, bc.w, bb.w);
+      r.lambda = lambda;
       if constexpr (friction) {
-        FrictionRow& f = friction_[i];
+        FrictionHot& f = friction_rows_[i];
         if (f.mu == 0.0) continue;
-        const double vt = Vector::dot(k.velocity[ct.c] - k.velocity[ct.b], tangent(axis_normal[ct.axis]));
-        double& acc_t = after_bounce ? f.lambda2 : f.lambda;
-        const double limit = f.mu * acc;
-        const double lt = std::clamp(acc_t - vt * ct.inv_w, -limit, limit);
-        apply_tangent(k, ct, lt - acc_t);
-        acc_t = lt;
+        const double vt = Vector::dot(bc.v - bb.v, tangent(n));
+        const double limit = f.mu * lambda;
+        const double lt = std::clamp(f.lambda - vt * r.inv_w, -limit, limit);
+        apply_normal_impulse(bc.v, bb.v, tangent(n), lt - f.lambda, bc.w, bb.w);
+        f.lambda = lt;
       }
     }
   }
 }
 
 // One friction row per contact if any contact has friction, none otherwise.
-void ContactSolver::prepare_friction(const Components& k) {
+void ContactSolver::prepare_friction(const Components& k, bool any) {
   friction_.clear();
-  bool any = false;
-  for (const ContactConstraint& ct : contacts_) any = any || pair_friction(k, ct.c, ct.b) > 0.0;
   if (!any) return;
   friction_.reserve(contacts_.size());
   for (const ContactConstraint& ct : contacts_)
@@ -289,11 +403,12 @@ void ContactSolver::prepare_friction(const Components& k) {
 // the energy never grows, even for simultaneous contacts (a target velocity
 // -e·v_n per contact, Newton's way, can gain energy there).
 void ContactSolver::restitution(Components& k, Vector g, const SolverSettings& s) {
-  for (const ContactConstraint& ct : contacts_)
-    v_inelastic_[ct.c] = k.velocity[ct.c], v_inelastic_[ct.b] = k.velocity[ct.b];
+  for (std::size_t i = 0; i < slot_body_.size(); ++i) v_inelastic_[i] = k.velocity[slot_body_[i]];
   bool bounced = false;
-  for (ContactConstraint& ct : contacts_)
-    if (!ct.resting && ct.restitution > 0.0 && ct.lambda > 0.0) apply(k, ct, ct.restitution * ct.lambda), bounced = true;
+  for (const std::uint32_t i : impacts_) {
+    const ContactConstraint& ct = contacts_[i];
+    if (ct.restitution > 0.0 && ct.lambda > 0.0) apply(k, ct, ct.restitution * ct.lambda), bounced = true;
+  }
   // The bounce impulses were computed contact by contact: a light block
   // lying on the floor when a heavy one lands on it gets e times its share
   // pushing it into the floor, which nothing would then hold. Relax again.
@@ -314,8 +429,8 @@ void ContactSolver::restitution(Components& k, Vector g, const SolverSettings& s
 // the floor then rests instead of hopping g·h, and bounces do not drift the
 // energy up.
 void ContactSolver::impact_time(Components& k, double h, Vector g) {
-  for (const ContactConstraint& ct : contacts_) {
-    if (ct.resting) continue;
+  for (const std::uint32_t i : impacts_) {
+    const ContactConstraint& ct = contacts_[i];
     const Vector n = axis_normal[ct.axis];
     const Vector a = (ct.wc > 0.0 ? g : Vector{}) - (ct.wb > 0.0 ? g : Vector{});
     const double vn = Vector::dot(k.velocity[ct.c] - k.velocity[ct.b], n);
@@ -326,38 +441,54 @@ void ContactSolver::impact_time(Components& k, double h, Vector g) {
   // The shift uses each body's net velocity change (a light block lying on
   // the floor when a heavy one lands on it is held by the floor: it must not
   // be shifted by what the heavy one's impulse alone would do), and its
-  // earliest such impact.
-  toi_.assign(k.size(), infinity);
-  for (const ContactConstraint& ct : contacts_) {
-    if (ct.resting || ct.toi <= 0.0) continue;
+  // earliest such impact. toi_ is infinite but while this runs.
+  toi_.resize(k.size(), infinity);
+  for (const std::uint32_t i : impacts_) {
+    const ContactConstraint& ct = contacts_[i];
+    if (ct.toi <= 0.0) continue;
     toi_[ct.c] = std::min(toi_[ct.c], ct.toi);
     toi_[ct.b] = std::min(toi_[ct.b], ct.toi);
   }
-  for (const ContactConstraint& ct : contacts_) {
-    for (const EntityId e : {ct.c, ct.b}) {
-      if (!(toi_[e] < infinity) || !std::isfinite(k.mass[e])) continue;
-      k.position[e] = k.position[e] + toi_[e] * (v_start_[e] - k.velocity[e]);
+  for (const std::uint32_t i : impacts_) {
+    for (const EntityId e : {contacts_[i].c, contacts_[i].b}) {
+      if (toi_[e] < infinity && std::isfinite(k.mass[e]))
+        k.position[e] = k.position[e] + toi_[e] * (v_start_[slot_of_[e]] - k.velocity[e]);
       toi_[e] = infinity;  // once per body
     }
   }
 }
 
-// The resting contacts' impulses, for the next substep's warm start.
+// The resting contacts' impulses, for the next substep's warm start, by
+// contact (last_jn_: 0 for none); the sorted list is made only when asked for.
 void ContactSolver::store() {
-  std::vector<std::tuple<std::uint64_t, int, double, double>> next_warm;
+  last_jn_.resize(contacts_.size());
+  last_jt_.resize(contacts_.size());
   for (std::size_t i = 0; i < contacts_.size(); ++i) {
     const ContactConstraint& ct = contacts_[i];
-    const double jt = friction_.empty() ? 0.0 : friction_[i].lambda + friction_[i].lambda2;
-    if (ct.resting && ct.lambda + ct.lambda2 > 0.0) next_warm.emplace_back(key(ct.c, ct.b), ct.axis, ct.lambda + ct.lambda2, jt);
+    const bool keep = ct.resting && ct.lambda + ct.lambda2 > 0.0;
+    last_jn_[i] = keep ? ct.lambda + ct.lambda2 : 0.0;
+    last_jt_[i] = friction_.empty() ? 0.0 : friction_[i].lambda + friction_[i].lambda2;
   }
-  if (!std::is_sorted(next_warm.begin(), next_warm.end())) std::sort(next_warm.begin(), next_warm.end());
-  warm_ = std::move(next_warm);
+  restored_ = false;
+}
+
+// The impulses store() kept, as the sorted list of (pair key, axis, normal
+// impulse, tangential impulse); `contacts`: the keys of the contacts they were stored for.
+std::vector<std::tuple<std::uint64_t, int, double, double>> ContactSolver::last_impulses(
+    std::span<const TopologyKey> contacts) const {
+  std::vector<std::tuple<std::uint64_t, int, double, double>> out;
+  for (std::size_t i = 0; i < last_jn_.size(); ++i)
+    if (last_jn_[i] > 0.0)
+      out.emplace_back(key(contacts[i].c, contacts[i].b), static_cast<int>(contacts[i].flags & 3), last_jn_[i], last_jt_[i]);
+  if (!std::is_sorted(out.begin(), out.end())) std::sort(out.begin(), out.end());
+  return out;
 }
 
 std::vector<WarmImpulse> ContactSolver::warm_impulses() const {
+  const auto warm = restored_ ? warm_ : last_impulses(topology_);
   std::vector<WarmImpulse> out;
-  out.reserve(warm_.size());
-  for (const auto& [kk, axis, jn, jt] : warm_)
+  out.reserve(warm.size());
+  for (const auto& [kk, axis, jn, jt] : warm)
     out.push_back({{static_cast<EntityId>(kk >> 32), static_cast<EntityId>(kk & 0xFFFFFFFFu)}, axis, jn, jt});
   return out;
 }
@@ -366,6 +497,7 @@ void ContactSolver::restore(std::span<const WarmImpulse> impulses) {
   warm_.clear();
   for (const WarmImpulse& w : impulses) warm_.emplace_back(w.pair.key(), w.axis, w.jn, w.jt);
   std::sort(warm_.begin(), warm_.end());
+  restored_ = true;
 }
 
 // Poisson's restitution keeps the energy from growing only when the
@@ -403,8 +535,9 @@ void ContactSolver::guard_energy(Components& k) {
   for (const EntityId e : bodies_) {
     const std::uint32_t i = island_[e];
     if (s_rest[i] == 1.0 && s_back[i] == 1.0) continue;
-    const Vector vi = v_start_[e] + s_back[i] * (v_inelastic_[e] - v_start_[e]);
-    k.velocity[e] = vi + s_rest[i] * (k.velocity[e] - v_inelastic_[e]);
+    const std::uint32_t slot = slot_of_[e];
+    const Vector vi = v_start_[slot] + s_back[i] * (v_inelastic_[slot] - v_start_[slot]);
+    k.velocity[e] = vi + s_rest[i] * (k.velocity[e] - v_inelastic_[slot]);
     ++stats.energy_clamps;
   }
 }
@@ -414,15 +547,13 @@ void ContactSolver::guard_energy(Components& k) {
 // terms, and rounding is monotone): nothing to do. A resting pile is the
 // common case, and this skips the islands' bookkeeping there.
 bool ContactSolver::any_body_gained(const Components& k) const {
-  const auto body_gained = [&](EntityId e) {
+  for (std::size_t i = 0; i < slot_body_.size(); ++i) {
+    const EntityId e = slot_body_[i];
     const double m = k.mass[e];
-    const Vector v0 = v_start_[e], v1 = k.velocity[e];
-    return 0.5 * m * Vector::dot(v1, v1) > 0.5 * m * Vector::dot(v0, v0);
-  };
-  bool gained = false;
-  for (const ContactConstraint& ct : contacts_)
-    gained = gained || (ct.wc > 0.0 && body_gained(ct.c)) || (ct.wb > 0.0 && body_gained(ct.b));
-  return gained;
+    const Vector v0 = v_start_[i], v1 = k.velocity[e];
+    if (std::isfinite(m) && 0.5 * m * Vector::dot(v1, v1) > 0.5 * m * Vector::dot(v0, v0)) return true;
+  }
+  return false;
 }
 
 // The islands of touching finite bodies (union-find over the contacts), and
@@ -460,7 +591,7 @@ void ContactSolver::island_energies(const Components& k) {
     const std::uint32_t i = root_index_[find(e)];
     island_[e] = i;
     const double m = k.mass[e];
-    const Vector v0 = v_start_[e], vi = v_inelastic_[e], v1 = k.velocity[e];
+    const Vector v0 = v_start_[slot_of_[e]], vi = v_inelastic_[slot_of_[e]], v1 = k.velocity[e];
     const Vector rest = v1 - vi, back = vi - v0;
     IslandEnergy& su = sums_[i];
     su.start += 0.5 * m * Vector::dot(v0, v0);
@@ -483,44 +614,74 @@ void ContactSolver::solve_positions(Components& k, std::span<const EntityId> ent
   });
 }
 
-// The contacts within the margin; whether any overlaps by more than the slop.
+// Whether any pair overlaps by more than the slop; if so, the contacts
+// within the margin. A resting pile often has no such overlap: then the
+// look stops there, without listing the contacts.
 bool ContactSolver::prepare_positions(const Components& k, const SolverSettings& s) {
-  contacts_.clear();
-  bool any_overlap = false;
+  positions_.clear();
+  const auto overlaps = [&](const Pair& p) { return best_axis(k, p.c, p.b).second < -s.slop; };
+  if (std::none_of(pairs_.begin(), pairs_.end(), overlaps)) return false;
   for (const Pair& p : pairs_) {
     const auto [axis, gap] = best_axis(k, p.c, p.b);
-    if (gap > s.margin) continue;
-    any_overlap = any_overlap || gap < -s.slop;
-    const double wc = inverse_mass(k.mass[p.c]), wb = inverse_mass(k.mass[p.b]);
-    contacts_.push_back(ContactConstraint{p.c, p.b, axis, wc, wb, 1.0 / (wc + wb), 0, 0, 0, 0, 0, true});
+    if (!(gap > s.margin)) positions_.push_back({p.c, p.b, axis, 0.0, 0.0, 0.0, 0.0});
   }
-  return any_overlap;
+  return true;
+}
+
+// Signed distance between the boxes of a position contact along its axis
+// (negative: overlap), from their Minkowski difference s = b ⊖ c (the
+// sheet's mdiff): -x: s.x, +x: -(s.x + s.w), -y: s.y, +y: -(s.y + s.h).
+// Rect::mdiff's arithmetic, written out with the box sizes it adds taken
+// once per substep (same operations in the same order, so the same bits):
+// this runs per contact per iteration.
+// Selects, not branches: the axes of a pile's contacts alternate unpredictably.
+inline double ContactSolver::gap(const Components& k, const PositionContact& ct) {
+  const Vector pc = k.position[ct.c], pb = k.position[ct.b];
+  const bool y = ct.axis >= 2;
+  const double d = (y ? pb.y : pb.x) - (y ? pc.y : pc.x) - ct.size_c;
+  return ct.axis & 1 ? -(d + ct.sizes) : d;
 }
 
 // Non-linear Gauss-Seidel on positions, shared in proportion to inverse
 // masses, then the same bottom-up pass as the velocities'.
 void ContactSolver::project(Components& k, Vector g, const SolverSettings& s) {
+  position_keys_next_.clear();
+  for (PositionContact& ct : positions_) {
+    const Rect rc = k.box[ct.c], rb = k.box[ct.b];
+    const bool x = ct.axis < 2;
+    ct.size_c = x ? rc.width : rc.height;
+    ct.sizes = x ? rb.width + rc.width : rb.height + rc.height;
+    const double wc = inverse_mass(k.mass[ct.c]), wb = inverse_mass(k.mass[ct.b]);
+    const double w = wc + wb;
+    ct.share_c = wc / w, ct.share_b = wb / w;
+    const auto flags = static_cast<std::uint32_t>(ct.axis) | (wc == 0.0) << 2 | (wb == 0.0) << 3;
+    position_keys_next_.push_back({ct.c, ct.b, flags});
+  }
   for (int it = 0; it < s.iterations; ++it) {
-    for (const ContactConstraint& ct : contacts_) {
-      const double depth = -gap_along(k, ct.c, ct.b, ct.axis) - s.slop;
+    for (const PositionContact& ct : positions_) {
+      const double depth = -gap(k, ct) - s.slop;
       if (!(depth > 0.0)) continue;
       const Vector n = axis_normal[ct.axis];
-      const double w = ct.wc + ct.wb;
       const double push = s.projection * depth;
-      k.position[ct.c] = k.position[ct.c] + (push * (ct.wc / w)) * n;
-      k.position[ct.b] = k.position[ct.b] - (push * (ct.wb / w)) * n;
+      k.position[ct.c] = k.position[ct.c] + (push * ct.share_c) * n;
+      k.position[ct.b] = k.position[ct.b] - (push * ct.share_b) * n;
     }
   }
   if (!s.shock_propagation || Vector::is_zero(g)) return;
-  for (const std::size_t i : bottom_up(k, contacts_, g)) {
-    const ContactConstraint& ct = contacts_[i];
-    const double depth = -gap_along(k, ct.c, ct.b, ct.axis) - s.slop;
+  // The order depends only on the contacts' bodies, axes and fixed ends, and
+  // on gravity: a resting pile keeps it from substep to substep.
+  position_keys_.swap(position_keys_next_);
+  if (!have_position_order_ || g != position_g_ || position_keys_ != position_keys_next_)
+    position_order_ = bottom_up(k, positions_, g), position_g_ = g, have_position_order_ = true;
+  for (const std::size_t i : position_order_) {
+    const PositionContact& ct = positions_[i];
+    const double depth = -gap(k, ct) - s.slop;
     if (!(depth > 0.0)) continue;
     const Vector n = axis_normal[ct.axis];
     if (support_sign(ct.axis, g) > 0) {
-      if (ct.wc > 0.0) k.position[ct.c] = k.position[ct.c] + depth * n;
+      if (std::isfinite(k.mass[ct.c])) k.position[ct.c] = k.position[ct.c] + depth * n;
     } else {
-      if (ct.wb > 0.0) k.position[ct.b] = k.position[ct.b] - depth * n;
+      if (std::isfinite(k.mass[ct.b])) k.position[ct.b] = k.position[ct.b] - depth * n;
     }
   }
 }

@@ -26,6 +26,13 @@
 //     ground up, the lower body treated as immovable. It runs only on bodies
 //     that rest on a fixed one through such contacts; free bodies keep the
 //     plain, momentum-conserving impulses.
+//     The iterations run on a hot copy (schedule(), load_rows()): the
+//     bodies' velocities and inverse masses by a dense slot, the contacts'
+//     few fields they read, in an order that keeps every body's contacts in
+//     the given order (so the same bits) but puts contacts that share no
+//     body side by side, for the processor to overlap. What depends only on
+//     which contacts there are (that order, the slots, the bottom-up order,
+//     the warm start's matching) is kept while they stay the same.
 //  2. solve_positions (stage `positions`), after Move: what still overlaps by more than `slop` is
 //     projected apart (non-linear Gauss-Seidel on positions, shared in
 //     proportion to inverse masses, then the same bottom-up pass). Positions
@@ -72,6 +79,8 @@ struct SolverStats {
 struct ContactConstraint {
   EntityId c, b;
   int axis;          // 0: -x, 1: +x, 2: -y, 3: +y (the normal that moves c away from b)
+  bool resting;      // no restitution target: its impulse may warm start the next substep
+                     // (here, not last: it fills the padding after axis)
   double wc, wb;     // inverse masses
   double inv_w;      // 1 / (wc + wb): the iterations multiply by it (a division there sat on the dependency chain)
   double target;     // lowest allowed (v_c - v_b)·n
@@ -79,7 +88,6 @@ struct ContactConstraint {
   double lambda2;    // accumulated in the relaxation after the bounces
   double restitution;  // of an impact: bounce impulse = restitution × lambda
   double toi;          // of an impact found before touching: ms into the substep
-  bool resting;      // no restitution target: its impulse may warm start the next substep
 };
 
 // A contact's friction, beside its ContactConstraint (same index), kept only
@@ -112,12 +120,19 @@ class ContactSolver {
  private:
   // The stages of solve_velocities, in order.
   void prepare(const Components& k, double h, Vector g, const SolverSettings& s);
+  void schedule(const Components& k, Vector g);
   void warm_start(Components& k);
+  void warm_start_search(Components& k);
+  void warm_start_one(Components& k, std::size_t i, double jn, double jt);
   template <bool after_bounce>
   void relax(Components& k, Vector g, const SolverSettings& s);
-  template <bool after_bounce, bool friction>
-  void iterate(Components& k, const SolverSettings& s);
-  void prepare_friction(const Components& k);
+  template <bool after_bounce>
+  void load_rows(const Components& k);
+  template <bool after_bounce>
+  void store_rows(Components& k);
+  template <bool friction>
+  void iterate(const SolverSettings& s);
+  void prepare_friction(const Components& k, bool any);
   void restitution(Components& k, Vector g, const SolverSettings& s);
   void guard_energy(Components& k);
   bool any_body_gained(const Components& k) const;
@@ -127,13 +142,62 @@ class ContactSolver {
   // solve_positions' stages.
   bool prepare_positions(const Components& k, const SolverSettings& s);
   void project(Components& k, Vector g, const SolverSettings& s);
+  // A contact of the position stage: the pair and its axis, and (project())
+  // c's size along it, the sum of both sizes, each body's share of a correction.
+  struct PositionContact {
+    EntityId c, b;
+    int axis;  // as ContactConstraint::axis
+    double size_c, sizes, share_c, share_b;
+  };
+  static double gap(const Components& k, const PositionContact& ct);
+  std::vector<PositionContact> positions_;
 
   std::vector<Pair> pairs_;
   std::vector<ContactConstraint> contacts_;
+  // The iterations' copy of the contacts and their bodies (schedule()):
+  // what the hot loop reads and nothing else, bodies by a dense slot.
+  struct SolverBody {
+    Vector v;  // velocity
+    double w;  // inverse mass
+  };
+  struct SolverRow {
+    std::uint32_t c, b;  // slots
+    std::uint32_t axis;
+    double inv_w, target, lambda;  // as ContactConstraint's (lambda: the relaxation's accumulator)
+  };
+  struct FrictionHot {
+    double mu, lambda;
+  };
+  std::vector<std::uint32_t> slot_of_;     // by entity id: slot, or none when not in a contact
+  std::vector<EntityId> slot_body_;        // by slot: the entity
+  std::vector<SolverBody> solver_bodies_;  // by slot
+  std::vector<std::uint32_t> order_;       // contacts in the iterations' order
+  std::vector<SolverRow> rows_;            // contacts_[order_[i]], hot fields
+  std::vector<FrictionHot> friction_rows_; // friction_[order_[i]], hot fields
+  std::vector<std::uint32_t> last_level_, level_, level_count_;  // schedule()'s scratch
+  // What order_, the slots and support_order_ were made for (schedule()):
+  // each contact's bodies, axis, fixed ends (bits 2, 3) and links (bits 4, 5).
+  struct TopologyKey {
+    EntityId c, b;
+    std::uint32_t flags;
+    friend bool operator==(const TopologyKey&, const TopologyKey&) = default;
+  };
+  std::vector<TopologyKey> topology_, topology_next_;
+  bool scheduled_ = false;
+  bool same_topology_ = false;  // this substep's contacts are last substep's (topology_next_ holds last substep's)
+  Vector topology_g_{};
+  // The position stage's bottom-up order, and what it was made for: each
+  // contact's bodies, axis and fixed ends (bits 2, 3), gravity.
+  std::vector<std::size_t> position_order_;
+  std::vector<TopologyKey> position_keys_, position_keys_next_;
+  Vector position_g_{};
+  bool have_position_order_ = false;
   std::vector<FrictionRow> friction_;          // empty, or one per contact
   std::vector<std::size_t> support_order_;     // bottom-up order of this substep's contacts
   bool have_order_ = false;
-  std::vector<Vector> v_start_, v_inelastic_;  // indexed by entity id
+  std::vector<double> inverse_mass_;           // by entity id, this substep's (solve_velocities)
+  std::vector<Vector> v_start_, v_inelastic_;  // by slot
+  std::vector<std::uint32_t> impacts_;         // the contacts that are not resting, in order
   // The energy guard's islands: kinetic energies at the start, after the
   // inelastic relaxation and at the end, and the coefficients of the
   // quadratics in the blend factors (rest: the bounces; back: towards the start).
@@ -146,9 +210,15 @@ class ContactSolver {
   std::vector<std::uint32_t> island_;
   std::vector<std::uint8_t> seen_;             // guard_energy: bodies of the contacts
   std::vector<std::uint32_t> root_index_;      // guard_energy: island of each root
-  std::vector<double> toi_;                    // earliest impact time per body, indexed by entity id
-  // Impulses of the previous substep's resting contacts: (pair key, axis,
-  // normal impulse, tangential impulse), sorted.
+  std::vector<double> toi_;                    // earliest impact time per body, by entity id (infinity between calls)
+  // The impulses of the last substep's contacts (store()), by contact; the
+  // normal one 0 for a contact that does not warm start the next substep.
+  std::vector<double> last_jn_, last_jt_;
+  std::vector<std::tuple<std::uint64_t, int, double, double>> last_impulses(std::span<const TopologyKey> contacts) const;
+  // The warm_start's sorted list (pair key, axis, normal impulse, tangential
+  // impulse): made from the above when the contacts changed, or given by
+  // restore() (restored_: the list holds the impulses, the above do not).
+  bool restored_ = false;
   std::vector<std::tuple<std::uint64_t, int, double, double>> warm_;
 };
 

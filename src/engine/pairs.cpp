@@ -127,7 +127,7 @@ void BroadPhase::find(const Components& k, std::span<const EntityId> entities, d
     reuse = f.x0 <= s.x0 && f.y0 <= s.y0 && s.x1 <= f.x1 && s.y1 <= f.y1 &&
             fixed_[i] == !std::isfinite(k.mass[entities[i]]);
   }
-  if (!reuse) fat_rebuild(k, entities);
+  if (!reuse) fat_rebuild(k, entities, h);
   out.clear();
   out.reserve(grid_.pairs().size());
   for (const PairKey key : grid_.pairs()) {
@@ -152,31 +152,35 @@ void BroadPhase::find_selected(const Components& k, std::span<const EntityId> en
     return;
   }
   out.clear();
-  current_.resize(entities.size());
-  for (std::size_t i = 0; i < entities.size(); ++i) current_[i] = swept(k, entities[i], h, 0.0);
+  scan_.resize(entities.size());
+  for (std::size_t i = 0; i < entities.size(); ++i) scan_[i] = swept(k, entities[i], h, 0.0);
   const bool rules = k.any_rules();
   for (std::size_t i = 0; i < entities.size(); ++i) {
     if (!selected[entities[i]]) continue;
-    const Bounds& a = current_[i];
+    const Bounds& a = scan_[i];
     for (std::size_t j = 0; j < entities.size(); ++j) {
       const EntityId c = entities[std::min(i, j)], b = entities[std::max(i, j)];
       if (j == i || (selected[entities[j]] && j < i)) continue;  // a pair of two selected bodies once
       if (!std::isfinite(k.mass[c]) && !std::isfinite(k.mass[b])) continue;
-      const Bounds& o = current_[j];
+      const Bounds& o = scan_[j];
       if (!(a.x0 <= o.x1 && o.x0 <= a.x1 && a.y0 <= o.y1 && o.y0 <= a.y1)) continue;
       if (!rules || solvable(k, c, b, h)) out.push_back({c, b});
     }
   }
 }
 
-void BroadPhase::fat_rebuild(const Components& k, std::span<const EntityId> entities) {
+void BroadPhase::fat_rebuild(const Components& k, std::span<const EntityId> entities, double h) {
   const std::size_t n = entities.size();
   fat_.resize(n);
   boxes_.resize(n);
   fixed_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const Bounds& c = current_[i];
-    fat_[i] = {c.x0 - fat_margin, c.y0 - fat_margin, c.x1 + fat_margin, c.y1 + fat_margin};
+    // Ahead along the velocity too: a falling body stays in its box for a
+    // few calls instead of leaving it at every one.
+    const Vector d = (fat_steps * h) * k.velocity[entities[i]];
+    const double ex = fat_margin + std::abs(d.x), ey = fat_margin + std::abs(d.y);
+    fat_[i] = {c.x0 - ex, c.y0 - ey, c.x1 + ex, c.y1 + ey};
     // Rounded outwards to float: the grid's boxes contain the exact ones, so
     // it finds a superset of the pairs, which the exact test trims.
     boxes_[i] = Aabb::outward(fat_[i].x0, fat_[i].y0, fat_[i].x1, fat_[i].y1);

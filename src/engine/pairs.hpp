@@ -13,8 +13,9 @@
 //  - find(h, reach): every pair whose boxes, each swept over h ms at its
 //    velocity and grown by `reach`, overlap or touch; exactly the all-pairs
 //    definition brute_force_pairs() keeps for the tests. The grid is built
-//    on boxes grown by `fat_margin` and kept while every body stays inside
-//    its fat box: a resting pile costs a filter per call, not a grid.
+//    on boxes grown by `fat_margin` (and by `fat_steps` calls' motion along
+//    the velocity) and kept while every body stays inside its fat box: a
+//    resting pile, or bodies falling together, cost a filter per call, not a grid.
 // Pairs of two infinite masses are never listed (two walls never collide),
 // nor pairs the bodies' contact rules exclude (engine/rules.hpp: filters,
 // sensors, one-way platforms), tested only while some body has rules.
@@ -72,6 +73,8 @@ class BroadPhase {
   // px. Larger keeps a grid longer but lists more candidates to filter;
   // 2 px is a fifth of the bench's blocks and above a resting body's drift.
   double fat_margin = 2.0;
+  // Calls of h ms ahead that a fat box reaches along its body's velocity.
+  double fat_steps = 3.0;
 
   // What the last course pass did, for the benchmark.
   struct Stats {
@@ -103,7 +106,7 @@ class BroadPhase {
   }
   bool refresh(const Components& k, std::uint32_t i, PairKey current);
   // find().
-  void fat_rebuild(const Components& k, std::span<const EntityId> entities);
+  void fat_rebuild(const Components& k, std::span<const EntityId> entities, double h);
 
   UniformGrid grid_;
   std::vector<EntityId> entities_;   // the bodies of find()'s fat grid, in registration order
@@ -123,6 +126,7 @@ class BroadPhase {
 
   // find() state.
   std::vector<Bounds> current_;  // this call's exact boxes
+  std::vector<Bounds> scan_;     // find_selected()'s swept boxes
   std::vector<Bounds> fat_;      // the boxes the grid was built on
 };
 
