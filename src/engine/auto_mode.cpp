@@ -89,9 +89,16 @@ void AutoMode::after_solver(const Components& k, std::span<const EntityId> bodie
       if (std::isfinite(k.mass[e])) start_[e] = start_[e] == 0.0 ? ct.toi : std::min(start_[e], ct.toi);
   }
   start_set_ = true;
+  // And only if what is left of the substep after its impact still carries
+  // it past its reach.
+  const auto still_fast = [&](EntityId e) {
+    const CcdSelection sel{fast_, start_, thinnest_};
+    const double left = h - start_[e], reach = sel.reach(k, e);
+    return left * left * Vector::dot(k.velocity[e], k.velocity[e]) > reach * reach;
+  };
   fast_count_ = 0;
   for (const EntityId e : bodies) {
-    fast_[e] = fast_[e] && impacted_[e];
+    fast_[e] = fast_[e] && impacted_[e] && still_fast(e);
     fast_count_ += fast_[e];
   }
 }
