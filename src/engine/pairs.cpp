@@ -176,11 +176,12 @@ void BroadPhase::fat_rebuild(const Components& k, std::span<const EntityId> enti
   fixed_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const Bounds& c = current_[i];
-    // Ahead along the velocity too: a falling body stays in its box for a
-    // few calls instead of leaving it at every one.
+    // Ahead along the velocity too, and only ahead: a falling body stays in
+    // its box for a few calls instead of leaving it at every one, and the
+    // box does not grow behind it (where it only adds candidate pairs).
     const Vector d = (fat_steps * h) * k.velocity[entities[i]];
-    const double ex = fat_margin + std::abs(d.x), ey = fat_margin + std::abs(d.y);
-    fat_[i] = {c.x0 - ex, c.y0 - ey, c.x1 + ex, c.y1 + ey};
+    fat_[i] = {c.x0 - fat_margin + std::min(d.x, 0.0), c.y0 - fat_margin + std::min(d.y, 0.0),
+               c.x1 + fat_margin + std::max(d.x, 0.0), c.y1 + fat_margin + std::max(d.y, 0.0)};
     // Rounded outwards to float: the grid's boxes contain the exact ones, so
     // it finds a superset of the pairs, which the exact test trims.
     boxes_[i] = Aabb::outward(fat_[i].x0, fat_[i].y0, fat_[i].x1, fat_[i].y1);
