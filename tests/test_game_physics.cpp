@@ -556,7 +556,7 @@ BOOST_AUTO_TEST_CASE(bad_values_are_named) {
 
 BOOST_AUTO_TEST_CASE(a_bad_auto_state_is_named) {
   BOOST_TEST(error_of(R"({"world": {"solver": "auto"}, "state": {"auto": {"hold": 99}}})") ==
-             "bad.json: state.auto.hold: must be an integer in [0, 30] (got 99)");
+             "bad.json: state.auto.hold: must be an integer in [0, 8] (got 99)");
   BOOST_TEST(error_of(R"({"world": {"solver": "auto"}, "state": {"auto": {"pressed": [[2, 1, 3]]}}})") ==
              "bad.json: state.auto.pressed[0]: must name two bodies c < b < 4 (got 2, 1)");
 }

@@ -60,7 +60,7 @@ struct AutoStats {
 class AutoMode {
  public:
   // Substeps the solver is kept after its last load-carrying contact.
-  static constexpr int hold = 30;
+  static constexpr int hold = 8;
   // Substeps in a row a pair of finite bodies must be pressed together
   // (an impulse between them) to count as a persistent contact.
   static constexpr int persist = 3;
