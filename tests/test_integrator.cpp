@@ -26,9 +26,8 @@ constexpr Mode modes[] = {{"course", Solver::course, false},
                           {"ccd", Solver::course, true},
                           {"stable+ccd", Solver::stable, true}};
 
-// A block thrown inside the course's walls (so that the solver and CCD have
-// pairs to look at), run to t_end; returns the world.
-World thrown(const Mode& m, Integrator integrator, double dt, int substeps) {
+// The course's walls under gravity g, in a mode, with an integrator.
+World walled(const Mode& m, Integrator integrator, double dt = course_dt, int substeps = 1) {
   Params p;
   p.dt = dt;
   p.substeps = substeps;
@@ -38,6 +37,13 @@ World thrown(const Mode& m, Integrator integrator, double dt, int substeps) {
   p.integrator = integrator;
   World w = physics_world(p);
   Game::init_walls(w);
+  return w;
+}
+
+// A block thrown inside the course's walls (so that the solver and CCD have
+// pairs to look at), run to t_end; returns the world.
+World thrown(const Mode& m, Integrator integrator, double dt, int substeps) {
+  World w = walled(m, integrator, dt, substeps);
   const EntityId b = Block::make(w, x0.x, x0.y, 10, 10, grey, 1.0).id;
   w.components.velocity[b] = v0;
   const auto frames = std::lround(t_end / dt);
@@ -95,13 +101,7 @@ BOOST_AUTO_TEST_CASE(a_block_resting_on_the_floor_stays_there) {
   for (const Mode& m : modes)
     for (const Integrator integrator : {Integrator::course, Integrator::exact}) {
       BOOST_TEST_CONTEXT(m.name << ", integrator " << name(integrator)) {
-        Params p;
-        p.gravity = g;
-        p.solver = m.solver;
-        p.ccd = m.ccd;
-        p.integrator = integrator;
-        World w = physics_world(p);
-        Game::init_walls(w);
+        World w = walled(m, integrator);
         const EntityId b = Block::make(w, 380, 540, 20, 20, grey, 1.0, 0.0).id;
         for (int f = 0; f < 300; ++f) Game::step(w);
         const double y = w.components.position[b].y;
@@ -123,13 +123,7 @@ BOOST_AUTO_TEST_CASE(a_block_resting_on_the_floor_stays_there) {
 BOOST_AUTO_TEST_CASE(bounces_stay_inside_the_walls_without_gaining_energy) {
   for (const Mode& m : modes) {
     BOOST_TEST_CONTEXT(m.name) {
-      Params p;
-      p.gravity = g;
-      p.solver = m.solver;
-      p.ccd = m.ccd;
-      p.integrator = Integrator::exact;
-      World w = physics_world(p);
-      Game::init_walls(w);
+      World w = walled(m, Integrator::exact);
       const EntityId b = Block::make(w, 100, 100, 20, 20, grey, 1.0, 1.0).id;
       w.components.velocity[b] = {0.4, 0.1};
       const auto energy = [&] {

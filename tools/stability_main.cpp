@@ -17,16 +17,22 @@ struct Cell {
   double seconds = 0;  // the run's wall time: the fastest of a few runs when a run is short
 };
 
+// One run of a case in a mode, with its wall time.
+Cell timed(const StabilityCase& c, const Mode& m) {
+  const auto t0 = std::chrono::steady_clock::now();
+  Cell cell{c.run(m)};
+  cell.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return cell;
+}
+
 // A short case is run again until 0.2 s have passed (at most 25 runs) and
 // its fastest run kept: single runs of a few microseconds are mostly noise.
 Cell run_cell(const StabilityCase& c, const Mode& m) {
-  Cell cell;
-  double total = 0;
-  for (int run = 0; run < 25 && total < 0.2; ++run) {
-    const auto t0 = std::chrono::steady_clock::now();
-    cell.outcome = c.run(m);
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    cell.seconds = run == 0 ? s : std::min(cell.seconds, s);
+  Cell cell = timed(c, m);
+  double total = cell.seconds;
+  for (int run = 1; run < 25 && total < 0.2; ++run) {
+    const double s = timed(c, m).seconds;
+    cell.seconds = std::min(cell.seconds, s);
     total += s;
   }
   return cell;
@@ -36,12 +42,6 @@ std::string ms(double seconds) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3g ms", seconds * 1e3);
   return buf;
-}
-
-double seconds_of(const StabilityCase& c, const Mode& m) {
-  const auto t0 = std::chrono::steady_clock::now();
-  c.run(m);
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 // The auto cell's cost beside its figure, against the mode the cost rule
@@ -61,7 +61,7 @@ std::string auto_cost(const StabilityCase& c, const std::vector<Mode>& modes, co
   if (ref == none) return "; cost " + ms(row[self].seconds) + " (no other mode passes)";
   double mine = row[self].seconds, theirs = row[ref].seconds, total = 0;
   for (int pair = 0; pair < 15 && total < 0.5; ++pair) {
-    const double a = seconds_of(c, modes[self]), b = seconds_of(c, modes[ref]);
+    const double a = timed(c, modes[self]).seconds, b = timed(c, modes[ref]).seconds;
     mine = std::min(mine, a), theirs = std::min(theirs, b), total += a + b;
   }
   char buf[96];

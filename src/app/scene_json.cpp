@@ -796,22 +796,33 @@ RandomSpec read_random(const Reader& r, const json& g, const Path& p) {
   return out;
 }
 
+// The rows of a saved state's list of pairs (`shape`, e.g. "[c, b, substeps]",
+// `length` numbers each): f(row, its path, the pair it names), after the
+// shape and the two ids are checked.
+template <class F>
+void read_pair_rows(const Reader& r, const json* list, const char* name, std::size_t length, const char* shape,
+                    F&& f) {
+  if (!list) return;
+  if (!list->is_array()) r.fail(name, "must be an array (got " + r.got(*list) + ")");
+  const Path path = name;
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    const json& e = (*list)[i];
+    const Path p(path, i);
+    if (!e.is_array() || e.size() != length) r.fail(p, std::string("must be ") + shape + " (got " + r.got(e) + ")");
+    const auto id = [&](std::size_t k) { return static_cast<EntityId>(r.integer(e[k], p, 0, max_bodies + 4)); };
+    f(e, p, Pair{id(0), id(1)});
+  }
+}
+
 // The auto mode's state: {"hold": n, "pressed": [[c, b, substeps], ...]}.
 AutoState read_auto_state(const Reader& r, const json& v) {
   r.keys(v, "state.auto", {"hold", "pressed"});
   AutoState out;
   if (const json* h = find(v, "hold")) out.hold = static_cast<int>(r.integer(*h, "state.auto.hold", 0, AutoMode::hold));
-  const json* pressed = find(v, "pressed");
-  if (!pressed) return out;
-  if (!pressed->is_array()) r.fail("state.auto.pressed", "must be an array (got " + r.got(*pressed) + ")");
-  const Path list = "state.auto.pressed";
-  for (std::size_t i = 0; i < pressed->size(); ++i) {
-    const json& e = (*pressed)[i];
-    const Path p(list, i);
-    if (!e.is_array() || e.size() != 3) r.fail(p, "must be [c, b, substeps] (got " + r.got(e) + ")");
-    const auto id = [&](std::size_t k) { return static_cast<EntityId>(r.integer(e[k], p, 0, max_bodies + 4)); };
-    out.pressed.push_back({{id(0), id(1)}, static_cast<int>(r.integer(e[2], p, 1, 1 << 30))});
-  }
+  read_pair_rows(r, find(v, "pressed"), "state.auto.pressed", 3, "[c, b, substeps]",
+                 [&](const json& e, const Path& p, Pair pair) {
+                   out.pressed.push_back({pair, static_cast<int>(r.integer(e[2], p, 1, 1 << 30))});
+                 });
   return out;
 }
 
@@ -821,18 +832,11 @@ SavedState read_state(const Reader& r, const json& v) {
   SavedState out;
   if (const json* a = find(v, "auto")) out.automatic = read_auto_state(r, *a);
   if (const json* f = find(v, "frame")) out.frame = r.integer(*f, "state.frame", 0, std::int64_t{1} << 53);
-  const json* warm = find(v, "warm_start");
-  if (!warm) return out;
-  if (!warm->is_array()) r.fail("state.warm_start", "must be an array (got " + r.got(*warm) + ")");
-  const Path list = "state.warm_start";
-  for (std::size_t i = 0; i < warm->size(); ++i) {
-    const json& e = (*warm)[i];
-    const Path p(list, i);
-    if (!e.is_array() || e.size() != 5) r.fail(p, "must be [c, b, axis, jn, jt] (got " + r.got(e) + ")");
-    const auto id = [&](std::size_t k) { return static_cast<EntityId>(r.integer(e[k], p, 0, max_bodies + 4)); };
-    out.warm_start.push_back(
-        {{id(0), id(1)}, static_cast<int>(r.integer(e[2], p, 0, 3)), r.number(e[3], p), r.number(e[4], p)});
-  }
+  read_pair_rows(r, find(v, "warm_start"), "state.warm_start", 5, "[c, b, axis, jn, jt]",
+                 [&](const json& e, const Path& p, Pair pair) {
+                   out.warm_start.push_back(
+                       {pair, static_cast<int>(r.integer(e[2], p, 0, 3)), r.number(e[3], p), r.number(e[4], p)});
+                 });
   return out;
 }
 

@@ -52,7 +52,7 @@ void AutoMode::mark_fast(const Components& k, std::span<const EntityId> bodies, 
     for (const EntityId e : bodies) {
       const int side = std::min(box[e].width, box[e].height);
       thinnest = std::min(thinnest, side);
-      const double reach = 0.5 * (side + world_thinnest);
+      const double reach = CcdSelection::reach(side, world_thinnest);
       const double dx = h * velocity[e].x, dy = h * velocity[e].y;
       const bool is_fast = dx * dx + dy * dy > reach * reach;  // squared: no root per body
       fast[e] = is_fast;
@@ -92,8 +92,7 @@ void AutoMode::after_solver(const Components& k, std::span<const EntityId> bodie
   // And only if what is left of the substep after its impact still carries
   // it past its reach.
   const auto still_fast = [&](EntityId e) {
-    const CcdSelection sel{fast_, start_, thinnest_};
-    const double left = h - start_[e], reach = sel.reach(k, e);
+    const double left = h - start_[e], reach = selection().reach(k, e);
     return left * left * Vector::dot(k.velocity[e], k.velocity[e]) > reach * reach;
   };
   fast_count_ = 0;

@@ -48,8 +48,9 @@ struct CcdSelection {
 
   // px: half the body's thinnest side plus the world's (an overlap up to that
   // is pushed out on the side it came from; deeper, the body tunnels).
+  static double reach(double side, double world_thinnest) { return 0.5 * (side + world_thinnest); }
   double reach(const Components& k, EntityId e) const {
-    return 0.5 * (static_cast<double>(std::min(k.box[e].width, k.box[e].height)) + thinnest);
+    return reach(static_cast<double>(std::min(k.box[e].width, k.box[e].height)), thinnest);
   }
 };
 

@@ -17,6 +17,10 @@ Bounds swept(const Components& k, EntityId e, double h, double reach) {
   return {std::min(p.x, q.x) - reach, std::min(p.y, q.y) - reach, std::max(p.x, q.x) + w + reach,
           std::max(p.y, q.y) + hh + reach};
 }
+
+// Closed test: touching boxes are candidates (resting contact). A NaN bound
+// fails it, so a lost body has no pair.
+bool touch(const Bounds& a, const Bounds& b) { return a.x0 <= b.x1 && b.x0 <= a.x1 && a.y0 <= b.y1 && b.y0 <= a.y1; }
 }  // namespace
 
 // ---- the course pass ----
@@ -134,9 +138,7 @@ void BroadPhase::find(const Components& k, std::span<const EntityId> entities, d
     const std::uint32_t i = pair_first(key), j = pair_second(key);
     const Bounds& a = current_[i];
     const Bounds& b = current_[j];
-    // Closed test: touching boxes are candidates (resting contact). A NaN
-    // bound fails it, so a lost body has no pair.
-    if (a.x0 <= b.x1 && b.x0 <= a.x1 && a.y0 <= b.y1 && b.y0 <= a.y1) out.push_back({entities[i], entities[j]});
+    if (touch(a, b)) out.push_back({entities[i], entities[j]});
   }
   if (k.any_rules()) std::erase_if(out, [&](Pair p) { return !keeps(rule, k, p.c, p.b, h); });
 }
@@ -162,9 +164,7 @@ void BroadPhase::find_selected(const Components& k, std::span<const EntityId> en
       const EntityId c = entities[std::min(i, j)], b = entities[std::max(i, j)];
       if (j == i || (selected[entities[j]] && j < i)) continue;  // a pair of two selected bodies once
       if (!std::isfinite(k.mass[c]) && !std::isfinite(k.mass[b])) continue;
-      const Bounds& o = scan_[j];
-      if (!(a.x0 <= o.x1 && o.x0 <= a.x1 && a.y0 <= o.y1 && o.y0 <= a.y1)) continue;
-      if (!rules || solvable(k, c, b, h)) out.push_back({c, b});
+      if (touch(a, scan_[j]) && (!rules || solvable(k, c, b, h))) out.push_back({c, b});
     }
   }
 }
@@ -207,7 +207,7 @@ void brute_force_pairs(const Components& k, std::span<const EntityId> entities, 
       if (!std::isfinite(k.mass[entities[i]]) && !std::isfinite(k.mass[entities[j]])) continue;
       if (!solvable(k, entities[i], entities[j], h)) continue;
       const Bounds bj = swept(k, entities[j], h, reach);
-      if (bi.x0 <= bj.x1 && bj.x0 <= bi.x1 && bi.y0 <= bj.y1 && bj.y0 <= bi.y1) out.push_back({entities[i], entities[j]});
+      if (touch(bi, bj)) out.push_back({entities[i], entities[j]});
     }
   }
 }
