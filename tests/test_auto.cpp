@@ -4,7 +4,7 @@
 //  - the cost rule on the cheap cases, where the course's pass passes: auto
 //    must then be the course's pass and nothing more (no solver substep, no
 //    swept body), which the results show bit for bit. Its only extra work is
-//    its O(n) look at the bodies (the `auto` stage); wall times are measured
+//    its O(n) look at the bodies (untimed, see World::auto_before_move); wall times are measured
 //    by `make stability`, not here;
 //  - a pile takes the stable solver and gives its results bit for bit;
 //  - only fast bodies are swept.
