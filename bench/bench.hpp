@@ -32,6 +32,7 @@ struct Scene {
   double friction = 0.0;     // every body, every engine (a pair's: sqrt(mu_a mu_b), so this value)
   double dt = 1.0 / 60.0;    // s per step
   bool resting = false;      // bodies come to rest in contact (ours: stable solver)
+  double time_scale = 1.0;   // steps and warm-up are the harness's times this (rain_phase)
   std::vector<Body> bodies;  // fixed bodies (walls, shelves) first
   std::vector<std::size_t> tops;  // pyramids' top blocks (indices in bodies): the harness reports how far they move
   std::size_t dynamic_count() const;

@@ -54,6 +54,7 @@ struct Options {
   // PEERS=DIR` from a clean tree within 15 minutes on this 2-core machine
   // (40 s took 15 min 4 s, the machine shared with other builds).
   double budget = 30.0;
+  double phase_budget = 150.0;  // s per run of rain_phase (its 100 000-body run: 1068 steps, ~140 s)
   std::string out = "bench/RESULTS.md";
   bool compare = true;  // the broadphase comparison
   bool isolate = true;  // each run in a fresh process (see run_isolated)
@@ -127,15 +128,33 @@ std::unique_ptr<bench::Engine> engine_or_throw(const std::string& engine, const 
 }
 
 // gas and rain take the size asked; the pyramids are Box2D's fixed scenes.
-bool sized(const std::string& scene) { return scene == "gas" || scene == "rain"; }
+bool sized(const std::string& scene) { return scene == "gas" || scene == "rain" || scene == "rain_phase"; }
+
+// rain_phase: the rain over the same phase at every size. The rain's steps
+// 61-600 are a different phase at each size: its grid fills the container,
+// whose side grows as sqrt(N), so a 100 000-body grid falls from 3.2 times as
+// high, for sqrt(3.2) = 1.78 times as long, and is still landing at step 600
+// where a 10 000-body pile has settled. Here steps and warm-up are scaled by
+// that factor (sqrt of the side over the 10 000-body rain's side): each size
+// is timed over the same share of its fall, landing and settling. (A pile at
+// rest is not a comparable phase: a frictionless 100 000-body pile is still
+// flowing after 1200 steps, no body slower than 0.1 m/s.)
+Scene make_rain_phase(std::size_t n) {
+  Scene s = bench::make_rain(n);
+  s.name = "rain_phase";
+  s.time_scale = std::sqrt(s.height / bench::make_rain(10000).height);
+  return s;
+}
 
 Scene make_scene(const std::string& name, std::size_t n) {
   if (name == "gas") return bench::make_gas(n);
   if (name == "rain") return bench::make_rain(n);
+  if (name == "rain_phase") return make_rain_phase(n);
   if (name == "pyramid") return bench::make_pyramid();
   if (name == "pyramid_friction") return bench::make_pyramid_friction();
   if (name == "many_pyramids") return bench::make_many_pyramids();
-  throw std::invalid_argument("unknown scene '" + name + "' (gas, rain, pyramid, pyramid_friction, many_pyramids)");
+  throw std::invalid_argument("unknown scene '" + name +
+                              "' (gas, rain, rain_phase, pyramid, pyramid_friction, many_pyramids)");
 }
 
 double largest_top_move(const Scene& s, const std::vector<Body>& end) {
@@ -160,18 +179,21 @@ Result run(const std::string& engine, const Scene& s, const Options& o) {
   r.build_ms = std::chrono::duration<double, std::milli>(clock::now() - t0).count();
   // Every step's time; the first `warmup` are left out of the statistics
   // unless the budget stopped the run before it got past them.
+  const int steps = static_cast<int>(std::lround(o.steps * s.time_scale));
+  const int warmup = static_cast<int>(std::lround(o.warmup * s.time_scale));
+  const double budget = s.time_scale == 1.0 ? o.budget : o.phase_budget;
   std::vector<double> times;
-  times.reserve(static_cast<std::size_t>(o.steps));
+  times.reserve(static_cast<std::size_t>(steps));
   const auto start = clock::now();
-  for (int i = 0; i < o.steps; ++i) {
+  for (int i = 0; i < steps; ++i) {
     const auto a = clock::now();
     e->step();
     const auto b = clock::now();
     times.push_back(std::chrono::duration<double, std::milli>(b - a).count());
     r.steps_run = i + 1;
-    if (std::chrono::duration<double>(b - start).count() > o.budget) break;
+    if (std::chrono::duration<double>(b - start).count() > budget) break;
   }
-  if (static_cast<int>(times.size()) > o.warmup) times.erase(times.begin(), times.begin() + o.warmup);
+  if (static_cast<int>(times.size()) > warmup) times.erase(times.begin(), times.begin() + warmup);
   r.median_ms = percentile(times, 0.5);
   r.p95_ms = percentile(times, 0.95);
   std::vector<Body> end;
@@ -202,7 +224,7 @@ Result run_isolated(const std::string& self, const std::string& engine, const Sc
   const bool local = std::find(here.begin(), here.end(), engine) != here.end();
   std::ostringstream cmd;
   cmd << "'" << (local ? self : o.peers) << "' --child " << engine << "," << s.name << "," << s.dynamic_count() << " --steps " << o.steps
-      << " --warmup " << o.warmup << " --budget " << o.budget;
+      << " --warmup " << o.warmup << " --budget " << o.budget << " --phase-budget " << o.phase_budget;
   std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(cmd.str().c_str(), "r"), pclose);
   if (!pipe) throw std::runtime_error("cannot start " + cmd.str());
   Result r;
@@ -249,7 +271,10 @@ const char* usage =
     "             [--ours-only-gas 1000000 (gas sizes for ours alone; 0: none)] [--engines ours,box2d,chipmunk]\n"
     "             [--peers build/bench-peers (adds box2d3,chipmunk-release)] [--peer-sources TEXT]\n"
     "             [--steps 600] [--warmup 60] [--out bench/RESULTS.md]\n"
-    "             [--compare 0|1] [--budget 30 (s per run)] [--isolate 0|1]   (engines also: ours-course, our course solver on every scene)\n";
+    "             [--compare 0|1] [--budget 30 (s per run)] [--phase-budget 150 (s)] [--isolate 0|1]\n"
+    "             (engines also: ours-course, our course solver on every scene; scenes also: rain_phase,\n"
+    "             the rain over the same share of its fall at every size, run by ours alone after the rain\n"
+    "             at sizes from 10 000 up)\n";
 
 std::vector<std::size_t> sizes_of(const std::string& v) {
   std::vector<std::size_t> out;
@@ -271,6 +296,7 @@ bool set_option(Options& o, const std::string& a, const std::string& v) {
   else if (a == "--out") o.out = v;
   else if (a == "--compare") o.compare = v != "0";
   else if (a == "--budget") o.budget = std::stod(v);
+  else if (a == "--phase-budget") o.phase_budget = std::stod(v);
   else if (a == "--isolate") o.isolate = v != "0";
   else if (a == "--child") o.child = v;
   else return false;
@@ -391,7 +417,10 @@ class Report {
   // Growth of our cost between consecutive sizes from 10 000 up: exponent of t ~ N^k.
   std::string growth() const {
     std::ostringstream md;
-    for (const std::string& name : o_.scenes) {
+    std::vector<std::string> names;
+    for (const Result& r : results_)
+      if (std::find(names.begin(), names.end(), r.scene) == names.end()) names.push_back(r.scene);
+    for (const std::string& name : names) {
       std::vector<const Result*> ours;
       for (const Result& r : results_)
         if (r.engine == "ours" && r.scene == name && r.n >= 10000) ours.push_back(&r);
@@ -424,8 +453,9 @@ void run_scene(const std::string& self, const Scene& s, bool alone, const Option
     if (engine == "ours") ours_ms = r.median_ms;
     // A run cut short by the budget says how far it got; one run alone says why.
     std::string label = engine;
-    if (r.steps_run < o.steps) label += " (" + std::to_string(r.steps_run) + " steps)";
-    if (alone) label += " (alone: peers over budget)";
+    if (r.steps_run < std::lround(o.steps * s.time_scale)) label += " (" + std::to_string(r.steps_run) + " steps)";
+    if (s.name == "rain_phase") label += " (alone, steps x" + fmt("%.2f", s.time_scale) + ")";
+    else if (alone) label += " (alone: peers over budget)";
     report.add(r, ours_ms, label);
   }
 }
@@ -436,6 +466,10 @@ void run_all(const std::string& self, const Options& o, Report& report) {
     for (const std::size_t n : sizes) run_scene(self, make_scene(name, n), false, o, report);
     if (name == "gas")
       for (const std::size_t n : o.ours_only_gas) run_scene(self, make_scene(name, n), true, o, report);
+    // Ours alone: the peers' 100 000-body rain would take minutes over 1068 steps.
+    if (name == "rain")
+      for (const std::size_t n : sizes)
+        if (n >= 10000) run_scene(self, make_scene("rain_phase", n), true, o, report);
   }
 }
 
@@ -468,6 +502,10 @@ void write_markdown(const Options& o, const std::string& command, const std::str
         "(shared/benchmarks.c, CreateManyPyramids): 20 shelves 11 m apart, each 220 m long holding 20 pyramids of "
         "base 10, 22 000 blocks, e = 0, our stable solver; Box2D's shelves are segments, here fixed boxes 0.5 m "
         "thick under the same lines (the floor is the first). ";
+  md << "`rain_phase`: the same rain, run by ours alone from 10 000 bodies up, its steps and warm-up scaled by "
+        "the square root of its container's side over the 10 000-body one's (the time its grid takes to fall): "
+        "each size is timed over the same share of its fall, landing and settling, where the rain's steps 61-600 "
+        "catch a 10 000-body pile settled and a 100 000-body one landing (bench/main.cpp, make_rain_phase). ";
   if (!o.ours_only_gas.empty())
     md << "`gas` at " << o.ours_only_gas.front()
        << " bodies is run by ours alone: the peers' 100 000-body runs already take a large part of the budget, "
