@@ -114,6 +114,19 @@ void check_block(const Checker& k, const BlockSpec& b, const std::string& p) {
   k.motion(b.impulse, At{p, ".impulse"});
   if (b.restitution) k.restitution(*b.restitution, At{p, ".restitution"});
   if (b.contact.friction) k.friction(*b.contact.friction, At{p, ".friction"});
+  const bool tag_ok = b.tag.size() <= 32 && std::all_of(b.tag.begin(), b.tag.end(), [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
+  });
+  if (!tag_ok) k.fail(At{p, ".tag"}, "must be at most 32 characters of a-z, 0-9, '_' and '-' (got \"" + b.tag + "\")");
+  if (b.strength && !(std::isfinite(*b.strength) && *b.strength > 0.0))
+    k.fail(At{p, ".strength"}, "must be a finite number > 0 (got " + num(*b.strength) + ")");
+}
+
+void check_game(const Checker& k, const GameSpec& g) {
+  if (g.kind.empty()) return;
+  if (g.kind != "platformer" && g.kind != "targets")
+    k.fail("game.kind", "must be \"platformer\" or \"targets\" (got \"" + g.kind + "\")");
+  if (g.shots < 1 || g.shots > 99) k.fail("game.shots", "must be in [1, 99] (got " + std::to_string(g.shots) + ")");
 }
 
 // A saved world's state: the warm-start impulses name bodies of the scene
@@ -353,6 +366,7 @@ void validate(const SceneSpec& s, const std::string& source) {
   if (body_count(s) > max_bodies)
     k.fail("blocks", "too many bodies (more than " + std::to_string(max_bodies) + ")");
   if (s.state) check_state(k, s);
+  check_game(k, s.game);
   for (std::size_t i = 0; i < s.blocks.size(); ++i) {
     const std::string path = entry_path(i);
     const BlockEntry& e = s.blocks[i];
@@ -421,6 +435,18 @@ std::vector<Body> expand(const SceneSpec& s, const std::string& source) {
   }
   check_placement(Checker{source}, s, out);
   return out;
+}
+
+std::vector<BlockRole> roles_by_entity(const SceneSpec& s, const std::vector<Body>& bodies) {
+  std::vector<BlockRole> roles(s.walls ? Game::wall_count : 0, BlockRole{"wall"});
+  roles.reserve(roles.size() + bodies.size());
+  for (const Body& b : bodies) {
+    const BlockEntry& e = s.blocks[b.entry];
+    const BlockSpec* spec = std::get_if<BlockSpec>(&e);
+    if (const auto* g = std::get_if<GridSpec>(&e)) spec = &g->first;
+    roles.push_back(spec ? BlockRole{spec->tag, spec->strength.value_or(infinity)} : BlockRole{});
+  }
+  return roles;
 }
 
 void populate(World& w, const SceneSpec& s, const std::vector<Body>& bodies) {

@@ -84,6 +84,12 @@ struct BlockSpec {
   Color color = default_block_color;
   std::optional<double> restitution;  // unset: the world's
   ContactSpec contact;
+  // For the games (src/games/), ignored by the physics: what the block is in
+  // a game ("player", "coin", "goal", "platform", "target", "crate", ...; at
+  // most 32 characters of a-z, 0-9, '_' and '-'), and the normal impulse
+  // that breaks it (a target's "strength", > 0; unset: unbreakable).
+  std::string tag;
+  std::optional<double> strength;
   friend bool operator==(const BlockSpec&, const BlockSpec&) = default;
 };
 
@@ -133,6 +139,15 @@ struct SavedState {
   friend bool operator==(const SavedState&, const SavedState&) = default;
 };
 
+// A scene that is a game's level (scene key "game", src/games/): which game,
+// and its settings. kind "" : no game (the testbed as usual).
+struct GameSpec {
+  std::string kind;   // "platformer" or "targets"
+  int shots = 5;      // targets: launches allowed, in [1, 99]
+  std::string next;   // the next level's scene file, relative to this one's folder; "" for the last
+  friend bool operator==(const GameSpec&, const GameSpec&) = default;
+};
+
 struct SceneSpec {
   std::string name;
   std::string description;
@@ -144,7 +159,9 @@ struct SceneSpec {
   SystemSet systems;
   std::vector<BlockEntry> blocks;
   std::optional<SavedState> state;  // a saved world's (scene key "state")
+  GameSpec game;                    // scene key "game"
 };
+
 
 // Command-line values; each set one replaces the scene's.
 struct Overrides {
@@ -175,6 +192,14 @@ struct Body {
   std::size_t entry = 0;
   std::int64_t index = 0;
 };
+
+// A body's part in a game: its block's tag and strength (walls: tag "wall").
+struct BlockRole {
+  std::string tag;
+  double strength = infinity;  // normal impulse that breaks it
+};
+// The roles of a world made from `s` and `bodies` (expand), by entity id.
+std::vector<BlockRole> roles_by_entity(const SceneSpec& s, const std::vector<Body>& bodies);
 
 // Number of bodies the entries make (walls excluded), without expanding them.
 std::int64_t body_count(const SceneSpec& s);

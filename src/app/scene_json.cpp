@@ -705,11 +705,27 @@ void read_block_keys(const Reader& r, const json& b, const Path& p, BlockSpec& o
   if (const json* v = find(b, "impulse")) out.impulse = r.vec(*v, p + ".impulse");
   if (const json* v = find(b, "color")) out.color = r.color(*v, p + ".color");
   if (const json* v = find(b, "restitution")) out.restitution = r.restitution(*v, p + ".restitution");
+  if (const json* v = find(b, "tag")) out.tag = r.text(*v, p + ".tag");  // its characters: validate()
+  if (const json* v = find(b, "strength")) out.strength = r.number(*v, p + ".strength");  // > 0: validate()
   read_contact_keys(r, b, p, out.contact);
 }
 
+// "game": {"kind": "platformer" | "targets", "shots": N, "next": "level2.json"}
+GameSpec read_game(const Reader& r, const json& g) {
+  if (!g.is_object()) r.fail("game", "must be an object {\"kind\": ...} (got " + r.got(g) + ")");
+  r.keys(g, "game", {"kind", "shots", "next"});
+  GameSpec out;
+  const json* kind = find(g, "kind");
+  if (!kind) r.fail("game", "missing key \"kind\" (\"platformer\" or \"targets\")");
+  out.kind = r.text(*kind, "game.kind");  // one of the games: validate()
+  if (const json* v = find(g, "shots")) out.shots = static_cast<int>(r.integer(*v, "game.shots", 1, 99));
+  if (const json* v = find(g, "next")) out.next = r.text(*v, "game.next");
+  return out;
+}
+
 BlockSpec read_block(const Reader& r, const json& b, const Path& p) {
-  r.keys(b, p, with_contact_keys({"pos", "size", "mass", "velocity", "force", "impulse", "color", "restitution"}));
+  r.keys(b, p,
+         with_contact_keys({"pos", "size", "mass", "velocity", "force", "impulse", "color", "restitution", "tag", "strength"}));
   BlockSpec out;
   read_block_keys(r, b, p, out);
   return out;
@@ -717,7 +733,8 @@ BlockSpec read_block(const Reader& r, const json& b, const Path& p) {
 
 GridSpec read_grid(const Reader& r, const json& g, const Path& p) {
   r.keys(g, p,
-         with_contact_keys({"pos", "size", "mass", "velocity", "force", "impulse", "color", "restitution", "count", "step"}));
+         with_contact_keys({"pos", "size", "mass", "velocity", "force", "impulse", "color", "restitution", "count", "step",
+                            "tag", "strength"}));
   GridSpec out;
   read_block_keys(r, g, p, out.first);
   const json* count = find(g, "count");
@@ -920,12 +937,13 @@ SceneSpec read_scene(std::string_view text, const std::string& source) {
   }
   const json& doc = dom.root;
   if (!doc.is_object()) r.fail("", "a scene file must hold one JSON object {...} (got " + r.got(doc) + ")");
-  r.keys(doc, "", {"name", "description", "world", "blocks", "state"});
+  r.keys(doc, "", {"name", "description", "world", "blocks", "state", "game"});
   s.name = stem(source);
   if (const json* v = find(doc, "name")) s.name = r.text(*v, "name");
   if (const json* v = find(doc, "description")) s.description = r.text(*v, "description");
   if (const json* v = find(doc, "world")) read_world(r, *v, s);
   if (const json* v = find(doc, "state")) s.state = read_state(r, *v);
+  if (const json* v = find(doc, "game")) s.game = read_game(r, *v);
   if (const json* v = find(doc, "blocks"); v && !v->is_array())
     r.fail("blocks", "must be an array of blocks (got " + r.got(*v) + ")");
   if (block_error) throw *block_error;
@@ -1015,6 +1033,8 @@ void block_keys(ojson& o, const BlockSpec& b) {
   if (!(b.color == default_block_color)) o["color"] = hex(b.color);
   if (b.restitution) o["restitution"] = *b.restitution;
   contact_keys(o, b.contact);
+  if (!b.tag.empty()) o["tag"] = b.tag;
+  if (b.strength) o["strength"] = *b.strength;
 }
 
 ojson entry(const BlockEntry& e) {
@@ -1107,6 +1127,10 @@ std::string to_json(const SceneSpec& s) {
   ojson blocks = ojson::array();
   for (const BlockEntry& e : s.blocks) blocks.push_back(entry(e));
   o["blocks"] = blocks;
+  if (!s.game.kind.empty()) {
+    o["game"] = {{"kind", s.game.kind}, {"shots", s.game.shots}};
+    if (!s.game.next.empty()) o["game"]["next"] = s.game.next;
+  }
   if (s.state) {
     ojson warm = ojson::array();
     for (const WarmImpulse& w : s.state->warm_start) warm.push_back({w.pair.c, w.pair.b, w.axis, w.jn, w.jt});

@@ -68,12 +68,17 @@ Testbed::Testbed(std::vector<SceneSpec> scenes, std::size_t current, Overrides o
       overrides_(overrides),
       overlays_(overlays),
       world_(make_world(with_overrides(scenes_.at(current_), overrides_), true, scenes_.at(current_).name)) {
+  const SceneSpec spec = with_overrides(scenes_[current_], overrides_);
+  roles_ = roles_by_entity(spec, expand(spec, spec.name));
   record_contacts();
 }
 
 void Testbed::rebuild() {
   try {
-    world_ = make_world(with_overrides(scenes_[current_], overrides_), true, scenes_[current_].name);
+    const SceneSpec spec = with_overrides(scenes_[current_], overrides_);
+    const std::vector<Body> bodies = expand(spec, spec.name);
+    world_ = make_world(spec, bodies, true);
+    roles_ = roles_by_entity(spec, bodies);
     message_.clear();
   } catch (const SceneError& e) {
     say(e.what(), false);  // keep the world we have
@@ -206,6 +211,7 @@ Testbed::Action Testbed::handle(const InputEvent& e) {
       return Action::none;
     }
     case Kind::key: break;
+    case Kind::key_up: return Action::none;
   }
   const int k = (e.key >= 'A' && e.key <= 'Z') ? e.key - 'A' + 'a' : e.key;
   switch (k) {
@@ -260,6 +266,7 @@ std::vector<std::string> Testbed::key_list(std::size_t scene_count) {
 View Testbed::view(double fps, double draw_ms) const {
   View v;
   v.overlays = overlays_;
+  v.roles = roles_;
   if (overlays_.contacts) v.contacts = last_contacts_, v.contact_regions = last_regions_;
   if (press_) v.sling = std::pair{*press_, mouse_};
   if (ray_from_) {

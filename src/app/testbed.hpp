@@ -34,8 +34,10 @@ inline constexpr int right = (1 << 30) | 79;  // SDLK_RIGHT
 
 // What the window reports each frame, without SDL types.
 struct InputEvent {
-  enum class Kind { quit, key, mouse_down, mouse_up, mouse_move } kind;
-  int key = 0;  // Kind::key
+  // key: a key pressed (or repeated while held); key_up: released (the games
+  // hold keys down; the testbed's own keys act on the press).
+  enum class Kind { quit, key, mouse_down, mouse_up, mouse_move, key_up } kind;
+  int key = 0;  // Kind::key, Kind::key_up
   int x = 0, y = 0;
   int button = 0;  // 1 left, 2 middle, 3 right (SDL's numbering)
 };
@@ -68,6 +70,7 @@ struct View {
   std::optional<RayView> ray;                      // right drag
   std::vector<std::string> hud;   // lines, top left
   std::vector<std::string> help;  // the key list, when H is on
+  std::span<const BlockRole> roles;  // each body's part in a game (tag, strength), by entity id
 };
 
 class Testbed {
@@ -101,6 +104,8 @@ class Testbed {
   World& world() { return world_; }
   const World& world() const { return world_; }
   const SceneSpec& scene() const { return scenes_[current_]; }
+  // Each body's block tag and strength (scene keys "tag", "strength"), by entity id.
+  std::span<const BlockRole> roles() const { return roles_; }
   std::size_t current() const { return current_; }
   std::size_t scene_count() const { return scenes_.size(); }
   bool paused() const { return paused_; }
@@ -138,6 +143,7 @@ class Testbed {
   std::optional<Vector> press_;      // left button down: the slingshot
   std::optional<Vector> ray_from_;   // right button down: the ray
   Vector mouse_{};
+  std::vector<BlockRole> roles_;
   std::vector<Contact> last_contacts_;
   std::vector<ContactRegion> last_regions_;
   std::string message_;

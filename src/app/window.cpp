@@ -96,6 +96,7 @@ std::vector<InputEvent> Window::poll_events() {
     switch (ev.type) {
       case SDL_QUIT: out.push_back({InputEvent::Kind::quit}); break;
       case SDL_KEYDOWN: out.push_back({InputEvent::Kind::key, ev.key.keysym.sym}); break;
+      case SDL_KEYUP: out.push_back({InputEvent::Kind::key_up, ev.key.keysym.sym}); break;
       case SDL_MOUSEBUTTONDOWN:
         out.push_back({InputEvent::Kind::mouse_down, 0, ev.button.x, ev.button.y, ev.button.button});
         break;
