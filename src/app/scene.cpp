@@ -120,6 +120,8 @@ void check_block(const Checker& k, const BlockSpec& b, const std::string& p) {
   if (!tag_ok) k.fail(At{p, ".tag"}, "must be at most 32 characters of a-z, 0-9, '_' and '-' (got \"" + b.tag + "\")");
   if (b.strength && !(std::isfinite(*b.strength) && *b.strength > 0.0))
     k.fail(At{p, ".strength"}, "must be a finite number > 0 (got " + num(*b.strength) + ")");
+  if (b.travel && !(std::isfinite(*b.travel) && *b.travel > 0.0))
+    k.fail(At{p, ".travel"}, "must be a finite number > 0 (got " + num(*b.travel) + ")");
 }
 
 void check_game(const Checker& k, const GameSpec& g) {
@@ -444,7 +446,8 @@ std::vector<BlockRole> roles_by_entity(const SceneSpec& s, const std::vector<Bod
     const BlockEntry& e = s.blocks[b.entry];
     const BlockSpec* spec = std::get_if<BlockSpec>(&e);
     if (const auto* g = std::get_if<GridSpec>(&e)) spec = &g->first;
-    roles.push_back(spec ? BlockRole{spec->tag, spec->strength.value_or(infinity)} : BlockRole{});
+    roles.push_back(spec ? BlockRole{spec->tag, spec->strength.value_or(infinity), spec->travel.value_or(infinity)}
+                         : BlockRole{});
   }
   return roles;
 }

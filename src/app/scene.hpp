@@ -87,9 +87,11 @@ struct BlockSpec {
   // For the games (src/games/), ignored by the physics: what the block is in
   // a game ("player", "coin", "goal", "platform", "target", "crate", ...; at
   // most 32 characters of a-z, 0-9, '_' and '-'), and the normal impulse
-  // that breaks it (a target's "strength", > 0; unset: unbreakable).
+  // that breaks it (a target's "strength", > 0; unset: unbreakable), and how
+  // far a moving platform goes before it turns back ("travel", px).
   std::string tag;
   std::optional<double> strength;
+  std::optional<double> travel;  // a moving platform: px from its start before it turns back (> 0)
   friend bool operator==(const BlockSpec&, const BlockSpec&) = default;
 };
 
@@ -145,6 +147,7 @@ struct GameSpec {
   std::string kind;   // "platformer" or "targets"
   int shots = 5;      // targets: launches allowed, in [1, 99]
   std::string next;   // the next level's scene file, relative to this one's folder; "" for the last
+  std::string next_path;  // the same, as a path from here (read_scene_file)
   friend bool operator==(const GameSpec&, const GameSpec&) = default;
 };
 
@@ -197,6 +200,7 @@ struct Body {
 struct BlockRole {
   std::string tag;
   double strength = infinity;  // normal impulse that breaks it
+  double travel = infinity;    // px a moving platform goes from its start before turning back
 };
 // The roles of a world made from `s` and `bodies` (expand), by entity id.
 std::vector<BlockRole> roles_by_entity(const SceneSpec& s, const std::vector<Body>& bodies);

@@ -707,6 +707,7 @@ void read_block_keys(const Reader& r, const json& b, const Path& p, BlockSpec& o
   if (const json* v = find(b, "restitution")) out.restitution = r.restitution(*v, p + ".restitution");
   if (const json* v = find(b, "tag")) out.tag = r.text(*v, p + ".tag");  // its characters: validate()
   if (const json* v = find(b, "strength")) out.strength = r.number(*v, p + ".strength");  // > 0: validate()
+  if (const json* v = find(b, "travel")) out.travel = r.number(*v, p + ".travel");  // > 0: validate()
   read_contact_keys(r, b, p, out.contact);
 }
 
@@ -725,7 +726,8 @@ GameSpec read_game(const Reader& r, const json& g) {
 
 BlockSpec read_block(const Reader& r, const json& b, const Path& p) {
   r.keys(b, p,
-         with_contact_keys({"pos", "size", "mass", "velocity", "force", "impulse", "color", "restitution", "tag", "strength"}));
+         with_contact_keys({"pos", "size", "mass", "velocity", "force", "impulse", "color", "restitution", "tag", "strength",
+                            "travel"}));
   BlockSpec out;
   read_block_keys(r, b, p, out);
   return out;
@@ -734,7 +736,7 @@ BlockSpec read_block(const Reader& r, const json& b, const Path& p) {
 GridSpec read_grid(const Reader& r, const json& g, const Path& p) {
   r.keys(g, p,
          with_contact_keys({"pos", "size", "mass", "velocity", "force", "impulse", "color", "restitution", "count", "step",
-                            "tag", "strength"}));
+                            "tag", "strength", "travel"}));
   GridSpec out;
   read_block_keys(r, g, p, out.first);
   const json* count = find(g, "count");
@@ -984,7 +986,10 @@ SceneSpec read_scene_file(const std::string& path) {
     text.append(buf, static_cast<std::size_t>(in.gcount()));
   }
   if (in.bad()) throw SceneError(path + ": cannot read the scene file: read error");
-  return read_scene(text, path);
+  SceneSpec s = read_scene(text, path);
+  // A game's next level is named relative to this file's folder.
+  if (!s.game.next.empty()) s.game.next_path = (std::filesystem::path(path).parent_path() / s.game.next).string();
+  return s;
 }
 
 SceneSpec load_scene_file(const std::string& path) {
@@ -1035,6 +1040,7 @@ void block_keys(ojson& o, const BlockSpec& b) {
   contact_keys(o, b.contact);
   if (!b.tag.empty()) o["tag"] = b.tag;
   if (b.strength) o["strength"] = *b.strength;
+  if (b.travel) o["travel"] = *b.travel;
 }
 
 ojson entry(const BlockEntry& e) {

@@ -7,6 +7,7 @@
 
 #include "entities/block.hpp"
 #include "app/headless.hpp"
+#include "app/scene_json.hpp"
 
 namespace physics {
 
@@ -70,7 +71,16 @@ Testbed::Testbed(std::vector<SceneSpec> scenes, std::size_t current, Overrides o
       world_(make_world(with_overrides(scenes_.at(current_), overrides_), true, scenes_.at(current_).name)) {
   const SceneSpec spec = with_overrides(scenes_[current_], overrides_);
   roles_ = roles_by_entity(spec, expand(spec, spec.name));
+  start_level(spec);
   record_contacts();
+}
+
+// The scene's game, if any, on the world just built (SceneError if the scene
+// lacks what its game needs).
+void Testbed::start_level(const SceneSpec& spec) {
+  level_.reset();
+  outcome_ = Level::Outcome::playing;
+  if (!spec.game.kind.empty()) level_ = make_level(spec, world_, roles_);
 }
 
 void Testbed::rebuild() {
@@ -79,6 +89,7 @@ void Testbed::rebuild() {
     const std::vector<Body> bodies = expand(spec, spec.name);
     world_ = make_world(spec, bodies, true);
     roles_ = roles_by_entity(spec, bodies);
+    start_level(spec);
     message_.clear();
   } catch (const SceneError& e) {
     say(e.what(), false);  // keep the world we have
@@ -127,12 +138,41 @@ void Testbed::after_step() {
 void Testbed::step() {
   // A world with a non-finite body is stopped: nothing after it is physics.
   if (world_.health.non_finite) return;
+  if (level_ && outcome_ == Level::Outcome::playing) level_->before_step(world_);
   Game::step(world_);
   after_step();
+  if (level_ && outcome_ == Level::Outcome::playing) after_level_step();
   if (world_.health.non_finite) {
     paused_ = true;
     say("stopped: " + Headless::non_finite_line(world_) + " (R: reset)", false);
   }
+}
+
+// A lost level starts again; a won one stops, and Enter loads the next.
+void Testbed::after_level_step() {
+  outcome_ = level_->after_step(world_);
+  if (outcome_ == Level::Outcome::lost) {
+    rebuild();
+    say("level lost: starting again", true);
+  } else if (outcome_ == Level::Outcome::won) {
+    paused_ = true;
+    say(scene().game.next.empty() ? "level won! (R: play it again)" : "level won! Enter: next level", false);
+  }
+}
+
+// The won level's next one (scene key game.next), in place of this scene.
+bool Testbed::next_level() {
+  const std::string path = scene().game.next_path;
+  if (outcome_ != Level::Outcome::won || path.empty()) return false;
+  try {
+    scenes_[current_] = load_scene_file(path);
+  } catch (const SceneError& e) {
+    say(e.what(), false);
+    return true;
+  }
+  paused_ = false;
+  rebuild();
+  return true;
 }
 
 void Testbed::say(std::string message, bool fades) {
@@ -180,6 +220,7 @@ bool Testbed::spawn(Vector centre, Vector v) {
   const auto b = Block::make(world_, pos.x, pos.y, spawn_size, spawn_size, spawn_color, spawn_mass,
                              with_overrides(s, overrides_).restitution);
   world_.components.velocity[b.id] = v;
+  roles_.resize(world_.components.size());
   message_.clear();
   return true;
 }
@@ -207,17 +248,27 @@ Testbed::Action Testbed::handle(const InputEvent& e) {
         v = fling_scale * pull;
         if (const double speed = Vector::norm(v); speed > max_fling) v = (max_fling / speed) * v;
       }
+      if (level_ && level_->launch(world_, from, v)) {
+        roles_.resize(world_.components.size(), level_->role_of_new_body());
+        return Action::none;
+      }
       spawn(from, v);
       return Action::none;
     }
-    case Kind::key: break;
-    case Kind::key_up: return Action::none;
+    case Kind::key:
+      if (level_ && level_->key(e.key, true)) return Action::none;
+      break;
+    case Kind::key_up:
+      if (level_) level_->key(e.key, false);
+      return Action::none;
   }
   const int k = (e.key >= 'A' && e.key <= 'Z') ? e.key - 'A' + 'a' : e.key;
   switch (k) {
     case key::escape:
     case 'q': return Action::quit;
-    case key::space: paused_ = !paused_; acc_ms_ = 0.0; break;
+    case key::space:
+    case 'p': paused_ = !paused_; acc_ms_ = 0.0; break;
+    case key::enter: next_level(); break;
     case 'n':
     case key::right:
       paused_ = true;
@@ -247,7 +298,7 @@ std::vector<std::string> Testbed::key_list(std::size_t scene_count) {
   // file given with --scene (it joins the list as the ninth).
   const std::size_t n = std::clamp<std::size_t>(scene_count, 1, 9);
   std::string digits = n == 1 ? "1      " : "1-" + std::to_string(n) + "    ";
-  return {"Space  pause / resume",
+  return {"Space  pause / resume (P in a game, where Space jumps)",
           "N, ->  one step",
           "R      reset the scene",
           digits + (n == 9 ? "scene (9: the --scene file); Tab: next" : "choose a scene, Tab: next scene"),
@@ -283,6 +334,8 @@ View Testbed::view(double fps, double draw_ms) const {
     if (slow_) title += "  [slow x0.25]";
     title += "   H: keys";
     v.hud.push_back(title);
+    if (level_)
+      for (std::string& line : level_->hud()) v.hud.push_back(std::move(line));
     v.hud.push_back(Headless::hud_line(world_, fps));
     char draw[64];
     std::snprintf(draw, sizeof draw, "  draw %.3f ms/frame", draw_ms);

@@ -21,6 +21,7 @@
 
 #include "app/scene.hpp"
 #include "engine/query.hpp"
+#include "games/level.hpp"
 #include "engine/world.hpp"
 
 namespace physics {
@@ -28,7 +29,7 @@ namespace physics {
 // Key codes: SDL's keycodes (printable keys are their ASCII code); window.cpp
 // checks that they match SDL's at compile time.
 namespace key {
-inline constexpr int escape = 27, tab = '\t', space = ' ';
+inline constexpr int escape = 27, tab = '\t', space = ' ', enter = '\r';
 inline constexpr int right = (1 << 30) | 79;  // SDLK_RIGHT
 }  // namespace key
 
@@ -106,6 +107,9 @@ class Testbed {
   const SceneSpec& scene() const { return scenes_[current_]; }
   // Each body's block tag and strength (scene keys "tag", "strength"), by entity id.
   std::span<const BlockRole> roles() const { return roles_; }
+  // The scene's game (scene key "game"), or none; how its level stands.
+  const Level* level() const { return level_.get(); }
+  Level::Outcome outcome() const { return outcome_; }
   std::size_t current() const { return current_; }
   std::size_t scene_count() const { return scenes_.size(); }
   bool paused() const { return paused_; }
@@ -128,6 +132,9 @@ class Testbed {
 
  private:
   void rebuild();
+  void start_level(const SceneSpec& spec);
+  void after_level_step();
+  bool next_level();
   void record_contacts();
   void after_step();
   // Shows `message` on the HUD; a passing one (`fades`) for message_ms.
@@ -144,6 +151,8 @@ class Testbed {
   std::optional<Vector> ray_from_;   // right button down: the ray
   Vector mouse_{};
   std::vector<BlockRole> roles_;
+  std::unique_ptr<Level> level_;  // the scene's game, if it has one
+  Level::Outcome outcome_ = Level::Outcome::playing;
   std::vector<Contact> last_contacts_;
   std::vector<ContactRegion> last_regions_;
   std::string message_;

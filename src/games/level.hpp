@@ -1,0 +1,55 @@
+// A game on the engine: the rules that turn a scene into a level (scene key
+// "game", docs/games.md). The testbed owns the world and the input; a Level
+// says what the game's keys do, what a slingshot launch does, what happens
+// before and after each physics step (a player's run and jump, a coin
+// collected, a target broken), whether the level is won or lost, and what
+// the HUD says. Everything a Level decides depends only on the world and
+// the keys it was given, so a replayed input gives the same game.
+#pragma once
+
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "app/scene.hpp"
+#include "engine/world.hpp"
+
+namespace physics {
+
+// Key codes the games read: SDL's (window.cpp checks them at compile time).
+namespace game_key {
+inline constexpr int right = (1 << 30) | 79, left = (1 << 30) | 80, up = (1 << 30) | 82;  // SDLK_RIGHT, LEFT, UP
+inline constexpr int space = ' ';
+}  // namespace game_key
+
+class Level {
+ public:
+  enum class Outcome { playing, won, lost };
+
+  virtual ~Level() = default;
+  // A key pressed (down) or released; true if the game used it (then the
+  // testbed does not).
+  virtual bool key(int code, bool down) = 0;
+  // The testbed's slingshot: a launch from `from` at velocity v. True if the
+  // game took it (and then made its own body, if any).
+  virtual bool launch(World& w, Vector from, Vector v) = 0;
+  // Around Game::step: the controls' effect before, the rules after.
+  virtual void before_step(World& w) = 0;
+  virtual Outcome after_step(World& w) = 0;
+  // The game's HUD lines (score, what is left, the keys).
+  virtual std::vector<std::string> hud() const = 0;
+  // A body the game made (launch), for the testbed's list of roles.
+  virtual BlockRole role_of_new_body() const { return {}; }
+};
+
+// The level of a scene with a game (s.game.kind "platformer" or "targets")
+// on its world, whose bodies have `roles` (by entity id). Enables the
+// world's contact events. Throws SceneError naming the scene when the level
+// lacks what its game needs (a platformer without a block tagged "player").
+std::unique_ptr<Level> make_level(const SceneSpec& s, World& w, std::span<const BlockRole> roles);
+
+// The ids of the bodies tagged `tag`, in id order.
+std::vector<EntityId> tagged(std::span<const BlockRole> roles, const std::string& tag);
+
+}  // namespace physics
