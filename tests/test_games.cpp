@@ -1,0 +1,223 @@
+// The games (src/games, docs/games.md) driven through the testbed as a
+// player would: keys and slingshot drags in, the level's rules out.
+#include <filesystem>
+#include <map>
+#include <ostream>
+#include <string>
+
+#include "app/scene_json.hpp"
+#include "app/testbed.hpp"
+#include "games/platformer.hpp"
+#include "games/targets.hpp"
+#include "helpers.hpp"
+
+using namespace physics;
+
+namespace {
+
+std::string scene_path(const std::string& name) {
+  return (std::filesystem::path(__FILE__).parent_path().parent_path() / "scenes" / (name + ".json")).string();
+}
+
+Testbed level(const std::string& name) { return Testbed({load_scene_file(scene_path(name))}, 0); }
+
+InputEvent press(int k) { return {InputEvent::Kind::key, k}; }
+
+// Steps the testbed `n` times, handing it `events` (by tick from now) first.
+void play(Testbed& tb, int n, const std::multimap<int, InputEvent>& events = {}) {
+  for (int t = 0; t < n; ++t) {
+    const auto [from, to] = events.equal_range(t);
+    for (auto it = from; it != to; ++it) tb.handle(it->second);
+    tb.step();
+  }
+}
+
+// A slingshot drag from (300, 300) pulled back by (px, py): the shot leaves
+// at 0.005 px/ms per px of pull (Testbed::fling_scale).
+void shoot(Testbed& tb, int px, int py) {
+  tb.handle({InputEvent::Kind::mouse_down, 0, 300, 300, 1});
+  tb.handle({InputEvent::Kind::mouse_move, 0, 300 - px, 300 - py, 0});
+  tb.handle({InputEvent::Kind::mouse_up, 0, 300 - px, 300 - py, 1});
+}
+
+const Platformer& platformer(const Testbed& tb) { return dynamic_cast<const Platformer&>(*tb.level()); }
+const Targets& targets(const Testbed& tb) { return dynamic_cast<const Targets&>(*tb.level()); }
+
+// The error loading `text` as a scene gives (one line).
+std::string error_of(const std::string& text) {
+  try {
+    const SceneSpec s = parse_scene(text, "bad.json");
+    Testbed tb({s}, 0);
+  } catch (const SceneError& e) {
+    const std::string msg = e.what();
+    BOOST_TEST(msg.find('\n') == std::string::npos);
+    return msg;
+  }
+  BOOST_ERROR("no error for: " << text);
+  return "";
+}
+
+bool has(const std::string& msg, const std::string& part) { return msg.find(part) != std::string::npos; }
+
+}  // namespace
+
+namespace physics {
+std::ostream& operator<<(std::ostream& o, Level::Outcome x) {
+  return o << (x == Level::Outcome::won ? "won" : x == Level::Outcome::lost ? "lost" : "playing");
+}
+}  // namespace physics
+
+BOOST_AUTO_TEST_SUITE(games)
+
+BOOST_AUTO_TEST_CASE(the_player_runs_and_collects_a_coin_on_contact) {
+  Testbed tb = level("platformer");
+  const EntityId coin = 5;  // the first coin, on the ground ahead
+  BOOST_TEST(tb.roles()[coin].tag == "coin");
+  play(tb, 10);
+  BOOST_TEST(platformer(tb).grounded());
+  BOOST_TEST(platformer(tb).coins() == 0);
+  play(tb, 40, {{0, press(game_key::right)}});
+  BOOST_TEST(platformer(tb).coins() == 1);
+  BOOST_TEST(!tb.world().alive(coin));
+  BOOST_TEST(tb.world().components.position[platformer(tb).player()].x > 150.0);
+}
+
+BOOST_AUTO_TEST_CASE(the_player_jumps_only_from_the_ground) {
+  Testbed tb = level("platformer");
+  play(tb, 10);
+  const EntityId p = platformer(tb).player();
+  play(tb, 1, {{0, press(game_key::space)}});
+  BOOST_TEST(!platformer(tb).grounded());
+  BOOST_TEST(tb.world().components.velocity[p].y < -0.6);
+  // A second press in the air changes nothing: the rise goes on slowing down.
+  play(tb, 10);
+  const double vy = tb.world().components.velocity[p].y;
+  play(tb, 1, {{0, press(game_key::up)}});
+  BOOST_TEST(tb.world().components.velocity[p].y > vy);
+  // Back on the ground it jumps again.
+  play(tb, 60);
+  BOOST_TEST(platformer(tb).grounded());
+  play(tb, 1, {{0, press(game_key::up)}});
+  BOOST_TEST(tb.world().components.velocity[p].y < -0.6);
+}
+
+BOOST_AUTO_TEST_CASE(falling_off_the_world_restarts_the_level) {
+  Testbed tb = level("platformer");
+  // Run into the gap without jumping.
+  std::int64_t restarted_at = -1;
+  std::multimap<int, InputEvent> keys{{0, press(game_key::right)}};
+  for (int t = 0; t < 200 && restarted_at < 0; ++t) {
+    const std::int64_t before = tb.world().frame;
+    play(tb, 1, t == 0 ? keys : std::multimap<int, InputEvent>{});
+    if (tb.world().frame < before) restarted_at = t;
+  }
+  BOOST_TEST(restarted_at > 0);
+  BOOST_TEST(has(tb.message(), "lost"));
+  BOOST_TEST(tb.outcome() == Level::Outcome::playing);
+  BOOST_TEST(platformer(tb).coins() == 0);  // a fresh level
+}
+
+BOOST_AUTO_TEST_CASE(the_moving_platform_turns_at_both_ends) {
+  Testbed tb = level("platformer");
+  const EntityId platform = 9;
+  BOOST_TEST(tb.roles()[platform].tag == "platform");
+  double lo = 1e9, hi = -1e9;
+  for (int t = 0; t < 450; ++t) {
+    play(tb, 1);
+    const double x = tb.world().components.position[platform].x;
+    lo = std::min(lo, x), hi = std::max(hi, x);
+  }
+  // Start 380, "travel" 100: it stays within a step's motion (1 px) of [380, 480].
+  BOOST_TEST(lo >= 379.0);
+  BOOST_TEST(lo <= 381.0);
+  BOOST_TEST(hi >= 479.0);
+  BOOST_TEST(hi <= 481.0);
+}
+
+BOOST_AUTO_TEST_CASE(a_tower_at_rest_breaks_no_target) {
+  for (const char* name : {"targets-1", "targets-2", "targets-3"}) {
+    Testbed tb = level(name);
+    const int count = targets(tb).targets_left();
+    play(tb, 300);
+    BOOST_TEST(targets(tb).targets_left() == count, name);
+    BOOST_TEST(tb.outcome() == Level::Outcome::playing, name);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(a_shot_leaves_from_the_sling_and_breaks_a_target) {
+  Testbed tb = level("targets-1");
+  play(tb, 62);
+  const std::size_t bodies = tb.world().components.size();
+  shoot(tb, 240, -30);
+  BOOST_TEST(tb.world().components.size() == bodies + 1);
+  BOOST_TEST(tb.roles().back().tag == "shot");
+  // It leaves from the sling's centre (90 + 10, 400 + 10), whatever the press point.
+  const Vector p = tb.world().components.position[bodies];
+  BOOST_TEST(p.x == 100.0 - Targets::shot_size / 2.0);
+  BOOST_TEST(p.y == 410.0 - Targets::shot_size / 2.0);
+  BOOST_TEST(targets(tb).shots_left() == 2);
+  play(tb, 60);
+  BOOST_TEST(targets(tb).targets_left() == 1);
+  BOOST_TEST(targets(tb).score() == Targets::points);
+}
+
+BOOST_AUTO_TEST_CASE(spent_shots_lose_the_level_which_starts_again) {
+  Testbed tb = level("targets-1");
+  for (int i = 0; i < 3; ++i) {
+    shoot(tb, 150, 150);  // downwards into the floor, far from the tower
+    play(tb, 5);
+  }
+  BOOST_TEST(targets(tb).shots_left() == 0);
+  const std::size_t bodies = tb.world().components.size();
+  shoot(tb, 150, 150);  // no shot left: nothing is launched
+  BOOST_TEST(tb.world().components.size() == bodies);
+  play(tb, Targets::settle_frames + 5);
+  BOOST_TEST(has(tb.message(), "lost"));
+  BOOST_TEST(targets(tb).shots_left() == 3);  // the level again, from the start
+}
+
+BOOST_AUTO_TEST_CASE(a_level_missing_what_its_game_needs_is_an_error) {
+  BOOST_TEST(has(error_of(R"({"game": {"kind": "platformer"}, "blocks": []})"), "exactly one block with \"tag\": \"player\""));
+  BOOST_TEST(has(error_of(R"({"game": {"kind": "targets"}, "blocks": [{"pos": [100, 100], "size": [10, 10], "mass": 1, "tag": "target"}]})"),
+                 "\"tag\": \"sling\""));
+  BOOST_TEST(has(error_of(R"({"game": {"kind": "golf"}, "blocks": []})"), "game.kind"));
+  BOOST_TEST(has(error_of(R"({"game": {"kind": "targets", "shots": 0}, "blocks": []})"), "game.shots"));
+  BOOST_TEST(has(error_of(R"({"game": {"shots": 3}, "blocks": []})"), "missing key \"kind\""));
+  BOOST_TEST(has(error_of(R"({"blocks": [{"pos": [100, 100], "size": [10, 10], "mass": 1, "tag": "Player!"}]})"),
+                 "blocks[0].tag"));
+  BOOST_TEST(has(error_of(R"({"blocks": [{"pos": [100, 100], "size": [10, 10], "mass": 1, "strength": -1}]})"),
+                 "blocks[0].strength"));
+  BOOST_TEST(has(error_of(R"({"blocks": [{"pos": [100, 100], "size": [10, 10], "mass": 1, "travel": 0}]})"),
+                 "blocks[0].travel"));
+}
+
+BOOST_AUTO_TEST_CASE(game_keys_print_and_read_back) {
+  const SceneSpec s = load_scene_file(scene_path("targets-1"));
+  const SceneSpec again = parse_scene(to_json(s), "again.json");
+  BOOST_TEST(again.game.kind == "targets");
+  BOOST_TEST(again.game.shots == 3);
+  BOOST_TEST(again.game.next == "targets-2.json");
+  BOOST_TEST((again.blocks == s.blocks));
+  const SceneSpec p = load_scene_file(scene_path("platformer"));
+  BOOST_TEST((parse_scene(to_json(p), "again.json").blocks == p.blocks));
+}
+
+BOOST_AUTO_TEST_CASE(enter_after_a_win_loads_the_next_level) {
+  Testbed tb = level("targets-1");
+  play(tb, 62);
+  shoot(tb, 240, -30);
+  play(tb, 90);
+  shoot(tb, 260, -10);
+  play(tb, 100);
+  shoot(tb, 300, -40);
+  play(tb, 60);
+  BOOST_TEST(tb.outcome() == Level::Outcome::won);
+  BOOST_TEST(tb.paused());
+  tb.handle(press(key::enter));
+  BOOST_TEST(tb.scene().name == "targets-2");
+  BOOST_TEST(tb.outcome() == Level::Outcome::playing);
+  BOOST_TEST(!tb.paused());
+  BOOST_TEST(targets(tb).targets_left() == 3);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
