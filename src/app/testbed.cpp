@@ -319,7 +319,11 @@ View Testbed::view(double fps, double draw_ms) const {
   v.overlays = overlays_;
   v.roles = roles_;
   if (overlays_.contacts) v.contacts = last_contacts_, v.contact_regions = last_regions_;
-  if (press_) v.sling = std::pair{*press_, mouse_};
+  if (press_) {
+    // A game that launches from its own point: the same drag, drawn from there.
+    const std::optional<Vector> origin = level_ ? level_->launch_point() : std::nullopt;
+    v.sling = origin ? std::pair{*origin, *origin + (mouse_ - *press_)} : std::pair{*press_, mouse_};
+  }
   if (ray_from_) {
     // Cast on every view: the bodies move under a ray held still.
     const Vector d = mouse_ - *ray_from_;
@@ -334,8 +338,14 @@ View Testbed::view(double fps, double draw_ms) const {
     if (slow_) title += "  [slow x0.25]";
     title += "   H: keys";
     v.hud.push_back(title);
-    if (level_)
+    // A game's HUD is the game's: its lines and the messages, not the
+    // engine's measures.
+    if (level_) {
       for (std::string& line : level_->hud()) v.hud.push_back(std::move(line));
+      if (!message_.empty()) v.hud.push_back(message_);
+      if (overlays_.help) v.help = key_list(scenes_.size());
+      return v;
+    }
     v.hud.push_back(Headless::hud_line(world_, fps));
     char draw[64];
     std::snprintf(draw, sizeof draw, "  draw %.3f ms/frame", draw_ms);

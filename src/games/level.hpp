@@ -8,6 +8,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -41,6 +42,9 @@ class Level {
   virtual std::vector<std::string> hud() const = 0;
   // A body the game made (launch), for the testbed's list of roles.
   virtual BlockRole role_of_new_body() const { return {}; }
+  // Where its launches leave from, if not from the press point (the
+  // testbed draws the drag from there).
+  virtual std::optional<Vector> launch_point() const { return std::nullopt; }
 };
 
 // The level of a scene with a game (s.game.kind "platformer" or "targets")

@@ -26,6 +26,7 @@ class Targets final : public Level {
   Outcome after_step(World& w) override;
   std::vector<std::string> hud() const override;
   BlockRole role_of_new_body() const override { return {"shot"}; }
+  std::optional<Vector> launch_point() const override { return sling_; }
 
   int targets_left() const { return static_cast<int>(targets_.size()) - broken_; }
   int shots_left() const { return shots_left_; }
