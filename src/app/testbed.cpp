@@ -267,6 +267,7 @@ View Testbed::view(double fps, double draw_ms) const {
   View v;
   v.overlays = overlays_;
   v.roles = roles_;
+  v.style = overrides_.style.value_or(scene().style);
   if (overlays_.contacts) v.contacts = last_contacts_, v.contact_regions = last_regions_;
   if (press_) v.sling = std::pair{*press_, mouse_};
   if (ray_from_) {
