@@ -25,14 +25,15 @@ constexpr Color plank_light{210, 165, 105, 255};
 long first_pixel(double lo) { return static_cast<long>(std::ceil(lo - 0.5)); }
 
 // Fills the pixels whose centres lie in [x0, x1) x [y0, y1).
-void span(Canvas& c, double x0, double y0, double x1, double y1, Color col) {
+void fill_pixels(Canvas& c, double x0, double y0, double x1, double y1, Color col) {
   const long i0 = first_pixel(x0), i1 = first_pixel(x1), j0 = first_pixel(y0), j1 = first_pixel(y1);
   if (i1 <= i0 || j1 <= j0) return;
   c.fill_rect({double(i0), double(j0)}, {int(i1 - i0), int(j1 - j0)}, col);
 }
 
 // One shape's frame: the box at p of size w x h, drawn in fractions of it,
-// so every shape scales with its box.
+// so every shape scales with its box. Every run is clipped to the box: the
+// collisions use the box, so nothing of a sprite lies outside it.
 struct Frame {
   Canvas& canvas;
   Vector p;
@@ -40,17 +41,19 @@ struct Frame {
 
   double x(double f) const { return p.x + f * w; }
   double y(double f) const { return p.y + f * h; }
-  // The part [fx0, fx1) x [fy0, fy1) of the box.
-  void rect(double fx0, double fy0, double fx1, double fy1, Color col) const {
-    span(canvas, x(fx0), y(fy0), x(fx1), y(fy1), col);
+  // The pixels whose centres lie in [x0, x1) x [y0, y1) and in the box.
+  void span(double x0, double y0, double x1, double y1, Color col) const {
+    fill_pixels(canvas, std::max(x0, p.x), std::max(y0, p.y), std::min(x1, p.x + w), std::min(y1, p.y + h), col);
   }
+  // The part [fx0, fx1) x [fy0, fy1) of the box.
+  void rect(double fx0, double fy0, double fx1, double fy1, Color col) const { span(x(fx0), y(fy0), x(fx1), y(fy1), col); }
   // A disc of radius r px centred at (cx, cy) px: one pixel row at a time.
   void disc(double cx, double cy, double r, Color col) const {
     for (long j = first_pixel(cy - r); j < first_pixel(cy + r); ++j) {
       const double dy = j + 0.5 - cy;
       if (std::abs(dy) >= r) continue;
       const double half = std::sqrt(r * r - dy * dy);
-      span(canvas, cx - half, j, cx + half, j + 1, col);
+      span(cx - half, j, cx + half, j + 1, col);
     }
   }
   // A segment from a to b (px, a.y < b.y) `t` px thick, one row at a time;
@@ -61,7 +64,7 @@ struct Frame {
     const double half = 0.5 * t * Vector::norm(d) / d.y;
     for (long j = first_pixel(a.y); j < first_pixel(b.y); ++j) {
       const double xc = a.x + (j + 0.5 - a.y) * d.x / d.y;
-      span(canvas, xc - half, j, xc + half, j + 1, col);
+      span(xc - half, j, xc + half, j + 1, col);
     }
   }
 };
@@ -80,7 +83,7 @@ void player(const Frame& f, Color shirt) {
   const double e = std::max(1.0, 0.3 * r);
   for (const double side : {-1.0, 1.0}) {
     const double ex = cx + side * 0.4 * r, ey = cy - 0.15 * r;
-    span(f.canvas, ex - e / 2, ey - e / 2, ex + e / 2, ey + e / 2, eye);
+    f.span(ex - e / 2, ey - e / 2, ex + e / 2, ey + e / 2, eye);
   }
 }
 
@@ -99,9 +102,9 @@ void goal(const Frame& f, Color flag) {
   f.rect(0.06, 0.92, 0.18 + pole + 0.12, 1.0, iron);
   // A pennant pointing right: each row as long as it is far from the tips.
   const double top = f.y(0.04), bottom = f.y(0.46), mid = 0.5 * (top + bottom), half = 0.5 * (bottom - top);
-  const double from = f.x(0.18 + pole), length = 0.7 * f.w;
+  const double from = f.x(0.18 + pole), length = std::min(0.7 * f.w, f.x(1) - from);
   for (long j = first_pixel(top); j < first_pixel(bottom); ++j)
-    span(f.canvas, from, j, from + length * (1 - std::abs(j + 0.5 - mid) / half), j + 1, flag);
+    f.span(from, j, from + length * (1 - std::abs(j + 0.5 - mid) / half), j + 1, flag);
 }
 
 // Concentric rings, red and white, red outside and in the middle.
@@ -115,7 +118,7 @@ void platform(const Frame& f, Vector p, Rect box) {
   f.rect(0, 0, 1, 1, plank_wood);
   f.rect(0, 0, 1, std::max(1.0, 0.2 * f.h) / f.h, plank_light);
   const double plank = std::max(3.0 * f.h, 24.0);
-  for (double x = plank; x < f.w - 2; x += plank) span(f.canvas, f.p.x + x, f.p.y, f.p.x + x + 1, f.p.y + f.h, dark_wood);
+  for (double x = plank; x < f.w - 2; x += plank) f.span(f.p.x + x, f.p.y, f.p.x + x + 1, f.p.y + f.h, dark_wood);
   outline(p, box, plank_wood, f.canvas);
 }
 
@@ -123,10 +126,10 @@ void platform(const Frame& f, Vector p, Rect box) {
 void crate(const Frame& f) {
   const double t = std::max(1.0, std::min(f.w, f.h) / 7);
   f.rect(0, 0, 1, 1, crate_wood);
-  span(f.canvas, f.p.x, f.p.y, f.x(1), f.p.y + t, dark_wood);
-  span(f.canvas, f.p.x, f.y(1) - t, f.x(1), f.y(1), dark_wood);
-  span(f.canvas, f.p.x, f.p.y, f.p.x + t, f.y(1), dark_wood);
-  span(f.canvas, f.x(1) - t, f.p.y, f.x(1), f.y(1), dark_wood);
+  f.span(f.p.x, f.p.y, f.x(1), f.p.y + t, dark_wood);
+  f.span(f.p.x, f.y(1) - t, f.x(1), f.y(1), dark_wood);
+  f.span(f.p.x, f.p.y, f.p.x + t, f.y(1), dark_wood);
+  f.span(f.x(1) - t, f.p.y, f.x(1), f.y(1), dark_wood);
   f.stroke({f.p.x + t, f.p.y + t}, {f.x(1) - t, f.y(1) - t}, t, dark_wood);
 }
 
