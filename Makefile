@@ -65,7 +65,8 @@ COURSE_SRC := src/utils/vect.cpp src/utils/rect.cpp src/component_defs.cpp src/s
               src/entities/block.cpp src/game.cpp
 ENGINE_SRC := $(wildcard src/engine/*.cpp)
 APP_LIB_SRC := src/app/scene.cpp src/app/scene_json.cpp src/app/builtin_scenes.cpp src/app/dump.cpp src/app/save.cpp \
-               src/app/offscreen.cpp src/app/soak.cpp src/app/headless.cpp src/app/png.cpp $(wildcard src/games/*.cpp)
+               src/app/offscreen.cpp src/app/soak.cpp src/app/headless.cpp src/app/png.cpp src/app/style.cpp \
+               $(wildcard src/games/*.cpp)
 CORE_SRC := $(COURSE_SRC) $(ENGINE_SRC) $(APP_LIB_SRC)
 # The command line and the testbed's input logic: SDL-free, linked into the game and the tests.
 APP_SRC  := src/app/cli.cpp src/app/testbed.cpp

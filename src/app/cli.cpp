@@ -125,7 +125,10 @@ po::options_description descriptions() {
        "save the last frame as PNG (window, or offscreen when headless); 60 frames unless --frames")
       ("strict", "exit with code 3 when a body leaves the world (a non-finite value always does)")
       ("overlays", po::value<std::string>()->value_name("LIST"),
-       "window overlays at start: aabb,velocity,contacts,help,nohud or all");
+       "window overlays at start: aabb,velocity,contacts,help,nohud or all")
+      ("style", po::value<std::string>()->value_name("plain|speed|sprite"),
+       "drawing style (window and screenshots): the course's boxes (plain), movable blocks coloured by speed "
+       "from blue at rest to red at 1 px/ms and above (speed), or a shape in each box by its tag (sprite)");
   return d;
 }
 
@@ -157,7 +160,8 @@ int headless_run(const SceneSpec& spec, const std::vector<Body>& bodies, const O
         << w.health.first_escape->frame << ")\n";
     return 3;
   }
-  if (picture && !Offscreen::screenshot(w, spec.width, spec.height, o.screenshot)) {
+  if (picture && !Offscreen::screenshot(w, spec.width, spec.height, o.screenshot, spec.style,
+                                        roles_by_entity(spec, bodies))) {
     err << "game: --screenshot: cannot write " << o.screenshot << "\n";
     return 1;
   }
@@ -261,6 +265,10 @@ Options parse(std::span<const std::string> args) {
   for (const char* flag : {"dump", "trace", "screenshot", "events", "save"})
     if (vm.count(flag) && get(flag).empty()) throw UsageError("an output file name must not be empty");
   if (has("overlays")) o.overlays = overlays(get("overlays"));
+  if (has("style")) {
+    o.overrides.style = style_from_name(get("style"));
+    if (!o.overrides.style) bad("--style", "must be plain, speed or sprite", get("style"));
+  }
   return o;
 }
 

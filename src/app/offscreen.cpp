@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "app/png.hpp"
+#include "app/style.hpp"
 #include "game.hpp"
 
 namespace physics::Offscreen {
@@ -39,8 +40,15 @@ std::vector<std::uint8_t> render(const World& w, int width, int height) {
   return canvas.take();
 }
 
-bool screenshot(const World& w, int width, int height, const std::string& path) {
-  return Png::write_rgb(path, width, height, render(w, width, height));
+std::vector<std::uint8_t> render(const World& w, int width, int height, Style style, std::span<const BlockRole> roles) {
+  PixelCanvas canvas(width, height);
+  Styles::draw_world(w, style, roles, canvas);
+  return canvas.take();
+}
+
+bool screenshot(const World& w, int width, int height, const std::string& path, Style style,
+                std::span<const BlockRole> roles) {
+  return Png::write_rgb(path, width, height, render(w, width, height, style, roles));
 }
 
 }  // namespace physics::Offscreen

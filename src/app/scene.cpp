@@ -304,6 +304,7 @@ void apply(SceneSpec& s, const Overrides& o) {
   if (o.solver) s.params.solver = *o.solver;
   if (o.iterations) s.params.iterations = *o.iterations;
   if (o.integrator) s.params.integrator = *o.integrator;
+  if (o.style) s.style = *o.style;
   std::uint64_t k = 0;
   for (BlockEntry& e : s.blocks) {
     if (o.friction) {
@@ -320,6 +321,21 @@ void apply(SceneSpec& s, const Overrides& o) {
   }
   if (o.restitution) s.restitution = *o.restitution;
   if (o.friction) s.friction = *o.friction;
+}
+
+std::string_view name(Style s) {
+  switch (s) {
+    case Style::plain: return "plain";
+    case Style::speed: return "speed";
+    case Style::sprite: return "sprite";
+  }
+  return "plain";
+}
+
+std::optional<Style> style_from_name(std::string_view name) {
+  for (const Style s : {Style::plain, Style::speed, Style::sprite})
+    if (physics::name(s) == name) return s;
+  return std::nullopt;
 }
 
 std::int64_t body_count(const SceneSpec& s) {

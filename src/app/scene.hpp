@@ -10,6 +10,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -151,6 +152,14 @@ struct GameSpec {
   friend bool operator==(const GameSpec&, const GameSpec&) = default;
 };
 
+// How the window and the offscreen pictures draw the blocks (scene key
+// "style", flag --style; app/style.hpp): plain is the course's Draw system,
+// speed colours each movable block by its speed, sprite draws a shape in
+// each box by its tag (the collisions still use the box).
+enum class Style { plain, speed, sprite };
+std::string_view name(Style s);
+std::optional<Style> style_from_name(std::string_view name);
+
 struct SceneSpec {
   std::string name;
   std::string description;
@@ -163,6 +172,7 @@ struct SceneSpec {
   std::vector<BlockEntry> blocks;
   std::optional<SavedState> state;  // a saved world's (scene key "state")
   GameSpec game;                    // scene key "game"
+  Style style = Style::plain;       // scene key "style"
 };
 
 
@@ -178,6 +188,7 @@ struct Overrides {
   std::optional<Solver> solver;
   std::optional<int> iterations;
   std::optional<Integrator> integrator;
+  std::optional<Style> style;
 };
 void apply(SceneSpec& s, const Overrides& o);
 

@@ -939,13 +939,18 @@ SceneSpec read_scene(std::string_view text, const std::string& source) {
   }
   const json& doc = dom.root;
   if (!doc.is_object()) r.fail("", "a scene file must hold one JSON object {...} (got " + r.got(doc) + ")");
-  r.keys(doc, "", {"name", "description", "world", "blocks", "state", "game"});
+  r.keys(doc, "", {"name", "description", "world", "blocks", "state", "game", "style"});
   s.name = stem(source);
   if (const json* v = find(doc, "name")) s.name = r.text(*v, "name");
   if (const json* v = find(doc, "description")) s.description = r.text(*v, "description");
   if (const json* v = find(doc, "world")) read_world(r, *v, s);
   if (const json* v = find(doc, "state")) s.state = read_state(r, *v);
   if (const json* v = find(doc, "game")) s.game = read_game(r, *v);
+  if (const json* v = find(doc, "style")) {
+    const auto style = style_from_name(r.text(*v, "style"));
+    if (!style) r.fail("style", "must be \"plain\", \"speed\" or \"sprite\" (got " + r.got(*v) + ")");
+    s.style = *style;
+  }
   if (const json* v = find(doc, "blocks"); v && !v->is_array())
     r.fail("blocks", "must be an array of blocks (got " + r.got(*v) + ")");
   if (block_error) throw *block_error;
@@ -1137,6 +1142,7 @@ std::string to_json(const SceneSpec& s) {
     o["game"] = {{"kind", s.game.kind}, {"shots", s.game.shots}};
     if (!s.game.next.empty()) o["game"]["next"] = s.game.next;
   }
+  if (s.style != Style::plain) o["style"] = std::string(name(s.style));  // plain: today's files unchanged
   if (s.state) {
     ojson warm = ojson::array();
     for (const WarmImpulse& w : s.state->warm_start) warm.push_back({w.pair.c, w.pair.b, w.axis, w.jn, w.jt});

@@ -318,6 +318,7 @@ View Testbed::view(double fps, double draw_ms) const {
   View v;
   v.overlays = overlays_;
   v.roles = roles_;
+  v.style = overrides_.style.value_or(scene().style);
   if (overlays_.contacts) v.contacts = last_contacts_, v.contact_regions = last_regions_;
   if (press_) {
     // A game that launches from its own point: the same drag, drawn from there.

@@ -72,6 +72,7 @@ struct View {
   std::vector<std::string> hud;   // lines, top left
   std::vector<std::string> help;  // the key list, when H is on
   std::span<const BlockRole> roles;  // each body's part in a game (tag, strength), by entity id
+  Style style = Style::plain;        // how the blocks are drawn (app/style.hpp)
 };
 
 class Testbed {

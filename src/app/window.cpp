@@ -5,10 +5,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <vector>
 
 #include "app/png.hpp"
+#include "app/style.hpp"
 #include "game.hpp"
 
 namespace physics {
@@ -210,11 +212,28 @@ class SdlCanvas final : public Canvas {
   SDL_Renderer* r_;
 };
 
+// The speed style's key, under the HUD lines: the ramp (Styles::speed_color)
+// as a bar from 0 to its top speed, with the end values. Returns the y below it.
+template <class Text>
+int speed_legend(SDL_Renderer* r, int x, int y, const Text& text) {
+  constexpr int bar_w = 160, bar_h = 12;
+  const int left = text("speed 0", x, y, SDL_Color{20, 20, 20, 255});
+  const int bx = x + 70;
+  SdlCanvas canvas(r);
+  for (int i = 0; i < bar_w; ++i)
+    canvas.fill_rect({double(bx + i), double(y + 2)}, {1, bar_h},
+                     Styles::speed_color(Styles::top_speed * i / (bar_w - 1)));
+  char top[32];
+  std::snprintf(top, sizeof top, ">= %g px/ms", Styles::top_speed);
+  const int right = text(top, bx + bar_w + 6, y, SDL_Color{20, 20, 20, 255});
+  return y + std::max({left, right, bar_h + 4}) + 2;
+}
+
 double render_bodies(const World& world, const View& view, SDL_Renderer* r) {
   const Draw& draw = *world.systems.draw;
   const Uint64 t0 = SDL_GetPerformanceCounter();
   SdlCanvas canvas(r);
-  Game::draw(world, canvas);
+  Styles::draw_world(world, view.style, view.roles, canvas);
   SDL_RenderFlush(r);
   const double draw_ms =
       1000.0 * static_cast<double>(SDL_GetPerformanceCounter() - t0) / static_cast<double>(SDL_GetPerformanceFrequency());
@@ -274,6 +293,7 @@ double Window::render(const World& world, const View& view) {
   };
   int y = 44;
   for (const std::string& s : view.hud) y += text(s, 48, y, SDL_Color{20, 20, 20, 255}) + 2;
+  if (view.style == Style::speed && view.overlays.hud) y = speed_legend(r, 48, y + 2, text);
   if (!view.help.empty()) {
     const int line_h = TTF_FontLineSkip(impl_->font.get());
     // Below the HUD, so that neither hides the other.
