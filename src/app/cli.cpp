@@ -236,9 +236,10 @@ int replay_run(const InputLog& log, const Options& o, Recorder& rec, const std::
 }
 
 // --replay: the log, read and checked before anything runs; without --scene
-// its scene is the log's. --record: the file must be writable (like --dump).
-// Returns 0, or 2 after one line on `err`.
-int prepare_logs(Options& o, std::optional<InputLog>& log, std::ostream& err) {
+// its scene is the log's. --record: a window must be due (`why` says why
+// not), and the file writable (like --dump). Returns 0, or 2 after one line
+// on `err`.
+int prepare_logs(Options& o, std::optional<InputLog>& log, const std::string& why, std::ostream& err) {
   if (!o.replay.empty()) {
     try {
       log = read_input_log(o.replay);
@@ -247,6 +248,10 @@ int prepare_logs(Options& o, std::optional<InputLog>& log, std::ostream& err) {
       return 2;
     }
     if (!o.scene_given && !log->scene.empty()) o.scene = log->scene;
+  }
+  if (!o.record.empty() && !why.empty()) {
+    err << "game: --record: needs a window, and this run is headless (" << why << ")\n";
+    return 2;
   }
   if (!o.record.empty() && !std::ofstream(o.record, std::ios::binary | std::ios::trunc)) {
     err << "game: --record: cannot write " << o.record << ": " << std::strerror(errno) << "\n";
@@ -447,8 +452,13 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err,
     }
     return 0;
   }
+  // Why the run is headless, if it is (empty: a window).
+  std::string why = o.headless ? "--headless given"
+                    : !window  ? "no window front end"
+                    : !window->display_available() ? "no display (DISPLAY, WAYLAND_DISPLAY and SDL_VIDEODRIVER unset)"
+                                                   : "";
   std::optional<InputLog> log;
-  if (const int code = prepare_logs(o, log, err); code != 0) return code;
+  if (const int code = prepare_logs(o, log, why, err); code != 0) return code;
   SceneSpec spec;
   std::vector<Body> bodies;
   try {
@@ -480,30 +490,22 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err,
   }
   try {
     Recorder rec(o);
-    std::string why = "--headless given";
-    if (!o.headless) {
-      if (!window) {
-        why = "no window front end";
-      } else if (!window->display_available()) {
-        why = "no display (DISPLAY, WAYLAND_DISPLAY and SDL_VIDEODRIVER unset)";
-      } else {
-        Session session;
-        session.scenes = testbed_scenes(o, session.current);
-        session.options = o;
-        session.recorder = &rec;
-        session.err = &err;
-        session.replay = log;
-        try {
-          return window->run(session);
-        } catch (const NoWindow& e) {
-          if (!o.record.empty()) throw UsageError(std::string("--record: needs a window: ") + e.what());
-          err << "game: " << e.what() << "; running headless\n";
-          why = std::string("window failed: ") + e.what();
-          rec = Recorder(o);  // start the files again
-        }
+    if (why.empty()) {
+      Session session;
+      session.scenes = testbed_scenes(o, session.current);
+      session.options = o;
+      session.recorder = &rec;
+      session.err = &err;
+      session.replay = log;
+      try {
+        return window->run(session);
+      } catch (const NoWindow& e) {
+        if (!o.record.empty()) throw UsageError(std::string("--record: needs a window: ") + e.what());
+        err << "game: " << e.what() << "; running headless\n";
+        why = std::string("window failed: ") + e.what();
+        rec = Recorder(o);  // start the files again
       }
     }
-    if (!o.record.empty()) throw UsageError("--record: needs a window, and this run is headless (" + why + ")");
     if (log) return replay_run(*log, o, rec, why, out, err);
     return headless_run(spec, bodies, o, rec, why, out, err);
   } catch (const UsageError& e) {
