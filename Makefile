@@ -69,7 +69,7 @@ APP_LIB_SRC := src/app/scene.cpp src/app/scene_json.cpp src/app/builtin_scenes.c
                $(wildcard src/games/*.cpp)
 CORE_SRC := $(COURSE_SRC) $(ENGINE_SRC) $(APP_LIB_SRC)
 # The command line and the testbed's input logic: SDL-free, linked into the game and the tests.
-APP_SRC  := src/app/cli.cpp src/app/testbed.cpp
+APP_SRC  := src/app/cli.cpp src/app/testbed.cpp src/app/input_log.cpp src/app/testbed_replay.cpp
 GAME_SRC := src/app/main.cpp src/app/window.cpp $(APP_SRC)
 TEST_SRC := $(wildcard tests/*.cpp) $(APP_SRC)
 APP_LIBS := -lboost_program_options

@@ -7,6 +7,8 @@
 #include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <limits>
+#include <optional>
 #include <sstream>
 
 #include "app/builtin_scenes.hpp"
@@ -123,6 +125,11 @@ po::options_description descriptions() {
        "write every frame as CSV: frame,id,x,y,w,h,vx,vy,mass (frame 0 = the initial state)")
       ("screenshot", po::value<std::string>()->value_name("FILE.png"),
        "save the last frame as PNG (window, or offscreen when headless); 60 frames unless --frames")
+      ("record", po::value<std::string>()->value_name("FILE"),
+       "window: write every input event (keys, mouse) with its tick to FILE, an input log for --replay")
+      ("replay", po::value<std::string>()->value_name("FILE"),
+       "play an input log written by --record, in a window (live input only quits) or with --headless, with the "
+       "same physics bit for bit; the scene is the log's unless --scene is given; --frames N stops after N steps")
       ("strict", "exit with code 3 when a body leaves the world (a non-finite value always does)")
       ("overlays", po::value<std::string>()->value_name("LIST"),
        "window overlays at start: aabb,velocity,contacts,help,nohud or all")
@@ -135,6 +142,27 @@ po::options_description descriptions() {
 // Where the scene came from, for messages: its file, or "scene NAME".
 std::string scene_source(const std::string& name_or_file) {
   return find_builtin(name_or_file) ? "scene " + name_or_file : name_or_file;
+}
+
+// The testbed's scenes: the built-ins, and a scene file joins them as the
+// ninth; `current` is o.scene's. The window and a headless replay use the
+// same list, so that a replayed digit or Tab picks the same scene.
+std::vector<SceneSpec> testbed_scenes(const Options& o, std::size_t& current) {
+  std::vector<SceneSpec> scenes(builtin_scenes().begin(), builtin_scenes().end());
+  current = scenes.size();
+  for (std::size_t i = 0; i < scenes.size(); ++i)
+    if (scenes[i].name == o.scene) current = i;
+  if (current == scenes.size()) scenes.push_back(resolve_scene(o.scene));
+  return scenes;
+}
+
+// --strict: an escape exits with code 3 (after the summary and the files).
+bool strict_failure(const World& w, const Options& o, std::ostream& err) {
+  if (!o.strict || w.health.escaped == 0) return false;
+  err << "game: --strict: " << w.health.escaped << " bod" << (w.health.escaped == 1 ? "y" : "ies")
+      << " left the world (the first: body " << w.health.first_escape->id << ", by frame "
+      << w.health.first_escape->frame << ")\n";
+  return true;
 }
 
 // `bodies`: the scene's, from the one expand() (validation) of this load.
@@ -154,16 +182,85 @@ int headless_run(const SceneSpec& spec, const std::vector<Body>& bodies, const O
   }
   Headless::print_summary(out, w, summary, why, spec.name);
   rec.finish(w, spec);
-  if (o.strict && w.health.escaped > 0) {
-    err << "game: --strict: " << w.health.escaped << " bod" << (w.health.escaped == 1 ? "y" : "ies")
-        << " left the world (the first: body " << w.health.first_escape->id << ", by frame "
-        << w.health.first_escape->frame << ")\n";
-    return 3;
-  }
+  if (strict_failure(w, o, err)) return 3;
   if (picture && !Offscreen::screenshot(w, spec.width, spec.height, o.screenshot, spec.style,
                                         roles_by_entity(spec, bodies))) {
     err << "game: --screenshot: cannot write " << o.screenshot << "\n";
     return 1;
+  }
+  return 0;
+}
+
+// --replay --headless: the testbed the window would run, driven by the log
+// tick by tick (Testbed::play) instead of by the clock, so the same code
+// handles the events; --frames N stops after N steps (ticks).
+int replay_run(const InputLog& log, const Options& o, Recorder& rec, const std::string& why, std::ostream& out,
+               std::ostream& err) {
+  std::size_t current = 0;
+  std::vector<SceneSpec> scenes = testbed_scenes(o, current);
+  Testbed tb(std::move(scenes), current, o.overrides, o.overlays);
+  Headless::Summary s;
+  rec.start(tb.world());
+  tb.on_step = [&](const World& w) {
+    rec.after_step(w);
+    if (tb.ticks() == 1) s.ke_start = w.kinetic_energy(), s.p_start = w.momentum();
+  };
+  tb.on_reset = [&](const World&) { rec.restart(tb.world()); };
+  tb.replay(log);
+  tb.play(o.frames.value_or(std::numeric_limits<std::int64_t>::max()));
+  World& w = tb.world();
+  if (!w.health.finite()) {
+    rec.abandon();
+    err << "game: " << Headless::non_finite_line(w) << "\n";
+    return 3;
+  }
+  w.health.count_escapes(w.components, w.frame);  // the frames since the last count
+  s.frames = tb.ticks();
+  s.bodies = w.components.size();
+  s.mobile = w.finite_bodies();
+  s.ke_end = w.kinetic_energy();
+  s.p_end = w.momentum();
+  Headless::print_summary(out, w, s, why, tb.scene().name);
+  out << "replay: " << tb.replayed() << " events over " << tb.ticks() << " ticks, ended at frame " << w.frame
+      << "\n";
+  // Paused with events still to come: they can never be reached.
+  if (tb.replaying() && !(o.frames && tb.ticks() >= *o.frames))
+    err << "warning: " << o.replay << ": the replay stopped paused at tick " << tb.ticks() << " with "
+        << log.events.size() - tb.replayed() << " events left (logged to tick " << log.end
+        << "): was it recorded on this scene with these options?\n";
+  SceneSpec scene = tb.scene();
+  apply(scene, o.overrides);
+  rec.finish(w, scene);
+  if (strict_failure(w, o, err)) return 3;
+  if (!o.screenshot.empty() &&
+      !Offscreen::screenshot(w, scene.width, scene.height, o.screenshot, scene.style, tb.roles())) {
+    err << "game: --screenshot: cannot write " << o.screenshot << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+// --replay: the log, read and checked before anything runs; without --scene
+// its scene is the log's. --record: a window must be due (`why` says why
+// not), and the file writable (like --dump). Returns 0, or 2 after one line
+// on `err`.
+int prepare_logs(Options& o, std::optional<InputLog>& log, const std::string& why, std::ostream& err) {
+  if (!o.replay.empty()) {
+    try {
+      log = read_input_log(o.replay);
+    } catch (const InputLogError& e) {
+      err << "game: " << e.what() << "\n";
+      return 2;
+    }
+    if (!o.scene_given && !log->scene.empty()) o.scene = log->scene;
+  }
+  if (!o.record.empty() && !why.empty()) {
+    err << "game: --record: needs a window, and this run is headless (" << why << ")\n";
+    return 2;
+  }
+  if (!o.record.empty() && !std::ofstream(o.record, std::ios::binary | std::ios::trunc)) {
+    err << "game: --record: cannot write " << o.record << ": " << std::strerror(errno) << "\n";
+    return 2;
   }
   return 0;
 }
@@ -215,6 +312,7 @@ Options parse(std::span<const std::string> args) {
   o.strict = has("strict");
   if (has("scene")) {
     o.scene = get("scene");
+    o.scene_given = true;
     if (o.scene.empty()) throw UsageError("--scene: needs a scene name or a file");
   }
   if (has("frames")) o.frames = integer("--frames", get("frames"), 0, std::int64_t{1} << 53);
@@ -262,8 +360,13 @@ Options parse(std::span<const std::string> args) {
     if (!o.screenshot.empty() && ext != ".png")
       bad("--screenshot", "only PNG is written: the name must end in .png", o.screenshot);
   }
-  for (const char* flag : {"dump", "trace", "screenshot", "events", "save"})
-    if (vm.count(flag) && get(flag).empty()) throw UsageError("an output file name must not be empty");
+  if (has("record")) o.record = get("record");
+  if (has("replay")) o.replay = get("replay");
+  if (has("record") && has("replay"))
+    throw UsageError("--record and --replay: give one of them (a replay would record its own log again)");
+  if (has("record") && o.headless) throw UsageError("--record: nothing to record in a --headless run (no input)");
+  for (const char* flag : {"dump", "trace", "screenshot", "events", "save", "record", "replay"})
+    if (vm.count(flag) && get(flag).empty()) throw UsageError("--" + std::string(flag) + ": a file name must not be empty");
   if (has("overlays")) o.overlays = overlays(get("overlays"));
   if (has("style")) {
     o.overrides.style = style_from_name(get("style"));
@@ -358,6 +461,13 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err,
     }
     return 0;
   }
+  // Why the run is headless, if it is (empty: a window).
+  std::string why = o.headless ? "--headless given"
+                    : !window  ? "no window front end"
+                    : !window->display_available() ? "no display (DISPLAY, WAYLAND_DISPLAY and SDL_VIDEODRIVER unset)"
+                                                   : "";
+  std::optional<InputLog> log;
+  if (const int code = prepare_logs(o, log, why, err); code != 0) return code;
   SceneSpec spec;
   std::vector<Body> bodies;
   try {
@@ -389,32 +499,23 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err,
   }
   try {
     Recorder rec(o);
-    std::string why = "--headless given";
-    if (!o.headless) {
-      if (!window) {
-        why = "no window front end";
-      } else if (!window->display_available()) {
-        why = "no display (DISPLAY, WAYLAND_DISPLAY and SDL_VIDEODRIVER unset)";
-      } else {
-        Session session;
-        // The testbed walks the built-in scenes; a scene file joins the list.
-        for (const SceneSpec& s : builtin_scenes()) session.scenes.push_back(s);
-        session.current = session.scenes.size();
-        for (std::size_t i = 0; i < session.scenes.size(); ++i)
-          if (session.scenes[i].name == o.scene) session.current = i;
-        if (session.current == session.scenes.size()) session.scenes.push_back(resolve_scene(o.scene));
-        session.options = o;
-        session.recorder = &rec;
-        session.err = &err;
-        try {
-          return window->run(session);
-        } catch (const NoWindow& e) {
-          err << "game: " << e.what() << "; running headless\n";
-          why = std::string("window failed: ") + e.what();
-          rec = Recorder(o);  // start the files again
-        }
+    if (why.empty()) {
+      Session session;
+      session.scenes = testbed_scenes(o, session.current);
+      session.options = o;
+      session.recorder = &rec;
+      session.err = &err;
+      session.replay = log;
+      try {
+        return window->run(session);
+      } catch (const NoWindow& e) {
+        if (!o.record.empty()) throw UsageError(std::string("--record: needs a window: ") + e.what());
+        err << "game: " << e.what() << "; running headless\n";
+        why = std::string("window failed: ") + e.what();
+        rec = Recorder(o);  // start the files again
       }
     }
+    if (log) return replay_run(*log, o, rec, why, out, err);
     return headless_run(spec, bodies, o, rec, why, out, err);
   } catch (const UsageError& e) {
     err << "game: " << e.what() << "\n";

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "app/input_log.hpp"
 #include "app/scene.hpp"
 #include "app/testbed.hpp"
 
@@ -30,9 +31,11 @@ struct Options {
   bool help = false, list_scenes = false, print_scene = false, headless = false;
   bool strict = false;  // an escape exits with code 3
   std::string scene{"many"};
+  bool scene_given = false;  // --scene was given (else a replay runs on its log's scene)
   std::optional<std::int64_t> frames;
   Overrides overrides;
   std::string dump, trace, screenshot, events, save;
+  std::string record, replay;  // input logs (app/input_log.hpp)
   Overlays overlays;
 };
 
@@ -76,6 +79,7 @@ struct Session {
   Options options;
   Recorder* recorder = nullptr;
   std::ostream* err = nullptr;
+  std::optional<InputLog> replay;  // --replay: read and checked
 };
 
 // Thrown by the front end when no window can be opened: the run goes on headless.

@@ -8,6 +8,7 @@
 
 #include "app/cli.hpp"
 #include "app/headless.hpp"
+#include "app/input_log.hpp"
 #include "app/testbed.hpp"
 #include "app/window.hpp"
 
@@ -32,13 +33,18 @@ int run_window(Cli::Session& s) {
   rec.start(tb.world());
   tb.on_step = [&](const World& w) { rec.after_step(w); };
   tb.on_reset = [&](const World&) { rec.restart(tb.world()); };
+  // --record: every event the testbed handles, with its tick; --replay: the
+  // log's events at their ticks (live input then only quits).
+  InputLog log{o.scene, {}, 0};
+  if (!o.record.empty()) tb.record(&log);
+  if (s.replay) tb.replay(*s.replay);
   std::optional<std::int64_t> frames = o.frames;
   if (!o.screenshot.empty() && !frames) frames = Cli::screenshot_frames;
 
   double last = win->seconds(), fps = 0.0, draw_ms = 0.0;
   for (bool running = true; running;) {
     for (const InputEvent& ev : win->poll_events())
-      if (tb.handle(ev) == Testbed::Action::quit) running = false;
+      if (tb.live(ev) == Testbed::Action::quit) running = false;
     const double now = win->seconds();
     const double elapsed = now - last;
     last = now;
@@ -52,6 +58,12 @@ int run_window(Cli::Session& s) {
       running = false;
     }
     win->present();
+  }
+  // The log is written whatever the end: a session that broke the physics
+  // is the one worth replaying.
+  if (!o.record.empty()) {
+    log.end = tb.ticks();
+    write_input_log(o.record, log);
   }
   // Nothing is written as if it were fine after a non-finite state (exit 3,
   // as headless).

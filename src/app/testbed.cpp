@@ -136,10 +136,12 @@ void Testbed::after_step() {
 }
 
 void Testbed::step() {
+  pump();  // a replay's events of this tick come before its step
   // A world with a non-finite body is stopped: nothing after it is physics.
   if (world_.health.non_finite) return;
   if (level_ && outcome_ == Level::Outcome::playing) level_->before_step(world_);
   Game::step(world_);
+  ++ticks_;
   after_step();
   if (level_ && outcome_ == Level::Outcome::playing) after_level_step();
   if (world_.health.non_finite) {
@@ -183,14 +185,16 @@ void Testbed::say(std::string message, bool fades) {
 int Testbed::advance(double elapsed_ms, std::int64_t last_frame) {
   // A passing message fades after message_ms of real time, paused or not.
   if (!message_.empty() && elapsed_ms > 0.0 && (message_left_ms_ -= elapsed_ms) <= 0.0) message_.clear();
+  pump();  // a replay's events due now, paused or not
   if (paused_ || !(elapsed_ms > 0.0)) return 0;
   const double dt = world_.params.dt;
   acc_ms_ = std::min(acc_ms_ + elapsed_ms * (slow_ ? slow_motion : 1.0), max_steps_per_frame * dt);
   // Whole steps covered; the 1e-9 keeps k·dt summed from k pieces a step.
   const int due = static_cast<int>(std::floor(acc_ms_ / dt + 1e-9));
   int n = 0;
-  while (n < due && world_.frame < last_frame) {
+  while (n < due && world_.frame < last_frame && !paused_) {
     step();
+    pump();  // a replayed pause stops the steps of this frame
     ++n;
   }
   acc_ms_ = due > 0 ? std::max(0.0, acc_ms_ - due * dt) : acc_ms_;
@@ -227,6 +231,7 @@ bool Testbed::spawn(Vector centre, Vector v) {
 
 Testbed::Action Testbed::handle(const InputEvent& e) {
   using Kind = InputEvent::Kind;
+  if (recording_) record_event(e);
   switch (e.kind) {
     case Kind::quit: return Action::quit;
     case Kind::mouse_down:

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -42,6 +43,8 @@ struct InputEvent {
   int x = 0, y = 0;
   int button = 0;  // 1 left, 2 middle, 3 right (SDL's numbering)
 };
+
+struct InputLog;  // app/input_log.hpp: events with their ticks (--record, --replay)
 
 struct Overlays {
   bool aabb = false, velocity = false, contacts = false, hud = true, help = false;
@@ -103,6 +106,26 @@ class Testbed {
   // Switches to scene i (ignored if out of range); rebuilds it.
   void select(std::size_t i);
 
+  // Record and replay (testbed_replay.cpp). The tick is the number of
+  // physics steps run since construction (world().frame restarts at R).
+  std::int64_t ticks() const { return ticks_; }
+  // Appends every event handle() gets from now on, with its tick, to `log`
+  // (which must outlive the recording; null stops it).
+  void record(InputLog* log) { recording_ = log; }
+  // From now on (call it before the first step), the events of `log` are
+  // handled at their ticks: each tick's before the step of that tick, paused
+  // or not. At the log's end tick the replay ends and the testbed pauses.
+  void replay(InputLog log);
+  bool replaying() const { return replay_ != nullptr; }
+  std::size_t replayed() const { return replayed_; }  // logged events handled so far
+  // The window's input: handled, but while replaying only a quit counts
+  // (Esc, Q, closing the window), so the replay stays exact.
+  Action live(const InputEvent& e);
+  // The headless replay: handles each tick's events and steps until the
+  // replay ends, the testbed is paused with nothing due (the log does not
+  // fit this scene), or `last_tick` (whose events are handled).
+  void play(std::int64_t last_tick = std::numeric_limits<std::int64_t>::max());
+
   World& world() { return world_; }
   const World& world() const { return world_; }
   const SceneSpec& scene() const { return scenes_[current_]; }
@@ -151,6 +174,12 @@ class Testbed {
   std::optional<Vector> press_;      // left button down: the slingshot
   std::optional<Vector> ray_from_;   // right button down: the ray
   Vector mouse_{};
+  void pump();  // replay: handles the logged events due at this tick
+  void record_event(const InputEvent& e);
+  std::int64_t ticks_ = 0;
+  InputLog* recording_ = nullptr;
+  std::shared_ptr<const InputLog> replay_;  // shared: InputLog is incomplete here
+  std::size_t replayed_ = 0;  // also the next logged event's index
   std::vector<BlockRole> roles_;
   std::unique_ptr<Level> level_;  // the scene's game, if it has one
   Level::Outcome outcome_ = Level::Outcome::playing;

@@ -1,0 +1,54 @@
+// Input logs: every input event the testbed received, with the tick (physics
+// steps run) it arrived at, so that a session can be replayed with the same
+// physics bit for bit (--record FILE, --replay FILE). SDL-free.
+//
+// The file is text, one event a line, CSV with a header; '#' lines are
+// comments, and "# scene: NAME" names the scene it was recorded on:
+//
+//   # physics input log v1
+//   # scene: stack
+//   tick,kind,key,x,y,button
+//   0,key,1073741903,0,0,0
+//   35,key_up,1073741903,0,0,0
+//   812,end,0,0,0,0
+//
+// kind: key, key_up, mouse_down, mouse_up, mouse_move, quit; the last line is
+// `end`, the tick the recording stopped at. Ticks never decrease.
+#pragma once
+
+#include <cstdint>
+#include <iosfwd>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "app/testbed.hpp"
+
+namespace physics {
+
+struct LoggedEvent {
+  std::int64_t tick = 0;  // Testbed::ticks() when the event was handled
+  InputEvent event;
+  bool operator==(const LoggedEvent& o) const;
+};
+
+struct InputLog {
+  std::string scene;  // the "# scene:" line (empty if none)
+  std::vector<LoggedEvent> events;  // in the order handled; ticks never decrease
+  std::int64_t end = 0;             // the tick the recording stopped at (>= every event's)
+};
+
+// A malformed or unreadable log: "FILE:LINE: problem" (or "FILE: problem").
+struct InputLogError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// `name` is the file name the messages give.
+InputLog parse_input_log(std::istream& in, const std::string& name);
+InputLog read_input_log(const std::string& path);  // throws InputLogError
+
+void write_input_log(std::ostream& out, const InputLog& log);
+// Throws std::runtime_error when the file cannot be written.
+void write_input_log(const std::string& path, const InputLog& log);
+
+}  // namespace physics
