@@ -3,8 +3,12 @@
 #include <filesystem>
 #include <map>
 #include <ostream>
+#include <sstream>
 #include <string>
+#include <vector>
 
+#include "app/cli.hpp"
+#include "app/input_log.hpp"
 #include "app/scene_json.hpp"
 #include "app/testbed.hpp"
 #include "games/platformer.hpp"
@@ -15,8 +19,19 @@ using namespace physics;
 
 namespace {
 
-std::string scene_path(const std::string& name) {
-  return (std::filesystem::path(__FILE__).parent_path().parent_path() / "scenes" / (name + ".json")).string();
+// Absolute (the repository's scenes/ and replays/): tests may run elsewhere.
+std::filesystem::path root() { return std::filesystem::absolute(__FILE__).parent_path().parent_path(); }
+std::string scene_path(const std::string& name) { return (root() / "scenes" / (name + ".json")).string(); }
+std::string replay_path(const std::string& name) { return (root() / "replays" / (name + ".log")).string(); }
+
+// The command line, headless, on a committed replay of a game.
+std::string replay_headless(const std::string& game) {
+  std::ostringstream out, err;
+  const std::vector<std::string> args{"--replay", replay_path(game), "--scene", scene_path(game), "--headless"};
+  const int code = Cli::run(args, out, err, nullptr);
+  BOOST_TEST(code == 0, err.str());
+  BOOST_TEST(err.str().empty(), err.str());
+  return out.str();
 }
 
 Testbed level(const std::string& name) { return Testbed({load_scene_file(scene_path(name))}, 0); }
@@ -218,6 +233,35 @@ BOOST_AUTO_TEST_CASE(enter_after_a_win_loads_the_next_level) {
   BOOST_TEST(tb.outcome() == Level::Outcome::playing);
   BOOST_TEST(!tb.paused());
   BOOST_TEST(targets(tb).targets_left() == 3);
+}
+
+// The committed replays (replays/, recorded in the format of --record) win
+// their levels headless, as `build/game --replay replays/X.log --headless`.
+BOOST_AUTO_TEST_CASE(the_committed_platformer_replay_wins_with_every_coin) {
+  const std::string out = replay_headless("platformer");
+  BOOST_TEST(has(out, "\nreplay: 13 events over 456 ticks, ended at frame 456\n"), out);
+  BOOST_TEST(has(out, "\ngame: won: coins 4/4 "), out);
+  // The same through the testbed itself: won at frame 456, every coin taken.
+  Testbed tb = level("platformer");
+  tb.replay(read_input_log(replay_path("platformer")));
+  tb.play();
+  BOOST_TEST(tb.outcome() == Level::Outcome::won);
+  BOOST_TEST(tb.world().frame == 456);
+  BOOST_TEST(platformer(tb).coins() == 4);
+  BOOST_TEST(platformer(tb).coins_total() == 4);
+}
+
+BOOST_AUTO_TEST_CASE(the_committed_targets_replay_wins_level_one_with_its_three_shots) {
+  const std::string out = replay_headless("targets-1");
+  BOOST_TEST(has(out, "\nreplay: 9 events over 277 ticks, ended at frame 277\n"), out);
+  BOOST_TEST(has(out, "\ngame: won: targets left 0   shots 0/3   score 200 "), out);
+  Testbed tb = level("targets-1");
+  tb.replay(read_input_log(replay_path("targets-1")));
+  tb.play();
+  BOOST_TEST(tb.outcome() == Level::Outcome::won);
+  BOOST_TEST(tb.world().frame == 277);
+  BOOST_TEST(targets(tb).targets_left() == 0);
+  BOOST_TEST(targets(tb).shots_left() == 0);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

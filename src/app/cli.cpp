@@ -191,6 +191,13 @@ int headless_run(const SceneSpec& spec, const std::vector<Body>& bodies, const O
   return 0;
 }
 
+// "won: coins 4/4 ...": how a game's level stands, and its HUD's first line.
+std::string game_line(const Level& level, Level::Outcome outcome) {
+  const char* state = outcome == Level::Outcome::won ? "won" : outcome == Level::Outcome::lost ? "lost" : "playing";
+  const std::vector<std::string> hud = level.hud();
+  return std::string(state) + (hud.empty() ? "" : ": " + hud.front());
+}
+
 // --replay --headless: the testbed the window would run, driven by the log
 // tick by tick (Testbed::play) instead of by the clock, so the same code
 // handles the events; --frames N stops after N steps (ticks).
@@ -223,8 +230,9 @@ int replay_run(const InputLog& log, const Options& o, Recorder& rec, const std::
   Headless::print_summary(out, w, s, why, tb.scene().name);
   out << "replay: " << tb.replayed() << " events over " << tb.ticks() << " ticks, ended at frame " << w.frame
       << "\n";
+  if (const Level* level = tb.level()) out << "game: " << game_line(*level, tb.outcome()) << "\n";
   // Paused with events still to come: they can never be reached.
-  if (tb.replaying() && !(o.frames && tb.ticks() >= *o.frames))
+  if (tb.replayed() < log.events.size() && !(o.frames && tb.ticks() >= *o.frames))
     err << "warning: " << o.replay << ": the replay stopped paused at tick " << tb.ticks() << " with "
         << log.events.size() - tb.replayed() << " events left (logged to tick " << log.end
         << "): was it recorded on this scene with these options?\n";

@@ -95,6 +95,14 @@ void coin(const Frame& f) {
   f.disc(cx - 0.35 * r, cy - 0.35 * r, 0.18 * r, shine);
 }
 
+// A heavy ball in the block's colour, lit from the top left (the target
+// game's shots).
+void shot(const Frame& f, Color c) {
+  const double r = 0.5 * std::min(f.w, f.h), cx = f.x(0.5), cy = f.y(0.5);
+  f.disc(cx, cy, r, c);
+  f.disc(cx - 0.3 * r, cy - 0.3 * r, 0.25 * r, shine);
+}
+
 // A flag in the block's colour on a pole, on a small base.
 void goal(const Frame& f, Color flag) {
   const double pole = std::max(2.0, 0.08 * f.w) / f.w;
@@ -181,6 +189,7 @@ bool draw_sprite(std::string_view tag, Vector p, Rect r, Color c, Canvas& canvas
   const Frame f{canvas, p, double(r.width), double(r.height)};
   if (tag == "player") player(f, c);
   else if (tag == "coin") coin(f);
+  else if (tag == "shot") shot(f, c);
   else if (tag == "goal") goal(f, c);
   else if (tag == "target") target(f);
   else if (tag == "platform") platform(f, p, r);

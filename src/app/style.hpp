@@ -11,7 +11,7 @@
 //   speed   each movable block filled with speed_color(|v|); fixed bodies and
 //           sensors as plain
 //   sprite  a shape inside each box by its tag (BlockRole): player, coin,
-//           goal, target, platform, crate; an untagged movable block is a
+//           goal, target, platform, crate, shot (a ball); an untagged movable block is a
 //           crate; walls and fixed untagged blocks as plain
 #pragma once
 
