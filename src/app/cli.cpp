@@ -200,7 +200,8 @@ std::string game_line(const Level& level, Level::Outcome outcome) {
 
 // --replay --headless: the testbed the window would run, driven by the log
 // tick by tick (Testbed::play) instead of by the clock, so the same code
-// handles the events; --frames N stops after N steps (ticks).
+// handles the events; --frames N stops after N steps (ticks). Also a game's
+// headless run without --replay (an empty log).
 int replay_run(const InputLog& log, const Options& o, Recorder& rec, const std::string& why, std::ostream& out,
                std::ostream& err) {
   std::size_t current = 0;
@@ -228,8 +229,9 @@ int replay_run(const InputLog& log, const Options& o, Recorder& rec, const std::
   s.ke_end = w.kinetic_energy();
   s.p_end = w.momentum();
   Headless::print_summary(out, w, s, why, tb.scene().name);
-  out << "replay: " << tb.replayed() << " events over " << tb.ticks() << " ticks, ended at frame " << w.frame
-      << "\n";
+  if (!o.replay.empty())
+    out << "replay: " << tb.replayed() << " events over " << tb.ticks() << " ticks, ended at frame " << w.frame
+        << "\n";
   if (const Level* level = tb.level()) out << "game: " << game_line(*level, tb.outcome()) << "\n";
   // Paused with events still to come: they can never be reached.
   if (tb.replayed() < log.events.size() && !(o.frames && tb.ticks() >= *o.frames))
@@ -524,6 +526,13 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err,
       }
     }
     if (log) return replay_run(*log, o, rec, why, out, err);
+    // A game's level runs in its testbed, so that its rules apply (the
+    // platforms move, the level can be lost), with no input.
+    if (!spec.game.kind.empty()) {
+      InputLog idle;
+      idle.end = o.frames.value_or(o.screenshot.empty() ? headless_frames : screenshot_frames);
+      return replay_run(idle, o, rec, why, out, err);
+    }
     return headless_run(spec, bodies, o, rec, why, out, err);
   } catch (const UsageError& e) {
     err << "game: " << e.what() << "\n";
