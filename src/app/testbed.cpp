@@ -303,7 +303,7 @@ std::vector<std::string> Testbed::key_list(std::size_t scene_count) {
   // file given with --scene (it joins the list as the ninth).
   const std::size_t n = std::clamp<std::size_t>(scene_count, 1, 9);
   std::string digits = n == 1 ? "1      " : "1-" + std::to_string(n) + "    ";
-  return {"Space  pause / resume (P in a game, where Space jumps)",
+  return {"Space  pause / resume (also P; in a game, Space and the arrows are the game's)",
           "N, ->  one step",
           "R      reset the scene",
           digits + (n == 9 ? "scene (9: the --scene file); Tab: next" : "choose a scene, Tab: next scene"),
@@ -316,6 +316,7 @@ std::vector<std::string> Testbed::key_list(std::size_t scene_count) {
           "I      HUD on/off",
           "S      slow motion (x1/4)",
           "H      this list",
+          "Enter  a game's next level, after a win",
           "Esc, Q quit"};
 }
 
