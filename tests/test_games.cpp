@@ -91,7 +91,7 @@ BOOST_AUTO_TEST_CASE(the_player_runs_and_collects_a_coin_on_contact) {
   play(tb, 10);
   BOOST_TEST(platformer(tb).grounded());
   BOOST_TEST(platformer(tb).coins() == 0);
-  play(tb, 40, {{0, press(game_key::right)}});
+  play(tb, 40, {{0, press(key::right)}});
   BOOST_TEST(platformer(tb).coins() == 1);
   BOOST_TEST(!tb.world().alive(coin));
   BOOST_TEST(tb.world().components.position[platformer(tb).player()].x > 150.0);
@@ -101,18 +101,18 @@ BOOST_AUTO_TEST_CASE(the_player_jumps_only_from_the_ground) {
   Testbed tb = level("platformer");
   play(tb, 10);
   const EntityId p = platformer(tb).player();
-  play(tb, 1, {{0, press(game_key::space)}});
+  play(tb, 1, {{0, press(key::space)}});
   BOOST_TEST(!platformer(tb).grounded());
   BOOST_TEST(tb.world().components.velocity[p].y < -0.6);
   // A second press in the air changes nothing: the rise goes on slowing down.
   play(tb, 10);
   const double vy = tb.world().components.velocity[p].y;
-  play(tb, 1, {{0, press(game_key::up)}});
+  play(tb, 1, {{0, press(key::up)}});
   BOOST_TEST(tb.world().components.velocity[p].y > vy);
   // Back on the ground it jumps again.
   play(tb, 60);
   BOOST_TEST(platformer(tb).grounded());
-  play(tb, 1, {{0, press(game_key::up)}});
+  play(tb, 1, {{0, press(key::up)}});
   BOOST_TEST(tb.world().components.velocity[p].y < -0.6);
 }
 
@@ -120,7 +120,7 @@ BOOST_AUTO_TEST_CASE(falling_off_the_world_restarts_the_level) {
   Testbed tb = level("platformer");
   // Run into the gap without jumping.
   std::int64_t restarted_at = -1;
-  std::multimap<int, InputEvent> keys{{0, press(game_key::right)}};
+  std::multimap<int, InputEvent> keys{{0, press(key::right)}};
   for (int t = 0; t < 200 && restarted_at < 0; ++t) {
     const std::int64_t before = tb.world().frame;
     play(tb, 1, t == 0 ? keys : std::multimap<int, InputEvent>{});
@@ -149,11 +149,18 @@ BOOST_AUTO_TEST_CASE(the_moving_platform_turns_at_both_ends) {
   BOOST_TEST(hi <= 481.0);
 }
 
-BOOST_AUTO_TEST_CASE(a_tower_at_rest_breaks_no_target) {
+BOOST_AUTO_TEST_CASE(a_tower_at_rest_stays_put_and_breaks_no_target) {
   for (const char* name : {"targets-1", "targets-2", "targets-3"}) {
     Testbed tb = level(name);
     const int count = targets(tb).targets_left();
-    play(tb, 300);
+    const std::vector<Vector> start = tb.world().components.position;
+    double moved = 0.0;
+    for (int t = 0; t < 300; ++t) {
+      play(tb, 1);
+      for (std::size_t e = 0; e < start.size(); ++e)
+        moved = std::max(moved, Vector::norm(tb.world().components.position[e] - start[e]));
+    }
+    BOOST_TEST(moved < 0.01, name << ": a block moved " << moved << " px");
     BOOST_TEST(targets(tb).targets_left() == count, name);
     BOOST_TEST(tb.outcome() == Level::Outcome::playing, name);
   }
@@ -222,8 +229,6 @@ BOOST_AUTO_TEST_CASE(enter_after_a_win_loads_the_next_level) {
   play(tb, 62);
   shoot(tb, 240, -30);
   play(tb, 90);
-  shoot(tb, 260, -10);
-  play(tb, 100);
   shoot(tb, 300, -40);
   play(tb, 60);
   BOOST_TEST(tb.outcome() == Level::Outcome::won);
@@ -251,17 +256,17 @@ BOOST_AUTO_TEST_CASE(the_committed_platformer_replay_wins_with_every_coin) {
   BOOST_TEST(platformer(tb).coins_total() == 4);
 }
 
-BOOST_AUTO_TEST_CASE(the_committed_targets_replay_wins_level_one_with_its_three_shots) {
+BOOST_AUTO_TEST_CASE(the_committed_targets_replay_wins_level_one_with_two_shots) {
   const std::string out = replay_headless("targets-1");
-  BOOST_TEST(has(out, "\nreplay: 9 events over 277 ticks, ended at frame 277\n"), out);
-  BOOST_TEST(has(out, "\ngame: won: targets left 0   shots 0/3   score 200 "), out);
+  BOOST_TEST(has(out, "\nreplay: 6 events over 177 ticks, ended at frame 177\n"), out);
+  BOOST_TEST(has(out, "\ngame: won: targets left 0   shots 1/3   score 200 "), out);
   Testbed tb = level("targets-1");
   tb.replay(read_input_log(replay_path("targets-1")));
   tb.play();
   BOOST_TEST(tb.outcome() == Level::Outcome::won);
-  BOOST_TEST(tb.world().frame == 277);
+  BOOST_TEST(tb.world().frame == 177);
   BOOST_TEST(targets(tb).targets_left() == 0);
-  BOOST_TEST(targets(tb).shots_left() == 0);
+  BOOST_TEST(targets(tb).shots_left() == 1);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

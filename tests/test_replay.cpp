@@ -209,7 +209,9 @@ BOOST_AUTO_TEST_CASE(each_malformed_input_names_its_line) {
       {head + "1.5,key,32,0,0,0\n2,end,0,0,0,0\n", "t.log:3: tick must be an integer (got '1.5')"},
       {head + "0,key,32,0,,0\n1,end,0,0,0,0\n", "t.log:3: y must be an integer (got '')"},
       {head + "0,key,99999999999,0,0,0\n1,end,0,0,0,0\n", "t.log:3: key must be an integer"},
-      {head + "-1,key,32,0,0,0\n1,end,0,0,0,0\n", "t.log:3: tick must be >= 0"},
+      {head + "-1,key,32,0,0,0\n1,end,0,0,0,0\n", "t.log:3: tick must be in [0, 9007199254740992] (got -1)"},
+      // Past --frames' limit: a run that would never end.
+      {head + "9000000000000000000,end,0,0,0,0\n", "t.log:3: tick must be in [0, 9007199254740992]"},
       {head + "5,key,32,0,0,0\n4,key,32,0,0,0\n9,end,0,0,0,0\n", "t.log:4: tick 4 is before the previous line's 5"},
       {head + "5,key,32,0,0,0\n4,end,0,0,0,0\n", "t.log:4: tick 4 is before the previous line's 5"},
       {head + "0,key,32,0,0,0\n", "t.log:4: missing the end line"},

@@ -325,7 +325,7 @@ Options parse(std::span<const std::string> args) {
     o.scene_given = true;
     if (o.scene.empty()) throw UsageError("--scene: needs a scene name or a file");
   }
-  if (has("frames")) o.frames = integer("--frames", get("frames"), 0, std::int64_t{1} << 53);
+  if (has("frames")) o.frames = integer("--frames", get("frames"), 0, max_frames);
   Overrides& ov = o.overrides;
   if (has("dt")) {
     ov.dt = real("--dt", get("dt"));

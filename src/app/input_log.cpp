@@ -9,6 +9,8 @@
 #include <ostream>
 #include <string_view>
 
+#include "engine/limits.hpp"
+
 namespace physics {
 
 namespace {
@@ -95,7 +97,8 @@ InputLog parse_input_log(std::istream& in, const std::string& name) {
     const std::vector<std::string_view> f = split(line);
     if (f.size() != 6) r.fail("expected 6 fields tick,kind,key,x,y,button (got " + std::to_string(f.size()) + ")");
     const auto tick = r.integer<std::int64_t>(f[0], "tick");
-    if (tick < 0) r.fail("tick must be >= 0 (got " + std::to_string(tick) + ")");
+    if (tick < 0 || tick > max_frames)
+      r.fail("tick must be in [0, " + std::to_string(max_frames) + "] (got " + std::to_string(tick) + ")");
     const std::int64_t last = log.events.empty() ? 0 : log.events.back().tick;
     if (tick < last) r.fail("tick " + std::to_string(tick) + " is before the previous line's " + std::to_string(last));
     InputEvent e{Kind::quit};

@@ -719,7 +719,8 @@ GameSpec read_game(const Reader& r, const json& g) {
   const json* kind = find(g, "kind");
   if (!kind) r.fail("game", "missing key \"kind\" (\"platformer\" or \"targets\")");
   out.kind = r.text(*kind, "game.kind");  // one of the games: validate()
-  if (const json* v = find(g, "shots")) out.shots = static_cast<int>(r.integer(*v, "game.shots", 1, 99));
+  if (const json* v = find(g, "shots"))  // in [1, 99]: validate()
+    out.shots = static_cast<int>(r.integer(*v, "game.shots", std::numeric_limits<int>::min(), std::numeric_limits<int>::max()));
   if (const json* v = find(g, "next")) out.next = r.text(*v, "game.next");
   return out;
 }
@@ -850,7 +851,7 @@ SavedState read_state(const Reader& r, const json& v) {
   r.keys(v, "state", {"frame", "warm_start", "auto"});
   SavedState out;
   if (const json* a = find(v, "auto")) out.automatic = read_auto_state(r, *a);
-  if (const json* f = find(v, "frame")) out.frame = r.integer(*f, "state.frame", 0, std::int64_t{1} << 53);
+  if (const json* f = find(v, "frame")) out.frame = r.integer(*f, "state.frame", 0, max_frames);
   read_pair_rows(r, find(v, "warm_start"), "state.warm_start", 5, "[c, b, axis, jn, jt]",
                  [&](const json& e, const Path& p, Pair pair) {
                    out.warm_start.push_back(
@@ -992,8 +993,13 @@ SceneSpec read_scene_file(const std::string& path) {
   }
   if (in.bad()) throw SceneError(path + ": cannot read the scene file: read error");
   SceneSpec s = read_scene(text, path);
-  // A game's next level is named relative to this file's folder.
-  if (!s.game.next.empty()) s.game.next_path = (std::filesystem::path(path).parent_path() / s.game.next).string();
+  // A game's next level is named relative to this file's folder; it must be
+  // there now, not only once this level is won.
+  if (!s.game.next.empty()) {
+    s.game.next_path = (std::filesystem::path(path).parent_path() / s.game.next).string();
+    if (!std::filesystem::is_regular_file(s.game.next_path, ec))
+      throw SceneError(path + ": game.next: no scene file " + s.game.next_path);
+  }
   return s;
 }
 
@@ -1139,7 +1145,8 @@ std::string to_json(const SceneSpec& s) {
   for (const BlockEntry& e : s.blocks) blocks.push_back(entry(e));
   o["blocks"] = blocks;
   if (!s.game.kind.empty()) {
-    o["game"] = {{"kind", s.game.kind}, {"shots", s.game.shots}};
+    o["game"] = {{"kind", s.game.kind}};
+    if (s.game.kind == "targets") o["game"]["shots"] = s.game.shots;
     if (!s.game.next.empty()) o["game"]["next"] = s.game.next;
   }
   if (s.style != Style::plain) o["style"] = std::string(name(s.style));  // plain: today's files unchanged

@@ -141,18 +141,6 @@ void crate(const Frame& f) {
   f.stroke({f.p.x + t, f.p.y + t}, {f.x(1) - t, f.y(1) - t}, t, dark_wood);
 }
 
-// What Draw::update does for one body: the plain look.
-void plain_block(const Components& c, EntityId e, Color col, Canvas& canvas) {
-  const Vector p = c.position[e];
-  if (c.any_rules() && c.rules(e).sensor) {
-    draw_sensor(p, c.box[e], col, canvas);
-    return;
-  }
-  canvas.fill_rect(p, c.box[e], col);
-  outline(p, c.box[e], col, canvas);
-  if (c.any_rules() && c.rules(e).one_way != Face::none) draw_solid_face(p, c.box[e], c.rules(e).one_way, col, canvas);
-}
-
 bool movable(const Components& c, EntityId e) {
   return std::isfinite(c.mass[e]) && !(c.any_rules() && c.rules(e).sensor);
 }
@@ -164,7 +152,7 @@ void sprite_block(const Components& c, EntityId e, std::string_view tag, Canvas&
   const bool drawn = draw_sprite(tag, p, box, c.color[e], canvas) ||
                      (movable(c, e) && draw_sprite("crate", p, box, c.color[e], canvas));
   if (!drawn) {
-    plain_block(c, e, c.color[e], canvas);
+    draw_block(c, e, c.color[e], canvas);
     return;
   }
   // A one-way platform keeps its solid face: where it can be stood on.
@@ -206,11 +194,10 @@ void draw_world(const World& w, Style style, std::span<const BlockRole> roles, C
   }
   const Components& c = w.components;
   for (const EntityId e : w.systems.draw->entities()) {
-    const Vector p = c.position[e];
-    if (!(std::abs(p.x) < 1e9 && std::abs(p.y) < 1e9)) continue;  // as Draw: nothing undefined to the canvas
+    if (!can_draw(c.position[e])) continue;  // as Draw: nothing undefined to the canvas
     if (style == Style::speed) {
       // Fixed bodies and sensors do not move: their own colour says more.
-      plain_block(c, e, movable(c, e) ? speed_color(Vector::norm(c.velocity[e])) : c.color[e], canvas);
+      draw_block(c, e, movable(c, e) ? speed_color(Vector::norm(c.velocity[e])) : c.color[e], canvas);
     } else {
       sprite_block(c, e, e < roles.size() ? std::string_view(roles[e].tag) : std::string_view(), canvas);
     }

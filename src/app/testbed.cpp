@@ -64,36 +64,39 @@ std::string ray_line(const RayHit& h) {
 }  // namespace
 
 Testbed::Testbed(std::vector<SceneSpec> scenes, std::size_t current, Overrides overrides, Overlays overlays)
-    : scenes_(std::move(scenes)),
-      current_(current < scenes_.size() ? current : 0),
-      overrides_(overrides),
-      overlays_(overlays),
-      world_(make_world(with_overrides(scenes_.at(current_), overrides_), true, scenes_.at(current_).name)) {
-  const SceneSpec spec = with_overrides(scenes_[current_], overrides_);
-  roles_ = roles_by_entity(spec, expand(spec, spec.name));
-  start_level(spec);
+    : scenes_(std::move(scenes)), current_(current < scenes_.size() ? current : 0), overrides_(overrides),
+      overlays_(overlays) {
+  install(with_overrides(scenes_.at(current_), overrides_));
   record_contacts();
 }
 
-// The scene's game, if any, on the world just built (SceneError if the scene
-// lacks what its game needs).
-void Testbed::start_level(const SceneSpec& spec) {
-  level_.reset();
+// The world of `spec`, its bodies' roles and its game's level (SceneError if
+// the scene is invalid or lacks what its game needs): all three are built
+// first and kept together, or none is.
+void Testbed::install(const SceneSpec& spec) {
+  const std::vector<Body> bodies = expand(spec, spec.name);
+  World world = make_world(spec, bodies, true);
+  std::vector<BlockRole> roles = roles_by_entity(spec, bodies);
+  std::unique_ptr<Level> level = spec.game.kind.empty() ? nullptr : make_level(spec, world, roles);
+  world_ = std::move(world);
+  roles_ = std::move(roles);
+  level_ = std::move(level);
   outcome_ = Level::Outcome::playing;
-  if (!spec.game.kind.empty()) level_ = make_level(spec, world_, roles_);
+  style_ = spec.style;
 }
 
 void Testbed::rebuild() {
   try {
-    const SceneSpec spec = with_overrides(scenes_[current_], overrides_);
-    const std::vector<Body> bodies = expand(spec, spec.name);
-    world_ = make_world(spec, bodies, true);
-    roles_ = roles_by_entity(spec, bodies);
-    start_level(spec);
+    install(with_overrides(scenes_[current_], overrides_));
     message_.clear();
   } catch (const SceneError& e) {
     say(e.what(), false);  // keep the world we have
   }
+  restarted();
+}
+
+// What a new world starts without: last step's contacts, time owed, a drag.
+void Testbed::restarted() {
   record_contacts();
   last_contacts_.clear();
   last_regions_.clear();
@@ -162,18 +165,23 @@ void Testbed::after_level_step() {
   }
 }
 
-// The won level's next one (scene key game.next), in place of this scene.
+// The won level's next one (scene key game.next), in place of this scene;
+// if it cannot start, the won level stays, with the error on the HUD.
 bool Testbed::next_level() {
   const std::string path = scene().game.next_path;
   if (outcome_ != Level::Outcome::won || path.empty()) return false;
+  SceneSpec next;
   try {
-    scenes_[current_] = load_scene_file(path);
+    next = load_scene_file(path);
+    install(with_overrides(next, overrides_));
   } catch (const SceneError& e) {
     say(e.what(), false);
     return true;
   }
+  scenes_[current_] = std::move(next);
+  message_.clear();
   paused_ = false;
-  rebuild();
+  restarted();
   return true;
 }
 
@@ -279,7 +287,12 @@ Testbed::Action Testbed::handle(const InputEvent& e) {
       paused_ = true;
       step();
       break;
-    case 'r': reset(); break;
+    case 'r': {
+      const bool won = outcome_ == Level::Outcome::won;  // paused on the win: play it again at once
+      reset();
+      if (won) paused_ = false;
+      break;
+    }
     case key::tab: select((current_ + 1) % scenes_.size()); break;
     case 'a': overlays_.aabb = !overlays_.aabb; break;
     case 'v': overlays_.velocity = !overlays_.velocity; break;
@@ -303,7 +316,7 @@ std::vector<std::string> Testbed::key_list(std::size_t scene_count) {
   // file given with --scene (it joins the list as the ninth).
   const std::size_t n = std::clamp<std::size_t>(scene_count, 1, 9);
   std::string digits = n == 1 ? "1      " : "1-" + std::to_string(n) + "    ";
-  return {"Space  pause / resume (also P; in a game, Space and the arrows are the game's)",
+  return {"Space  pause / resume (also P; in the platformer, Space and the arrows are its keys)",
           "N, ->  one step",
           "R      reset the scene",
           digits + (n == 9 ? "scene (9: the --scene file); Tab: next" : "choose a scene, Tab: next scene"),
@@ -324,7 +337,7 @@ View Testbed::view(double fps, double draw_ms) const {
   View v;
   v.overlays = overlays_;
   v.roles = roles_;
-  v.style = overrides_.style.value_or(scene().style);
+  v.style = style_;
   if (overlays_.contacts) v.contacts = last_contacts_, v.contact_regions = last_regions_;
   if (press_) {
     // A game that launches from its own point: the same drag, drawn from there.

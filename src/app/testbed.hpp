@@ -20,19 +20,13 @@
 #include <string>
 #include <vector>
 
+#include "app/keys.hpp"
 #include "app/scene.hpp"
 #include "engine/query.hpp"
 #include "games/level.hpp"
 #include "engine/world.hpp"
 
 namespace physics {
-
-// Key codes: SDL's keycodes (printable keys are their ASCII code); window.cpp
-// checks that they match SDL's at compile time.
-namespace key {
-inline constexpr int escape = 27, tab = '\t', space = ' ', enter = '\r';
-inline constexpr int right = (1 << 30) | 79;  // SDLK_RIGHT
-}  // namespace key
 
 // What the window reports each frame, without SDL types.
 struct InputEvent {
@@ -156,7 +150,8 @@ class Testbed {
 
  private:
   void rebuild();
-  void start_level(const SceneSpec& spec);
+  void install(const SceneSpec& spec);
+  void restarted();
   void after_level_step();
   bool next_level();
   void record_contacts();
@@ -183,6 +178,7 @@ class Testbed {
   std::vector<BlockRole> roles_;
   std::unique_ptr<Level> level_;  // the scene's game, if it has one
   Level::Outcome outcome_ = Level::Outcome::playing;
+  Style style_ = Style::plain;    // the scene's, or the command line's
   std::vector<Contact> last_contacts_;
   std::vector<ContactRegion> last_regions_;
   std::string message_;

@@ -39,7 +39,8 @@ Testbed::Action Testbed::live(const InputEvent& e) {
 void Testbed::play(std::int64_t last_tick) {
   for (;;) {
     pump();
-    if (!replay_ || paused_ || ticks_ >= last_tick) return;
+    // (A world stopped on a non-finite value steps no more: nothing to wait for.)
+    if (!replay_ || paused_ || ticks_ >= last_tick || world_.health.non_finite) return;
     step();
   }
 }

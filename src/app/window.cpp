@@ -15,11 +15,10 @@
 
 namespace physics {
 
-// testbed.hpp's key codes are SDL's.
+// app/keys.hpp's key codes are SDL's.
 static_assert(key::escape == SDLK_ESCAPE && key::tab == SDLK_TAB && key::space == SDLK_SPACE &&
-              key::right == SDLK_RIGHT && key::enter == SDLK_RETURN && 'a' == SDLK_a && '1' == SDLK_1);
-static_assert(game_key::left == SDLK_LEFT && game_key::right == SDLK_RIGHT && game_key::up == SDLK_UP &&
-              game_key::space == SDLK_SPACE);
+              key::enter == SDLK_RETURN && key::right == SDLK_RIGHT && key::left == SDLK_LEFT && key::up == SDLK_UP &&
+              'a' == SDLK_a && '1' == SDLK_1);
 
 namespace {
 

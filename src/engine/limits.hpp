@@ -11,6 +11,9 @@ namespace physics {
 
 // Limits that keep any input from exhausting memory, hanging the loader or
 // overflowing: sizes are summed in Rect::mdiff (int), far below INT_MAX here.
+// Frames a run may ask for (--frames, a saved state's frame, an input log's
+// ticks): exactly representable as doubles, far beyond any run that ends.
+inline constexpr std::int64_t max_frames = std::int64_t{1} << 53;
 inline constexpr int max_world_size = 1 << 20;  // px, per side
 inline constexpr int max_block_size = 1 << 20;  // px, per side
 inline constexpr std::int64_t max_bodies = 1'000'000;

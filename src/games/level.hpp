@@ -13,16 +13,11 @@
 #include <string>
 #include <vector>
 
+#include "app/keys.hpp"
 #include "app/scene.hpp"
 #include "engine/world.hpp"
 
 namespace physics {
-
-// Key codes the games read: SDL's (window.cpp checks them at compile time).
-namespace game_key {
-inline constexpr int right = (1 << 30) | 79, left = (1 << 30) | 80, up = (1 << 30) | 82;  // SDLK_RIGHT, LEFT, UP
-inline constexpr int space = ' ';
-}  // namespace game_key
 
 class Level {
  public:

@@ -21,10 +21,10 @@ Platformer::Platformer(const SceneSpec& s, World& w, std::span<const BlockRole> 
 
 bool Platformer::key(int code, bool down) {
   switch (code) {
-    case game_key::left: left_ = down; return true;
-    case game_key::right: right_ = down; return true;
-    case game_key::up:
-    case game_key::space:
+    case key::left: left_ = down; return true;
+    case key::right: right_ = down; return true;
+    case key::up:
+    case key::space:
       if (down) jump_ = true;  // a press, consumed by the next step
       return true;
     default: return false;

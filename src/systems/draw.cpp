@@ -7,19 +7,21 @@ namespace physics {
 
 void Draw::update(const Components& c, Canvas& canvas) const {
   for (const EntityId e : entities_) {
-    const Vector p = c.position[e];
-    // Skip what cannot be drawn (NaN, or far outside int range) rather than
-    // hand the canvas an undefined conversion.
-    if (!(std::abs(p.x) < 1e9 && std::abs(p.y) < 1e9)) continue;
-    const Face face = c.any_rules() ? c.rules(e).one_way : Face::none;
-    if (c.any_rules() && c.rules(e).sensor) {
-      draw_sensor(p, c.box[e], c.color[e], canvas);
-      continue;
-    }
-    canvas.fill_rect(p, c.box[e], c.color[e]);
-    outline(p, c.box[e], c.color[e], canvas);
-    if (face != Face::none) draw_solid_face(p, c.box[e], face, c.color[e], canvas);
+    // Skip what cannot be drawn rather than hand the canvas an undefined conversion.
+    if (can_draw(c.position[e])) draw_block(c, e, c.color[e], canvas);
   }
+}
+
+void draw_block(const Components& c, EntityId e, Color col, Canvas& canvas) {
+  const Vector p = c.position[e];
+  const Face face = c.any_rules() ? c.rules(e).one_way : Face::none;
+  if (c.any_rules() && c.rules(e).sensor) {
+    draw_sensor(p, c.box[e], col, canvas);
+    return;
+  }
+  canvas.fill_rect(p, c.box[e], col);
+  outline(p, c.box[e], col, canvas);
+  if (face != Face::none) draw_solid_face(p, c.box[e], face, col, canvas);
 }
 
 void draw_sensor(Vector p, Rect r, Color c, Canvas& canvas) {

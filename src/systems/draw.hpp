@@ -4,6 +4,8 @@
 // (app/offscreen.cpp); the system itself needs no SDL.
 #pragma once
 
+#include <cmath>
+
 #include "component_defs.hpp"
 
 namespace physics {
@@ -28,6 +30,14 @@ void outline(Vector p, Rect r, Color c, Canvas& canvas);
 inline constexpr int solid_face = 4;
 void draw_sensor(Vector p, Rect r, Color c, Canvas& canvas);
 void draw_solid_face(Vector p, Rect r, Face face, Color c, Canvas& canvas);
+
+// One body as Draw paints it, in colour `col` (its own, or a drawing
+// style's: app/style.hpp): a sensor's outline, or the filled box, its
+// outline and a one-way platform's solid face.
+void draw_block(const Components& c, EntityId e, Color col, Canvas& canvas);
+// Whether a body at p can be drawn: not NaN, nor far outside int range
+// (what the canvas converts to pixels).
+inline bool can_draw(Vector p) { return std::abs(p.x) < 1e9 && std::abs(p.y) < 1e9; }
 
 class Draw : public System<component::position, component::box, component::color> {
  public:
