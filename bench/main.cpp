@@ -181,7 +181,7 @@ Result run(const std::string& engine, const Scene& s, const Options& o) {
   // unless the budget stopped the run before it got past them.
   const int steps = static_cast<int>(std::lround(o.steps * s.time_scale));
   const int warmup = static_cast<int>(std::lround(o.warmup * s.time_scale));
-  const double budget = s.time_scale == 1.0 ? o.budget : o.phase_budget;
+  const double budget = s.name == "rain_phase" ? o.phase_budget : o.budget;
   std::vector<double> times;
   times.reserve(static_cast<std::size_t>(steps));
   const auto start = clock::now();

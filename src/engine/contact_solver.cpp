@@ -1,6 +1,7 @@
 #include "engine/contact_solver.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <tuple>
@@ -364,12 +365,15 @@ void ContactSolver::store_rows(Components& k) {
 // Box2D clamps it). `friction` is a compile-time constant: the frictionless
 // loop reads no friction row.
 //
-// A sweep that changes no accumulated impulse applies only zero impulses:
-// it leaves every velocity as it was (up to the sign of a zero), so every
-// further sweep would do the same, and the iterations stop there. A settled
-// pile, warm started with last substep's impulses, often gets there after
-// one or two sweeps (Box2D's benchmark many_pyramids: 9 steps in 10 after
-// the second), and the rest of its sweeps cost nothing.
+// A sweep that leaves every accumulated impulse with the same bits applies
+// only zero impulses: every further sweep would compute the same values
+// again, and the iterations stop there. (The zeros can still turn a -0
+// velocity component into +0, which further sweeps could do too: the values
+// are those of all the sweeps, a zero's sign may differ; traces of every
+// scene file in the stable and auto modes came out byte-identical.) A
+// settled pile, warm started with last substep's impulses, often gets there
+// after one or two sweeps (Box2D's benchmark many_pyramids: 9 steps in 10
+// after the second), and the rest of its sweeps cost nothing.
 template <bool friction>
 void ContactSolver::iterate(const SolverSettings& s) {
   for (int it = 0; it < s.iterations; ++it) {
@@ -382,7 +386,7 @@ void ContactSolver::iterate(const SolverSettings& s) {
       const double vn = Vector::dot(bc.v - bb.v, n);
       const double lambda = std::max(r.lambda - (vn - r.target) * r.inv_w, 0.0);
       apply_normal_impulse(bc.v, bb.v, n, lambda - r.lambda, bc.w, bb.w);
-      changed |= lambda != r.lambda;
+      changed |= std::bit_cast<std::uint64_t>(lambda) != std::bit_cast<std::uint64_t>(r.lambda);
       r.lambda = lambda;
       if constexpr (friction) {
         FrictionHot& f = friction_rows_[i];
@@ -391,7 +395,7 @@ void ContactSolver::iterate(const SolverSettings& s) {
         const double limit = f.mu * lambda;
         const double lt = std::clamp(f.lambda - vt * r.inv_w, -limit, limit);
         apply_normal_impulse(bc.v, bb.v, tangent(n), lt - f.lambda, bc.w, bb.w);
-        changed |= lt != f.lambda;
+        changed |= std::bit_cast<std::uint64_t>(lt) != std::bit_cast<std::uint64_t>(f.lambda);
         f.lambda = lt;
       }
     }
