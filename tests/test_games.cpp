@@ -211,6 +211,15 @@ BOOST_AUTO_TEST_CASE(a_level_missing_what_its_game_needs_is_an_error) {
                  "blocks[0].strength"));
   BOOST_TEST(has(error_of(R"({"blocks": [{"pos": [100, 100], "size": [10, 10], "mass": 1, "travel": 0}]})"),
                  "blocks[0].travel"));
+  BOOST_TEST(has(error_of(R"({"blocks": [{"pos": [100, 100], "size": [10, 10], "mass": 1, "travel": 50}]})"),
+                 "only a block with \"tag\": \"platform\" travels"));
+  const std::string player = R"({"pos": [50, 50], "size": [10, 10], "mass": 1, "tag": "player"})";
+  BOOST_TEST(has(error_of(R"({"game": {"kind": "platformer"}, "blocks": [)" + player +
+                          R"(, {"pos": [100, 100], "size": [50, 10], "mass": "inf", "tag": "platform", "travel": 50}]})"),
+                 "needs a \"velocity\" and a \"travel\""));
+  BOOST_TEST(has(error_of(R"({"game": {"kind": "platformer"}, "blocks": [)" + player +
+                          R"(, {"pos": [100, 100], "size": [50, 10], "mass": "inf", "tag": "platform", "velocity": [0.1, 0]}]})"),
+                 "needs a \"velocity\" and a \"travel\""));
 }
 
 BOOST_AUTO_TEST_CASE(game_keys_print_and_read_back) {

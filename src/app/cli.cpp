@@ -268,7 +268,9 @@ int prepare_logs(Options& o, std::optional<InputLog>& log, const std::string& wh
     err << "game: --record: needs a window, and this run is headless (" << why << ")\n";
     return 2;
   }
-  if (!o.record.empty() && !std::ofstream(o.record, std::ios::binary | std::ios::trunc)) {
+  // Opened to append, not emptied: a run refused later (a bad --scene) leaves
+  // an earlier log as it was; the log is written whole at the end.
+  if (!o.record.empty() && !std::ofstream(o.record, std::ios::binary | std::ios::app)) {
     err << "game: --record: cannot write " << o.record << ": " << std::strerror(errno) << "\n";
     return 2;
   }

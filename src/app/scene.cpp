@@ -122,6 +122,8 @@ void check_block(const Checker& k, const BlockSpec& b, const std::string& p) {
     k.fail(At{p, ".strength"}, "must be a finite number > 0 (got " + num(*b.strength) + ")");
   if (b.travel && !(std::isfinite(*b.travel) && *b.travel > 0.0))
     k.fail(At{p, ".travel"}, "must be a finite number > 0 (got " + num(*b.travel) + ")");
+  if (b.travel && b.tag != "platform")
+    k.fail(At{p, ".travel"}, "only a block with \"tag\": \"platform\" travels (got the tag \"" + b.tag + "\")");
 }
 
 void check_game(const Checker& k, const GameSpec& g) {

@@ -15,7 +15,10 @@ Platformer::Platformer(const SceneSpec& s, World& w, std::span<const BlockRole> 
   for (const EntityId e : tagged(roles, "platform")) {
     const Vector v = w.components.velocity[e];
     const double speed = Vector::norm(v);
-    if (speed > 0.0) movers_.push_back({e, w.components.position[e], (1.0 / speed) * v, roles[e].travel});
+    if (!(speed > 0.0 && std::isfinite(roles[e].travel)))
+      throw SceneError(s.name + ": a block tagged \"platform\" needs a \"velocity\" and a \"travel\" (body " +
+                       std::to_string(e) + ")");
+    movers_.push_back({e, w.components.position[e], (1.0 / speed) * v, roles[e].travel});
   }
 }
 
