@@ -165,6 +165,30 @@ bool strict_failure(const World& w, const Options& o, std::ostream& err) {
   return true;
 }
 
+// A world stopped on a non-finite value: no summary nor dump of a state that
+// is not one (the trace keeps the frames before, which show how it came to
+// this), the error line; exit 3.
+bool stopped_non_finite(const World& w, Recorder& rec, std::ostream& err) {
+  if (w.health.finite()) return false;
+  rec.abandon();
+  err << "game: " << Headless::non_finite_line(w) << "\n";
+  return true;
+}
+
+// After a headless run's summary: the recorder's files, --strict, and the
+// --screenshot in the scene's style. Returns the exit code.
+int finish_files(const World& w, const SceneSpec& scene, std::span<const BlockRole> roles, const Options& o,
+                 Recorder& rec, std::ostream& err) {
+  rec.finish(w, scene);
+  if (strict_failure(w, o, err)) return 3;
+  if (!o.screenshot.empty() &&
+      !Offscreen::screenshot(w, scene.width, scene.height, o.screenshot, scene.style, roles)) {
+    err << "game: --screenshot: cannot write " << o.screenshot << "\n";
+    return 1;
+  }
+  return 0;
+}
+
 // `bodies`: the scene's, from the one expand() (validation) of this load.
 int headless_run(const SceneSpec& spec, const std::vector<Body>& bodies, const Options& o, Recorder& rec,
                  const std::string& why, std::ostream& out, std::ostream& err) {
@@ -173,22 +197,9 @@ int headless_run(const SceneSpec& spec, const std::vector<Body>& bodies, const O
   rec.start(w);
   const std::int64_t frames = o.frames.value_or(picture ? screenshot_frames : headless_frames);
   const auto summary = Headless::run(w, frames, [&](const World& world) { rec.after_step(world); });
-  if (!w.health.finite()) {
-    // No summary nor dump of a state that is not one (the trace keeps the
-    // frames before, which show how it came to this).
-    rec.abandon();
-    err << "game: " << Headless::non_finite_line(w) << "\n";
-    return 3;
-  }
+  if (stopped_non_finite(w, rec, err)) return 3;
   Headless::print_summary(out, w, summary, why, spec.name);
-  rec.finish(w, spec);
-  if (strict_failure(w, o, err)) return 3;
-  if (picture && !Offscreen::screenshot(w, spec.width, spec.height, o.screenshot, spec.style,
-                                        roles_by_entity(spec, bodies))) {
-    err << "game: --screenshot: cannot write " << o.screenshot << "\n";
-    return 1;
-  }
-  return 0;
+  return finish_files(w, spec, roles_by_entity(spec, bodies), o, rec, err);
 }
 
 // "won: coins 4/4 ...": how a game's level stands, and its HUD's first line.
@@ -211,23 +222,14 @@ int replay_run(const InputLog& log, const Options& o, Recorder& rec, const std::
   rec.start(tb.world());
   tb.on_step = [&](const World& w) {
     rec.after_step(w);
-    if (tb.ticks() == 1) s.ke_start = w.kinetic_energy(), s.p_start = w.momentum();
+    if (tb.ticks() == 1) Headless::start_measures(s, w);
   };
   tb.on_reset = [&](const World&) { rec.restart(tb.world()); };
   tb.replay(log);
   tb.play(o.frames.value_or(std::numeric_limits<std::int64_t>::max()));
   World& w = tb.world();
-  if (!w.health.finite()) {
-    rec.abandon();
-    err << "game: " << Headless::non_finite_line(w) << "\n";
-    return 3;
-  }
-  w.health.count_escapes(w.components, w.frame);  // the frames since the last count
-  s.frames = tb.ticks();
-  s.bodies = w.components.size();
-  s.mobile = w.finite_bodies();
-  s.ke_end = w.kinetic_energy();
-  s.p_end = w.momentum();
+  if (stopped_non_finite(w, rec, err)) return 3;
+  Headless::end_measures(s, w, tb.ticks());
   Headless::print_summary(out, w, s, why, tb.scene().name);
   if (!o.replay.empty())
     out << "replay: " << tb.replayed() << " events over " << tb.ticks() << " ticks, ended at frame " << w.frame
@@ -240,14 +242,7 @@ int replay_run(const InputLog& log, const Options& o, Recorder& rec, const std::
         << "): was it recorded on this scene with these options?\n";
   SceneSpec scene = tb.scene();
   apply(scene, o.overrides);
-  rec.finish(w, scene);
-  if (strict_failure(w, o, err)) return 3;
-  if (!o.screenshot.empty() &&
-      !Offscreen::screenshot(w, scene.width, scene.height, o.screenshot, scene.style, tb.roles())) {
-    err << "game: --screenshot: cannot write " << o.screenshot << "\n";
-    return 1;
-  }
-  return 0;
+  return finish_files(w, scene, tb.roles(), o, rec, err);
 }
 
 // --replay: the log, read and checked before anything runs; without --scene

@@ -7,6 +7,20 @@
 
 namespace physics::Headless {
 
+void start_measures(Summary& s, const World& w) {
+  s.ke_start = w.kinetic_energy();
+  s.p_start = w.momentum();
+}
+
+void end_measures(Summary& s, World& w, std::int64_t frames) {
+  s.frames = frames;
+  s.bodies = w.components.size();
+  s.mobile = w.finite_bodies();
+  if (w.health.finite()) w.health.count_escapes(w.components, w.frame);  // the frames since the last count
+  s.ke_end = w.kinetic_energy();
+  s.p_end = w.momentum();
+}
+
 Summary run(World& w, std::int64_t frames) {
   return run(w, frames, [](const World&) {});
 }

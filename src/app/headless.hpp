@@ -44,26 +44,24 @@ std::string auto_line(const World& w);
 // The HUD line: fps, physics ms/step, body count, kinetic energy, momentum.
 std::string hud_line(const World& w, double fps);
 
+// The summary's measures, for whoever runs the frames (run() below, the
+// replay of an input log): after the first frame, the motion the run starts
+// with (bodies start at rest with their first impulse pending in sum_forces);
+// at the end, the frames run, the bodies, the motion it ends with, and the
+// escapes since the last count (of a finite world).
+void start_measures(Summary& s, const World& w);
+void end_measures(Summary& s, World& w, std::int64_t frames);
+
 template <class AfterStep>
 Summary run(World& w, std::int64_t frames, AfterStep&& after_step) {
   Summary s;
-  s.bodies = w.components.size();
-  s.mobile = w.finite_bodies();
   for (std::int64_t f = 0; f < frames; ++f) {
     Game::step(w);
     if (!w.health.finite()) break;  // nothing more to run, nor to record as a frame
     after_step(static_cast<const World&>(w));
-    // Bodies start at rest with their first impulse pending in sum_forces;
-    // the motion they start with is the one after the first frame.
-    if (f == 0) {
-      s.ke_start = w.kinetic_energy();
-      s.p_start = w.momentum();
-    }
+    if (f == 0) start_measures(s, w);
   }
-  s.frames = w.health.finite() ? frames : w.frame;
-  if (w.health.finite()) w.health.count_escapes(w.components, w.frame);  // the frames since the last count
-  s.ke_end = w.kinetic_energy();
-  s.p_end = w.momentum();
+  end_measures(s, w, w.health.finite() ? frames : w.frame);
   return s;
 }
 
