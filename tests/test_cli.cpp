@@ -17,7 +17,7 @@
 #include "app/dump.hpp"
 #include "app/headless.hpp"
 #include "entities/block.hpp"
-#include "helpers.hpp"
+#include "cli_helpers.hpp"
 #include "app/scene_json.hpp"
 
 // The PNG decoder, compiled here and private to this file.
@@ -27,61 +27,10 @@
 #include <stb/stb_image.h>
 
 using namespace physics;
+using namespace physics::test;
 namespace fs = std::filesystem;
 
 namespace {
-
-struct Ran {
-  int code;
-  std::string out, err;
-};
-
-Ran cli(std::vector<std::string> args) {
-  std::ostringstream out, err;
-  const int code = Cli::run(args, out, err, nullptr);
-  return {code, out.str(), err.str()};
-}
-
-bool has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
-
-// Bad input: exit code 2 and exactly one line on stderr containing `part`.
-void expect_bad(std::vector<std::string> args, const std::string& part) {
-  const Ran r = cli(args);
-  BOOST_TEST(r.code == 2);
-  BOOST_TEST(has(r.err, part), "'" << part << "' in: " << r.err);
-  BOOST_TEST(r.err.rfind("game: ", 0) == 0u);
-  BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1);
-  BOOST_TEST(r.out.empty());
-}
-
-// A scratch directory, removed at the end of the test.
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    path = fs::temp_directory_path() / ("physics-cli-" + std::to_string(::getpid()) + "-" + std::to_string(counter()++));
-    fs::create_directories(path);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-  std::string file(const std::string& name, const std::string& text = "") const {
-    const auto p = path / name;
-    if (!text.empty()) std::ofstream(p) << text;
-    return p.string();
-  }
-  static int& counter() {
-    static int n = 0;
-    return n;
-  }
-};
-
-std::string read(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 std::vector<std::vector<std::string>> csv(const std::string& text) {
   std::vector<std::vector<std::string>> rows;
@@ -103,26 +52,6 @@ double number(const std::string& s) {
 std::string scene_file(const std::string& name) {
   return (fs::path(__FILE__).parent_path().parent_path() / "scenes" / (name + ".json")).string();
 }
-
-// The real program, next to this test binary.
-std::string game_binary() { return (fs::read_symlink("/proc/self/exe").parent_path() / "game").string(); }
-
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (const char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-// Runs build/game with `env` (e.g. "-u DISPLAY SDL_VIDEODRIVER=dummy") in dir.
-Ran program(const TempDir& dir, const std::string& env, const std::vector<std::string>& args) {
-  std::string cmd = "cd " + quote(dir.path.string()) + " && env " + env + " " + quote(game_binary());
-  for (const std::string& a : args) cmd += " " + quote(a);
-  cmd += " >" + quote(dir.file("stdout")) + " 2>" + quote(dir.file("stderr")) + " </dev/null";
-  const int status = std::system(cmd.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read(dir.file("stdout")), read(dir.file("stderr"))};
-}
-
-const std::string no_display = "-u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER";
 
 // The pixels of a PNG, decoded by stb_image (libstb-dev, like the writer):
 // enough to compare two screenshots.

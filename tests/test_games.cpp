@@ -3,19 +3,18 @@
 #include <filesystem>
 #include <map>
 #include <ostream>
-#include <sstream>
 #include <string>
 #include <vector>
 
-#include "app/cli.hpp"
 #include "app/input_log.hpp"
 #include "app/scene_json.hpp"
 #include "app/testbed.hpp"
 #include "games/platformer.hpp"
 #include "games/targets.hpp"
-#include "helpers.hpp"
+#include "cli_helpers.hpp"
 
 using namespace physics;
+using namespace physics::test;
 
 namespace {
 
@@ -26,15 +25,21 @@ std::string replay_path(const std::string& name) { return (root() / "replays" / 
 
 // The command line, headless, on a committed replay of a game.
 std::string replay_headless(const std::string& game) {
-  std::ostringstream out, err;
-  const std::vector<std::string> args{"--replay", replay_path(game), "--scene", scene_path(game), "--headless"};
-  const int code = Cli::run(args, out, err, nullptr);
-  BOOST_TEST(code == 0, err.str());
-  BOOST_TEST(err.str().empty(), err.str());
-  return out.str();
+  const Ran r = cli({"--replay", replay_path(game), "--scene", scene_path(game), "--headless"});
+  BOOST_TEST(r.code == 0, r.err);
+  BOOST_TEST(r.err.empty(), r.err);
+  return r.out;
 }
 
 Testbed level(const std::string& name) { return Testbed({load_scene_file(scene_path(name))}, 0); }
+
+// The same replay through the testbed itself, played to its end.
+Testbed replayed(const std::string& game) {
+  Testbed tb = level(game);
+  tb.replay(read_input_log(replay_path(game)));
+  tb.play();
+  return tb;
+}
 
 InputEvent press(int k) { return {InputEvent::Kind::key, k}; }
 
@@ -71,8 +76,6 @@ std::string error_of(const std::string& text) {
   BOOST_ERROR("no error for: " << text);
   return "";
 }
-
-bool has(const std::string& msg, const std::string& part) { return msg.find(part) != std::string::npos; }
 
 }  // namespace
 
@@ -256,9 +259,7 @@ BOOST_AUTO_TEST_CASE(the_committed_platformer_replay_wins_with_every_coin) {
   BOOST_TEST(has(out, "\nreplay: 13 events over 456 ticks, ended at frame 456\n"), out);
   BOOST_TEST(has(out, "\ngame: won: coins 4/4 "), out);
   // The same through the testbed itself: won at frame 456, every coin taken.
-  Testbed tb = level("platformer");
-  tb.replay(read_input_log(replay_path("platformer")));
-  tb.play();
+  const Testbed tb = replayed("platformer");
   BOOST_TEST(tb.outcome() == Level::Outcome::won);
   BOOST_TEST(tb.world().frame == 456);
   BOOST_TEST(platformer(tb).coins() == 4);
@@ -269,9 +270,7 @@ BOOST_AUTO_TEST_CASE(the_committed_targets_replay_wins_level_one_with_two_shots)
   const std::string out = replay_headless("targets-1");
   BOOST_TEST(has(out, "\nreplay: 6 events over 177 ticks, ended at frame 177\n"), out);
   BOOST_TEST(has(out, "\ngame: won: targets left 0   shots 1/3   score 200 "), out);
-  Testbed tb = level("targets-1");
-  tb.replay(read_input_log(replay_path("targets-1")));
-  tb.play();
+  const Testbed tb = replayed("targets-1");
   BOOST_TEST(tb.outcome() == Level::Outcome::won);
   BOOST_TEST(tb.world().frame == 177);
   BOOST_TEST(targets(tb).targets_left() == 0);

@@ -16,9 +16,10 @@
 #include "app/dump.hpp"
 #include "app/input_log.hpp"
 #include "app/testbed.hpp"
-#include "helpers.hpp"
+#include "cli_helpers.hpp"
 
 using namespace physics;
+using namespace physics::test;
 namespace fs = std::filesystem;
 
 namespace {
@@ -76,49 +77,6 @@ std::string dump_of(const World& w) {
 
 // Absolute: the program tests run the game in a scratch directory.
 std::string replays_dir() { return fs::absolute(fs::path(__FILE__).parent_path() / "replays").string(); }
-
-struct Ran {
-  int code;
-  std::string out, err;
-};
-Ran cli(std::vector<std::string> args) {
-  std::ostringstream out, err;
-  const int code = Cli::run(args, out, err, nullptr);
-  return {code, out.str(), err.str()};
-}
-bool has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
-
-struct TempDir {
-  fs::path path = fs::temp_directory_path() / ("physics-replay-" + std::to_string(::getpid()));
-  TempDir() { fs::create_directories(path); }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-  std::string file(const std::string& name, const std::string& text = "") const {
-    if (!text.empty()) std::ofstream(path / name) << text;
-    return (path / name).string();
-  }
-};
-
-std::string read(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// build/game, next to this test binary, run in `dir` with `env` (e.g.
-// SDL's dummy video driver: the window path with no display).
-Ran program(const TempDir& dir, const std::string& env, const std::vector<std::string>& args) {
-  const std::string game = (fs::read_symlink("/proc/self/exe").parent_path() / "game").string();
-  std::string cmd = "cd '" + dir.path.string() + "' && env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER " + env +
-                    " '" + game + "'";
-  for (const std::string& a : args) cmd += " '" + a + "'";  // no quote in these arguments
-  cmd += " >'" + dir.file("stdout") + "' 2>'" + dir.file("stderr") + "' </dev/null";
-  const int status = std::system(cmd.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read(dir.file("stdout")), read(dir.file("stderr"))};
-}
 
 std::size_t csv_rows(const std::string& text) { return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')); }
 
@@ -432,19 +390,19 @@ BOOST_AUTO_TEST_CASE(the_window_records_and_replays_like_the_headless_run) {
   // SDL's dummy video driver: the real window loop, no display. Nobody types,
   // so the recorded log is its scene and its end tick.
   TempDir dir;
-  const Ran rec = program(dir, "SDL_VIDEODRIVER=dummy", {"--scene", "stack", "--frames", "5", "--record", "r.log"});
+  const Ran rec = program(dir, no_display + " SDL_VIDEODRIVER=dummy", {"--scene", "stack", "--frames", "5", "--record", "r.log"});
   BOOST_TEST_REQUIRE(rec.code == 0, rec.err);
   BOOST_TEST(read(dir.file("r.log")) == "# physics input log v1\n# scene: stack\ntick,kind,key,x,y,button\n"
                                          "5,end,0,0,0,0\n");
-  const Ran bad = program(dir, "SDL_VIDEODRIVER=dummy", {"--record", "/nonexistent/r.log"});
+  const Ran bad = program(dir, no_display + " SDL_VIDEODRIVER=dummy", {"--record", "/nonexistent/r.log"});
   BOOST_TEST(bad.code == 2);
   BOOST_TEST(bad.err == "game: --record: cannot write /nonexistent/r.log: No such file or directory\n");
   // The committed log in a window (paced by the clock: 1.5 s), then headless: the same final state.
   const std::string log = replays_dir() + "/spawn.log";
-  const Ran win = program(dir, "SDL_VIDEODRIVER=dummy", {"--replay", log, "--frames", "90", "--dump", "w.csv"});
+  const Ran win = program(dir, no_display + " SDL_VIDEODRIVER=dummy", {"--replay", log, "--frames", "90", "--dump", "w.csv"});
   BOOST_TEST_REQUIRE(win.code == 0, win.err);
   BOOST_TEST(!has(win.out, "ran headless"));
-  const Ran headless = program(dir, "", {"--replay", log, "--dump", "h.csv"});
+  const Ran headless = program(dir, no_display, {"--replay", log, "--dump", "h.csv"});
   BOOST_TEST_REQUIRE(headless.code == 0, headless.err);
   BOOST_TEST(has(headless.out, "ran headless: no display"));
   BOOST_TEST(csv_rows(read(dir.file("h.csv"))) == 22u);

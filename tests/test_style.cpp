@@ -18,7 +18,7 @@
 #include "app/scene_json.hpp"
 #include "app/style.hpp"
 #include "app/testbed.hpp"
-#include "helpers.hpp"
+#include "cli_helpers.hpp"
 
 // The PNG decoder, compiled here and private to this file (as in test_cli.cpp).
 #define STB_IMAGE_STATIC
@@ -27,6 +27,7 @@
 #include <stb/stb_image.h>
 
 using namespace physics;
+using namespace physics::test;
 namespace fs = std::filesystem;
 
 namespace {
@@ -86,43 +87,6 @@ std::vector<std::string> scene_files() {
   std::sort(out.begin(), out.end());
   return out;
 }
-
-struct Ran {
-  int code;
-  std::string out, err;
-};
-
-Ran cli(std::vector<std::string> args) {
-  std::ostringstream out, err;
-  const int code = Cli::run(args, out, err, nullptr);
-  return {code, out.str(), err.str()};
-}
-
-bool has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
-
-// Bad input: exit 2 and exactly one line, "game: ...", containing `part`.
-void expect_bad(const std::vector<std::string>& args, const std::string& part) {
-  const Ran r = cli(args);
-  BOOST_TEST(r.code == 2);
-  BOOST_TEST(has(r.err, part), "'" << part << "' in: " << r.err);
-  BOOST_TEST(r.err.rfind("game: ", 0) == 0u);
-  BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1);
-  BOOST_TEST(r.out.empty());
-}
-
-// A scratch directory, removed at the end of the test.
-struct TempDir {
-  fs::path path = fs::temp_directory_path() / ("physics-style-" + std::to_string(::getpid()));
-  TempDir() { fs::create_directories(path); }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-  std::string file(const std::string& name, const std::string& text = "") const {
-    if (!text.empty()) std::ofstream(path / name) << text;
-    return (path / name).string();
-  }
-};
 
 }  // namespace
 
@@ -332,15 +296,12 @@ BOOST_AUTO_TEST_CASE(the_window_draws_the_styles_as_the_offscreen_picture) {
   // The window (SDL, dummy video driver) and the headless picture share
   // app/style.cpp: without the HUD, the two pictures of a frame agree.
   TempDir dir;
-  const std::string game = (fs::read_symlink("/proc/self/exe").parent_path() / "game").string();
-  const std::string scenes = (fs::path(__FILE__).parent_path().parent_path() / "scenes" / "styles.json").string();
-  const auto run = [&](const std::string& env, const std::string& style, const std::string& extra,
+  // Absolute: the program runs in the scratch directory.
+  const std::string scenes = (fs::absolute(__FILE__).parent_path().parent_path() / "scenes" / "styles.json").string();
+  const auto run = [&](const std::string& env, const std::string& style, std::vector<std::string> args,
                        const std::string& png) {
-    const std::string cmd = "env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER " + env + " '" + game +
-                            "' --scene '" + scenes + "' --frames 20 --style " + style + " " + extra +
-                            " --screenshot '" + dir.file(png) + "' >/dev/null 2>&1 </dev/null";
-    const int status = std::system(cmd.c_str());
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    args.insert(args.end(), {"--scene", scenes, "--frames", "20", "--style", style, "--screenshot", dir.file(png)});
+    return program(dir, no_display + " " + env, args).code;
   };
   const auto load = [&](const std::string& png) {
     Picture p;
@@ -351,8 +312,8 @@ BOOST_AUTO_TEST_CASE(the_window_draws_the_styles_as_the_offscreen_picture) {
     return p;
   };
   for (const char* st : {"sprite", "speed"}) {
-    BOOST_TEST_REQUIRE(run("SDL_VIDEODRIVER=dummy", st, "--overlays nohud", "window.png") == 0);
-    BOOST_TEST_REQUIRE(run("", st, "", "offscreen.png") == 0);
+    BOOST_TEST_REQUIRE(run("SDL_VIDEODRIVER=dummy", st, {"--overlays", "nohud"}, "window.png") == 0);
+    BOOST_TEST_REQUIRE(run("", st, {}, "offscreen.png") == 0);
     const Picture a = load("window.png"), b = load("offscreen.png");
     BOOST_TEST_REQUIRE((a.width == 800 && b.width == 800 && a.rgb.size() == b.rgb.size()));
     std::size_t differ = 0;
@@ -367,12 +328,12 @@ BOOST_AUTO_TEST_CASE(the_window_draws_the_styles_as_the_offscreen_picture) {
   }
   // With the HUD, speed has its legend: the ramp's two ends, near the HUD's
   // lines (no block there has exactly those colours).
-  BOOST_TEST_REQUIRE(run("SDL_VIDEODRIVER=dummy", "speed", "", "legend.png") == 0);
+  BOOST_TEST_REQUIRE(run("SDL_VIDEODRIVER=dummy", "speed", {}, "legend.png") == 0);
   const Picture l = load("legend.png");
   BOOST_TEST_REQUIRE(l.width == 800);
   BOOST_TEST(l.count(Styles::slow_color, 40, 40, 300, 300) >= 10);
   BOOST_TEST(l.count(Styles::fast_color, 40, 40, 300, 300) >= 10);
-  BOOST_TEST_REQUIRE(run("SDL_VIDEODRIVER=dummy", "sprite", "", "nolegend.png") == 0);
+  BOOST_TEST_REQUIRE(run("SDL_VIDEODRIVER=dummy", "sprite", {}, "nolegend.png") == 0);
   BOOST_TEST(load("nolegend.png").count(Styles::fast_color, 40, 40, 300, 300) == 0);
 }
 

@@ -333,6 +333,21 @@ std::vector<std::string> Testbed::key_list(std::size_t scene_count) {
           "Esc, Q quit"};
 }
 
+// The HUD's lines about the engine: its measures, the options, the ray's
+// hit and the health check's note (the course solver's limits met), as in
+// the headless summary.
+void Testbed::add_measures(View& v, double fps, double draw_ms) const {
+  v.hud.push_back(Headless::hud_line(world_, fps));
+  char draw[64];
+  std::snprintf(draw, sizeof draw, "  draw %.3f ms/frame", draw_ms);
+  v.hud.push_back(options_line(world_.params, overlays_));
+  for (std::string& line : wrap("ms/step: " + Headless::stage_times(world_) + (world_.systems.draw ? draw : "  draw off")))
+    v.hud.push_back(std::move(line));
+  if (v.ray && v.ray->hit) v.hud.push_back(ray_line(*v.ray->hit));
+  if (const std::string note = Headless::advice(world_); !note.empty())
+    for (std::string& line : wrap("note: " + note, " ")) v.hud.push_back(std::move(line));
+}
+
 View Testbed::view(double fps, double draw_ms) const {
   View v;
   v.overlays = overlays_;
@@ -358,24 +373,11 @@ View Testbed::view(double fps, double draw_ms) const {
     if (slow_) title += "  [slow x0.25]";
     title += "   H: keys";
     v.hud.push_back(title);
-    // A game's HUD is the game's: its lines and the messages, not the
-    // engine's measures.
-    if (level_) {
+    // A game's HUD is the game's lines, not the engine's measures.
+    if (level_)
       for (std::string& line : level_->hud()) v.hud.push_back(std::move(line));
-      if (!message_.empty()) v.hud.push_back(message_);
-      if (overlays_.help) v.help = key_list(scenes_.size());
-      return v;
-    }
-    v.hud.push_back(Headless::hud_line(world_, fps));
-    char draw[64];
-    std::snprintf(draw, sizeof draw, "  draw %.3f ms/frame", draw_ms);
-    v.hud.push_back(options_line(world_.params, overlays_));
-    for (std::string& line : wrap("ms/step: " + Headless::stage_times(world_) + (world_.systems.draw ? draw : "  draw off")))
-      v.hud.push_back(std::move(line));
-    if (v.ray && v.ray->hit) v.hud.push_back(ray_line(*v.ray->hit));
-    // The health check's note (the course solver's limits met), as in the headless summary.
-    if (const std::string note = Headless::advice(world_); !note.empty())
-      for (std::string& line : wrap("note: " + note, " ")) v.hud.push_back(std::move(line));
+    else
+      add_measures(v, fps, draw_ms);
     if (!message_.empty()) v.hud.push_back(message_);
   }
   if (overlays_.help) v.help = key_list(scenes_.size());

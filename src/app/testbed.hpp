@@ -152,6 +152,7 @@ class Testbed {
   void rebuild();
   void install(const SceneSpec& spec);
   void restarted();
+  void add_measures(View& v, double fps, double draw_ms) const;
   void after_level_step();
   bool next_level();
   void record_contacts();
