@@ -56,15 +56,13 @@ PACKAGES := g++ make pkg-config libsdl2-dev libsdl2-ttf-dev libboost-test-dev fo
             nlohmann-json3-dev libboost-program-options-dev libstb-dev python3
 SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-# The course tree (src/, src/systems, src/utils, src/entities), the engine
+# The course tree (src/course: game, components, systems, entities, utils), the engine
 # beside it (src/engine) and the SDL-free part of the application (scenes,
 # dumps, offscreen pictures, the command line and the testbed's input logic):
 # the physics library, linked by the game, the tests and the tools.
-COURSE_SRC := src/utils/vect.cpp src/utils/rect.cpp src/component_defs.cpp src/system_defs.cpp \
-              src/systems/move.cpp src/systems/forces.cpp src/systems/collision.cpp src/systems/draw.cpp \
-              src/entities/block.cpp src/game.cpp
+COURSE_SRC := $(shell find src/course -name '*.cpp' | sort)
 ENGINE_SRC := $(wildcard src/engine/*.cpp)
-APP_LIB_SRC := src/app/scene.cpp src/app/scene_json.cpp src/app/builtin_scenes.cpp src/app/dump.cpp src/app/save.cpp \
+APP_LIB_SRC := $(wildcard src/scene/*.cpp) src/app/dump.cpp \
                src/app/offscreen.cpp src/app/soak.cpp src/app/headless.cpp src/app/png.cpp src/app/style.cpp \
                $(wildcard src/games/*.cpp)
 CORE_SRC := $(COURSE_SRC) $(ENGINE_SRC) $(APP_LIB_SRC)

@@ -5,8 +5,8 @@
 #include <memory>
 
 #include "bench.hpp"
-#include "entities/block.hpp"
-#include "game.hpp"
+#include "course/entities/block.hpp"
+#include "course/game.hpp"
 
 namespace bench {
 

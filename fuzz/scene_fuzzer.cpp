@@ -9,8 +9,8 @@
 #include <cstdint>
 #include <string_view>
 
-#include "app/scene.hpp"
-#include "app/scene_json.hpp"
+#include "scene/scene.hpp"
+#include "scene/scene_json.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace physics;

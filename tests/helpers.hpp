@@ -7,7 +7,7 @@
 
 #include <vector>
 
-#include "game.hpp"
+#include "course/game.hpp"
 
 namespace physics::test {
 

@@ -6,10 +6,10 @@
 #include <limits>
 #include <vector>
 
-#include "game.hpp"
+#include "course/game.hpp"
 #include "helpers.hpp"
 #include "engine/broadphase.hpp"
-#include "utils/random.hpp"
+#include "course/utils/random.hpp"
 
 using namespace physics;
 

@@ -12,13 +12,13 @@
 #include <fstream>
 #include <sstream>
 
-#include "app/builtin_scenes.hpp"
+#include "scene/builtin_scenes.hpp"
 #include "app/cli.hpp"
 #include "app/dump.hpp"
 #include "app/headless.hpp"
-#include "entities/block.hpp"
+#include "course/entities/block.hpp"
 #include "cli_helpers.hpp"
-#include "app/scene_json.hpp"
+#include "scene/scene_json.hpp"
 
 // The PNG decoder, compiled here and private to this file.
 #define STB_IMAGE_STATIC

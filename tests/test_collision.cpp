@@ -1,5 +1,5 @@
 // Q8: the Collision system (the sheet's detailed algorithm).
-#include "game.hpp"
+#include "course/game.hpp"
 #include "helpers.hpp"
 
 using namespace physics;

@@ -3,9 +3,9 @@
 #include <cstdint>
 #include <cstring>
 
-#include "game.hpp"
+#include "course/game.hpp"
 #include "helpers.hpp"
-#include "utils/random.hpp"
+#include "course/utils/random.hpp"
 
 using namespace physics;
 

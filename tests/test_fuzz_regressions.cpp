@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "helpers.hpp"
-#include "app/scene_json.hpp"
+#include "scene/scene_json.hpp"
 
 using namespace physics;
 namespace fs = std::filesystem;

@@ -7,9 +7,9 @@
 #include <sstream>
 
 #include "app/dump.hpp"
-#include "app/save.hpp"
-#include "app/scene_json.hpp"
-#include "entities/block.hpp"
+#include "scene/save.hpp"
+#include "scene/scene_json.hpp"
+#include "course/entities/block.hpp"
 #include "helpers.hpp"
 #include "numerics/friction.hpp"
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "app/input_log.hpp"
-#include "app/scene_json.hpp"
+#include "scene/scene_json.hpp"
 #include "app/testbed.hpp"
 #include "games/platformer.hpp"
 #include "games/targets.hpp"

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "entities/block.hpp"
+#include "course/entities/block.hpp"
 #include "helpers.hpp"
 
 using namespace physics;

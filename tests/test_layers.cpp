@@ -48,14 +48,14 @@ bool has(const std::string& s, const std::string& part) { return s.find(part) !=
 BOOST_AUTO_TEST_SUITE(layers_check)
 
 BOOST_AUTO_TEST_CASE(a_tree_that_goes_one_way_passes) {
-  const Checked c = check({{"utils/vect.hpp", ""},
-                           {"utils/rect.hpp", "#include \"utils/vect.hpp\"\n"},
-                           {"component_defs.hpp", "#include \"utils/rect.hpp\"\n#include <vector>\n"},
+  const Checked c = check({{"course/utils/vect.hpp", ""},
+                           {"course/utils/rect.hpp", "#include \"course/utils/vect.hpp\"\n"},
+                           {"course/component_defs.hpp", "#include \"course/utils/rect.hpp\"\n#include <vector>\n"},
                            {"engine/world.hpp", "#include \"component_defs.hpp\"\n#include \"system_defs.hpp\"\n"},
-                           {"system_defs.hpp", "#include \"systems/move.hpp\"\n"},
-                           {"systems/move.hpp", "#include \"engine/pairs.hpp\"\n"},
+                           {"course/system_defs.hpp", "#include \"course/systems/move.hpp\"\n"},
+                           {"course/systems/move.hpp", "#include \"engine/pairs.hpp\"\n"},
                            {"engine/pairs.hpp", ""},
-                           {"game.hpp", "#include \"engine/world.hpp\"\n"},
+                           {"course/game.hpp", "#include \"engine/world.hpp\"\n"},
                            {"app/cli.cpp", "#include \"game.hpp\"\n#include \"cli.hpp\"\n"},
                            {"app/cli.hpp", ""}});
   BOOST_TEST(c.code == 0);
@@ -63,12 +63,12 @@ BOOST_AUTO_TEST_CASE(a_tree_that_goes_one_way_passes) {
 }
 
 BOOST_AUTO_TEST_CASE(a_wrong_way_include_fails_naming_the_file_and_the_include) {
-  const Checked c = check({{"utils/vect.hpp", ""},
-                           {"engine/world.hpp", "#include \"utils/vect.hpp\"\n\n#include \"app/scene.hpp\"\n"},
-                           {"app/scene.hpp", "#include \"engine/world.hpp\"\n"}});
+  const Checked c = check({{"course/utils/vect.hpp", ""},
+                           {"engine/world.hpp", "#include \"course/utils/vect.hpp\"\n\n#include \"scene/scene.hpp\"\n"},
+                           {"scene/scene.hpp", "#include \"engine/world.hpp\"\n"}});
   BOOST_TEST(c.code == 1);
   BOOST_TEST(has(c.err, "engine/world.hpp:3"));
-  BOOST_TEST(has(c.err, "#include \"app/scene.hpp\" goes the wrong way"));
+  BOOST_TEST(has(c.err, "#include \"scene/scene.hpp\" goes the wrong way"));
 }
 
 BOOST_AUTO_TEST_CASE(an_include_cycle_fails_even_within_one_level) {

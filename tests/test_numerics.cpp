@@ -2,11 +2,11 @@
 // the course mode left as it was. The stiff/extreme matrix is test_stability.cpp.
 #include <algorithm>
 
-#include "game.hpp"
+#include "course/game.hpp"
 #include "helpers.hpp"
 #include "numerics/report.hpp"
 #include "numerics/scenes.hpp"
-#include "utils/random.hpp"
+#include "course/utils/random.hpp"
 
 using namespace physics;
 using namespace physics::numerics;

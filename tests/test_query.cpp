@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "engine/query.hpp"
-#include "game.hpp"
+#include "course/game.hpp"
 #include "helpers.hpp"
-#include "utils/random.hpp"
+#include "course/utils/random.hpp"
 
 using namespace physics;
 

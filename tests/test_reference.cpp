@@ -2,7 +2,7 @@
 #include "helpers.hpp"
 #include "reference/closed_forms.hpp"
 #include "reference/event_sim.hpp"
-#include "utils/random.hpp"
+#include "course/utils/random.hpp"
 
 using namespace physics;
 using namespace physics::reference;

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "app/builtin_scenes.hpp"
+#include "scene/builtin_scenes.hpp"
 #include "app/cli.hpp"
 #include "app/dump.hpp"
 #include "app/input_log.hpp"

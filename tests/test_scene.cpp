@@ -5,13 +5,13 @@
 #include <set>
 #include <sstream>
 
-#include "app/builtin_scenes.hpp"
+#include "scene/builtin_scenes.hpp"
 #include "app/dump.hpp"
 #include "app/headless.hpp"
 #include "helpers.hpp"
 #include "app/offscreen.hpp"
-#include "app/scene.hpp"
-#include "utils/random.hpp"
+#include "scene/scene.hpp"
+#include "course/utils/random.hpp"
 
 using namespace physics;
 

@@ -4,10 +4,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "app/builtin_scenes.hpp"
+#include "scene/builtin_scenes.hpp"
 #include "app/dump.hpp"
 #include "helpers.hpp"
-#include "app/scene_json.hpp"
+#include "scene/scene_json.hpp"
 
 using namespace physics;
 

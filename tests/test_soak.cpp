@@ -1,6 +1,6 @@
 // Soak, the short version of `make soak`: 10^5 steps of the gas and stack
 // scenes, checked every 10^4 steps.
-#include "app/builtin_scenes.hpp"
+#include "scene/builtin_scenes.hpp"
 #include "helpers.hpp"
 #include "app/soak.hpp"
 

@@ -12,10 +12,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "app/builtin_scenes.hpp"
+#include "scene/builtin_scenes.hpp"
 #include "app/cli.hpp"
 #include "app/offscreen.hpp"
-#include "app/scene_json.hpp"
+#include "scene/scene_json.hpp"
 #include "app/style.hpp"
 #include "app/testbed.hpp"
 #include "cli_helpers.hpp"

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "app/builtin_scenes.hpp"
+#include "scene/builtin_scenes.hpp"
 #include "helpers.hpp"
 #include "app/testbed.hpp"
 

@@ -1,5 +1,5 @@
 // Q1: init_walls.
-#include "game.hpp"
+#include "course/game.hpp"
 #include "helpers.hpp"
 
 using namespace physics;

@@ -27,13 +27,13 @@ import sys
 
 # (level, name, predicate on the path relative to src/, with '/' separators)
 LEVELS = [
-    (0, "utils", lambda p: p.startswith("utils/")),
-    (1, "components", lambda p: p == "ecs.hpp" or re.fullmatch(r"component_defs\.[ch]pp", p) is not None),
-    (2, "engine/systems", lambda p: p.split("/")[0] in ("engine", "systems", "reference")
-        or re.fullmatch(r"system_defs\.[ch]pp", p) is not None),
-    (3, "entities", lambda p: p.startswith("entities/")),
-    (4, "game", lambda p: re.fullmatch(r"game\.[ch]pp", p) is not None),
-    (5, "app", lambda p: p.startswith("app/") or p.startswith("games/")),
+    (0, "utils", lambda p: p.startswith("course/utils/")),
+    (1, "components", lambda p: p in ("course/ecs.hpp",) or re.fullmatch(r"course/component_defs\.[ch]pp", p) is not None),
+    (2, "engine/systems", lambda p: p.split("/")[0] in ("engine", "reference") or p.startswith("course/systems/")
+        or re.fullmatch(r"course/system_defs\.[ch]pp", p) is not None),
+    (3, "entities", lambda p: p.startswith("course/entities/")),
+    (4, "game", lambda p: re.fullmatch(r"course/game\.[ch]pp", p) is not None),
+    (5, "app", lambda p: p.split("/")[0] in ("app", "games", "scene", "input")),
 ]
 
 INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"')

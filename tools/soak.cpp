@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "app/builtin_scenes.hpp"
+#include "scene/builtin_scenes.hpp"
 #include "app/soak.hpp"
 
 using namespace physics;

@@ -11,12 +11,12 @@
 #include <optional>
 #include <sstream>
 
-#include "app/builtin_scenes.hpp"
+#include "scene/builtin_scenes.hpp"
 #include "app/dump.hpp"
 #include "app/headless.hpp"
 #include "app/offscreen.hpp"
-#include "app/save.hpp"
-#include "app/scene_json.hpp"
+#include "scene/save.hpp"
+#include "scene/scene_json.hpp"
 
 namespace physics::Cli {
 namespace po = boost::program_options;

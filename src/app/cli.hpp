@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "app/input_log.hpp"
-#include "app/scene.hpp"
+#include "scene/scene.hpp"
 #include "app/testbed.hpp"
 
 namespace physics::Cli {

@@ -6,7 +6,7 @@
 #include <iosfwd>
 #include <string>
 
-#include "game.hpp"
+#include "course/game.hpp"
 
 namespace physics::Headless {
 

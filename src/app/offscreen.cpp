@@ -5,7 +5,7 @@
 
 #include "app/png.hpp"
 #include "app/style.hpp"
-#include "game.hpp"
+#include "course/game.hpp"
 
 namespace physics::Offscreen {
 

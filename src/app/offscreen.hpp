@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "app/scene.hpp"
+#include "scene/scene.hpp"
 #include "engine/world.hpp"
 
 namespace physics::Offscreen {

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <string>
 
-#include "app/scene.hpp"
+#include "scene/scene.hpp"
 #include "engine/world.hpp"
 
 namespace physics {

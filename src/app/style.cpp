@@ -4,7 +4,7 @@
 #include <array>
 #include <cmath>
 
-#include "game.hpp"
+#include "course/game.hpp"
 
 namespace physics::Styles {
 

@@ -18,9 +18,9 @@
 #include <span>
 #include <string_view>
 
-#include "app/scene.hpp"
+#include "scene/scene.hpp"
 #include "engine/world.hpp"
-#include "systems/draw.hpp"
+#include "course/systems/draw.hpp"
 
 namespace physics::Styles {
 

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "entities/block.hpp"
+#include "course/entities/block.hpp"
 #include "app/headless.hpp"
-#include "app/scene_json.hpp"
+#include "scene/scene_json.hpp"
 
 namespace physics {
 

@@ -20,8 +20,8 @@
 #include <string>
 #include <vector>
 
-#include "app/keys.hpp"
-#include "app/scene.hpp"
+#include "input/keys.hpp"
+#include "scene/scene.hpp"
 #include "engine/query.hpp"
 #include "games/level.hpp"
 #include "engine/world.hpp"

@@ -11,11 +11,11 @@
 
 #include "app/png.hpp"
 #include "app/style.hpp"
-#include "game.hpp"
+#include "course/game.hpp"
 
 namespace physics {
 
-// app/keys.hpp's key codes are SDL's.
+// input/keys.hpp's key codes are SDL's.
 static_assert(key::escape == SDLK_ESCAPE && key::tab == SDLK_TAB && key::space == SDLK_SPACE &&
               key::enter == SDLK_RETURN && key::right == SDLK_RIGHT && key::left == SDLK_LEFT && key::up == SDLK_UP &&
               'a' == SDLK_a && '1' == SDLK_1);

@@ -21,8 +21,8 @@
 #include <span>
 #include <vector>
 
-#include "utils/rect.hpp"
-#include "utils/vect.hpp"
+#include "course/utils/rect.hpp"
+#include "course/utils/vect.hpp"
 
 namespace physics {
 

@@ -7,8 +7,8 @@
 #include "engine/contact.hpp"
 #include "engine/rules.hpp"
 #include "engine/sweep.hpp"
-#include "systems/collision.hpp"
-#include "utils/rect.hpp"
+#include "course/systems/collision.hpp"
+#include "course/utils/rect.hpp"
 
 namespace physics {
 

@@ -22,7 +22,7 @@
 #include <span>
 #include <vector>
 
-#include "component_defs.hpp"
+#include "course/component_defs.hpp"
 #include "engine/events.hpp"
 #include "engine/pairs.hpp"
 

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <utility>
 
-#include "component_defs.hpp"
+#include "course/component_defs.hpp"
 
 namespace physics {
 

@@ -8,7 +8,7 @@
 #include <type_traits>
 
 #include "engine/contact.hpp"
-#include "utils/rect.hpp"
+#include "course/utils/rect.hpp"
 
 namespace physics {
 

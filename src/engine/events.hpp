@@ -17,7 +17,7 @@
 #include <span>
 #include <vector>
 
-#include "component_defs.hpp"
+#include "course/component_defs.hpp"
 #include "engine/pairs.hpp"
 
 namespace physics {

@@ -4,7 +4,7 @@
 #include <bit>
 #include <cmath>
 
-#include "systems/collision.hpp"
+#include "course/systems/collision.hpp"
 
 namespace physics {
 

@@ -15,7 +15,7 @@
 #include <optional>
 #include <vector>
 
-#include "component_defs.hpp"
+#include "course/component_defs.hpp"
 
 namespace physics {
 

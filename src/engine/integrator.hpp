@@ -30,7 +30,7 @@
 #include <span>
 #include <vector>
 
-#include "component_defs.hpp"
+#include "course/component_defs.hpp"
 
 namespace physics {
 

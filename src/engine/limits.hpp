@@ -1,5 +1,5 @@
 // The one set of limits on what a world may hold. The scene validator
-// (app/scene.cpp, validate/expand) rejects any scene outside them with a
+// (scene/scene.cpp, validate/expand) rejects any scene outside them with a
 // message naming the key; the engine's own guards (validate(Params) in the
 // World's constructor, the asserts of Block::make) check the same numbers, so
 // every scene the validator accepts passes them.

@@ -25,7 +25,7 @@
 #include <span>
 #include <vector>
 
-#include "component_defs.hpp"
+#include "course/component_defs.hpp"
 #include "engine/broadphase.hpp"
 #include "engine/rules.hpp"
 

@@ -6,7 +6,7 @@
 
 #include <cstdint>
 
-#include "component_defs.hpp"
+#include "course/component_defs.hpp"
 
 namespace physics {
 

@@ -9,8 +9,8 @@
 #include <algorithm>
 #include <limits>
 
-#include "utils/rect.hpp"
-#include "utils/vect.hpp"
+#include "course/utils/rect.hpp"
+#include "course/utils/vect.hpp"
 
 namespace physics {
 

@@ -7,8 +7,8 @@
 #include <optional>
 #include <string_view>
 
-#include "component_defs.hpp"
-#include "system_defs.hpp"
+#include "course/component_defs.hpp"
+#include "course/system_defs.hpp"
 #include "engine/auto_mode.hpp"
 #include "engine/ccd.hpp"
 #include "engine/contact_solver.hpp"
@@ -55,7 +55,7 @@ struct Params {
 // The engine's own guard, run by World's constructor: a World can be built
 // without a scene (tests, tools, the benchmark), so it checks its parameters
 // itself. It uses the limits of engine/limits.hpp, the ones the scene
-// validator (app/scene.cpp) reports with a key path, so a validated scene
+// validator (scene/scene.cpp) reports with a key path, so a validated scene
 // always passes; for a scene it is a cheap second look at four numbers, not
 // a second validation of its bodies. Throws std::invalid_argument naming the
 // bad parameter.

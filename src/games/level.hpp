@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "app/keys.hpp"
-#include "app/scene.hpp"
+#include "input/keys.hpp"
+#include "scene/scene.hpp"
 #include "engine/world.hpp"
 
 namespace physics {

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "entities/block.hpp"
+#include "course/entities/block.hpp"
 
 namespace physics {
 

@@ -30,7 +30,7 @@
 #include <queue>
 #include <vector>
 
-#include "utils/vect.hpp"
+#include "course/utils/vect.hpp"
 
 namespace physics::reference {
 

@@ -18,7 +18,7 @@ keeps its answer (the stub lines are dropped).
   make_exercise.py --out DIR [--keep 1,2] [--force]   write the tree
   make_exercise.py --check                             parse-level check only
 
-The tree: the course tree (src/game.*, src/component_defs.*, ...), every
+The tree: the course tree (src/course/: game.*, component_defs.*, ...), every
 project header it includes and the .cpp beside each of them (so the engine
 files it needs), the per-question tests of tests/ and a Makefile. A file
 whose content is unchanged is not rewritten (incremental builds). An
@@ -35,13 +35,13 @@ ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)),
 QUESTIONS = range(1, 10)
 
 # The course tree (README.md, "Where each question of the sheet is answered").
-COURSE = ["src/game.cpp", "src/game.hpp", "src/component_defs.cpp", "src/component_defs.hpp",
-          "src/system_defs.cpp", "src/system_defs.hpp", "src/ecs.hpp",
-          "src/systems/draw.cpp", "src/systems/draw.hpp", "src/systems/move.cpp", "src/systems/move.hpp",
-          "src/systems/forces.cpp", "src/systems/forces.hpp",
-          "src/systems/collision.cpp", "src/systems/collision.hpp",
-          "src/entities/block.cpp", "src/entities/block.hpp",
-          "src/utils/vect.cpp", "src/utils/vect.hpp", "src/utils/rect.cpp", "src/utils/rect.hpp"]
+COURSE = ["src/course/game.cpp", "src/course/game.hpp", "src/course/component_defs.cpp", "src/course/component_defs.hpp",
+          "src/course/system_defs.cpp", "src/course/system_defs.hpp", "src/course/ecs.hpp",
+          "src/course/systems/draw.cpp", "src/course/systems/draw.hpp", "src/course/systems/move.cpp", "src/course/systems/move.hpp",
+          "src/course/systems/forces.cpp", "src/course/systems/forces.hpp",
+          "src/course/systems/collision.cpp", "src/course/systems/collision.hpp",
+          "src/course/entities/block.cpp", "src/course/entities/block.hpp",
+          "src/course/utils/vect.cpp", "src/course/utils/vect.hpp", "src/course/utils/rect.cpp", "src/course/utils/rect.hpp"]
 # The per-question tests (suites q<n>_*) and the runner. Their includes pull
 # in what else is needed (src/app/headless for q9_scene).
 TESTS = ["tests/test_main.cpp", "tests/helpers.hpp", "tests/test_walls.cpp", "tests/test_components.cpp",

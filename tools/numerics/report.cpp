@@ -6,7 +6,7 @@
 #include <limits>
 #include <map>
 
-#include "utils/random.hpp"
+#include "course/utils/random.hpp"
 
 namespace physics::numerics {
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "game.hpp"
+#include "course/game.hpp"
 
 namespace physics::numerics {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "game.hpp"
+#include "course/game.hpp"
 #include "engine/world.hpp"
 
 namespace physics::numerics {

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "game.hpp"
-#include "utils/random.hpp"
+#include "course/game.hpp"
+#include "course/utils/random.hpp"
 
 namespace physics::numerics {
 

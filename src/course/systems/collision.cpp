@@ -1,4 +1,4 @@
-#include "systems/collision.hpp"
+#include "course/systems/collision.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 #include <span>
 #include <string_view>
 
-#include "app/scene.hpp"
+#include "scene/scene.hpp"
 
 namespace physics {
 

@@ -5,7 +5,7 @@
 
 #include <utility>
 
-#include "utils/vect.hpp"
+#include "course/utils/vect.hpp"
 
 namespace physics {
 

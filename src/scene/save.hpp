@@ -10,7 +10,7 @@
 // Destroyed bodies are left out: the others' ids close up, in order.
 #pragma once
 
-#include "app/scene.hpp"
+#include "scene/scene.hpp"
 #include "engine/world.hpp"
 
 namespace physics::Save {

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "component_defs.hpp"
+#include "course/component_defs.hpp"
 
 namespace physics {
 

@@ -1,4 +1,4 @@
-#include "entities/block.hpp"
+#include "course/entities/block.hpp"
 
 #include <cassert>
 #include <cmath>
@@ -7,7 +7,7 @@ namespace physics::Block {
 
 t make(World& w, double x, double y, int width, int height, Color color, double mass,
        double restitution) {
-  // The caller gives a valid block: the scene validator (app/scene.cpp)
+  // The caller gives a valid block: the scene validator (scene/scene.cpp)
   // rejects bad input with a message; these only catch a programming error.
   assert(width > 0 && height > 0 && width <= max_block_size && height <= max_block_size);
   assert(mass > 0.0);  // or infinity (a fixed block); false for NaN

@@ -9,10 +9,10 @@
 #include <string>
 #include <string_view>
 
-#include "systems/collision.hpp"
-#include "systems/draw.hpp"
-#include "systems/forces.hpp"
-#include "systems/move.hpp"
+#include "course/systems/collision.hpp"
+#include "course/systems/draw.hpp"
+#include "course/systems/forces.hpp"
+#include "course/systems/move.hpp"
 
 namespace physics {
 

@@ -1,4 +1,4 @@
-#include "component_defs.hpp"
+#include "course/component_defs.hpp"
 
 #include <stdexcept>
 

@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "engine/limits.hpp"
-#include "game.hpp"
-#include "utils/random.hpp"
+#include "course/game.hpp"
+#include "course/utils/random.hpp"
 
 namespace physics {
 

@@ -1,4 +1,4 @@
-#include "app/scene_json.hpp"
+#include "scene/scene_json.hpp"
 
 #include <algorithm>
 #include <array>

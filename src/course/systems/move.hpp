@@ -1,7 +1,7 @@
 // Move system (course: systems/move.ml): x += dt * v.
 #pragma once
 
-#include "component_defs.hpp"
+#include "course/component_defs.hpp"
 
 namespace physics {
 

@@ -2,7 +2,7 @@
 // the frame into a velocity change, then clears it.
 #pragma once
 
-#include "component_defs.hpp"
+#include "course/component_defs.hpp"
 
 namespace physics {
 

@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "component_defs.hpp"
+#include "course/component_defs.hpp"
 #include "engine/contact.hpp"
 #include "engine/pairs.hpp"
 

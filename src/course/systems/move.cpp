@@ -1,4 +1,4 @@
-#include "systems/move.hpp"
+#include "course/systems/move.hpp"
 
 namespace physics {
 

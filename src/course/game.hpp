@@ -7,7 +7,7 @@
 #include <cstdint>
 
 #include "engine/world.hpp"
-#include "entities/block.hpp"
+#include "course/entities/block.hpp"
 
 namespace physics::Game {
 

@@ -1,7 +1,7 @@
 // Block entity (course: entities/block.ml): a coloured rectangle with a mass.
 #pragma once
 
-#include "component_defs.hpp"
+#include "course/component_defs.hpp"
 #include "engine/world.hpp"
 
 namespace physics::Block {
@@ -16,7 +16,7 @@ using t = Entity<component::position, component::box, component::color, componen
 // system the world declared (Draw, Move, Forces, Collision).
 // Expects a valid block (asserted): 0 < size <= max_block_size, a mass > 0 or
 // infinity, a finite position, a restitution in [0, 1]. Scenes are checked
-// before, by the scene validator (app/scene.hpp).
+// before, by the scene validator (scene/scene.hpp).
 t make(World& w, double x, double y, int width, int height, Color color, double mass,
        double restitution = component::restitution::def);
 

@@ -1,6 +1,6 @@
-#include "game.hpp"
+#include "course/game.hpp"
 
-#include "utils/random.hpp"
+#include "course/utils/random.hpp"
 
 namespace physics::Game {
 

@@ -10,9 +10,9 @@
 #include <limits>
 #include <vector>
 
-#include "ecs.hpp"
-#include "utils/rect.hpp"
-#include "utils/vect.hpp"
+#include "course/ecs.hpp"
+#include "course/utils/rect.hpp"
+#include "course/utils/vect.hpp"
 
 namespace physics {
 

@@ -1,4 +1,4 @@
-#include "utils/rect.hpp"
+#include "course/utils/rect.hpp"
 
 namespace physics {
 

@@ -1,4 +1,4 @@
-#include "systems/forces.hpp"
+#include "course/systems/forces.hpp"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "app/save.hpp"
+#include "scene/save.hpp"
 
 #include <string>
 

@@ -1,6 +1,6 @@
-#include "app/scene.hpp"
+#include "scene/scene.hpp"
 
-#include "game.hpp"
+#include "course/game.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "engine/broadphase.hpp"
-#include "entities/block.hpp"
+#include "course/entities/block.hpp"
 
 namespace physics {
 namespace {

@@ -1,4 +1,4 @@
-#include "utils/vect.hpp"
+#include "course/utils/vect.hpp"
 
 #include <cmath>
 

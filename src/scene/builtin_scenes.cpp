@@ -1,4 +1,4 @@
-#include "app/builtin_scenes.hpp"
+#include "scene/builtin_scenes.hpp"
 
 #include <vector>
 

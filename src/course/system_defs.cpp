@@ -1,4 +1,4 @@
-#include "system_defs.hpp"
+#include "course/system_defs.hpp"
 
 namespace physics {
 

@@ -16,7 +16,7 @@
 #include <string>
 #include <string_view>
 
-#include "app/scene.hpp"
+#include "scene/scene.hpp"
 
 namespace physics {
 

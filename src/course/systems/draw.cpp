@@ -1,4 +1,4 @@
-#include "systems/draw.hpp"
+#include "course/systems/draw.hpp"
 
 #include <algorithm>
 #include <cmath>
