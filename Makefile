@@ -8,7 +8,7 @@ CXX      ?= g++
 OPT      ?= -O2
 # -ffp-contract=off: no fused multiply-add, so a run gives the same bits at
 # every optimisation level and on every x86-64 (see the determinism test).
-CXXFLAGS := -std=c++20 $(OPT) -g -Wall -Wextra -Werror -ffp-contract=off -Isrc -MMD -MP
+CXXFLAGS := -std=c++20 $(OPT) -g -Wall -Wextra -Werror -ffp-contract=off -Iinclude -Isrc -MMD -MP
 LDFLAGS  :=
 BUILD    := build
 ifneq ($(OPT),-O2)
@@ -56,25 +56,33 @@ PACKAGES := g++ make pkg-config libsdl2-dev libsdl2-ttf-dev libboost-test-dev fo
             nlohmann-json3-dev libboost-program-options-dev libstb-dev python3
 SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-# The course tree (src/course: game, components, systems, entities, utils), the engine
-# beside it (src/engine) and the SDL-free part of the application (scenes,
-# dumps, offscreen pictures, the command line and the testbed's input logic):
-# the physics library, linked by the game, the tests and the tools.
+# Four libraries, one per layer, each linked only by what needs it:
+#   libphysics.a        the course tree (src/course) and the engine (src/engine,
+#                       src/api): what a game embeds (include/physics/); no JSON,
+#                       PNG, SDL nor game code (`make check-lib` checks with nm)
+#   libphysics_scene.a  scene files: spec, JSON read and write, built-in scenes, save
+#   libphysics_games.a  the two games' rules
+#   libphysics_app.a    the SDL-free application: command line, testbed logic,
+#                       input logs, headless runs, dumps, offscreen pictures, styles
+# The window and main (SDL) are the game's own objects.
 COURSE_SRC := $(shell find src/course -name '*.cpp' | sort)
-ENGINE_SRC := $(wildcard src/engine/*.cpp)
-APP_LIB_SRC := $(wildcard src/scene/*.cpp) src/app/dump.cpp \
-               src/app/offscreen.cpp src/app/soak.cpp src/app/headless.cpp src/app/png.cpp src/app/style.cpp \
-               $(wildcard src/games/*.cpp)
-CORE_SRC := $(COURSE_SRC) $(ENGINE_SRC) $(APP_LIB_SRC)
-# The command line and the testbed's input logic: SDL-free, linked into the game and the tests.
-APP_SRC  := src/app/cli.cpp src/app/testbed.cpp src/app/input_log.cpp src/app/testbed_replay.cpp
-GAME_SRC := src/app/main.cpp src/app/window.cpp $(APP_SRC)
-TEST_SRC := $(wildcard tests/*.cpp) $(APP_SRC)
+ENGINE_SRC := $(wildcard src/engine/*.cpp) $(wildcard src/api/*.cpp)
+CORE_SRC   := $(COURSE_SRC) $(ENGINE_SRC)
+SCENE_SRC  := $(wildcard src/scene/*.cpp)
+GAMES_SRC  := $(wildcard src/games/*.cpp)
+APP_SRC    := $(filter-out src/app/main.cpp src/app/window.cpp,$(wildcard src/app/*.cpp))
+GAME_SRC   := src/app/main.cpp src/app/window.cpp
+TEST_SRC   := $(wildcard tests/*.cpp)
 APP_LIBS := -lboost_program_options
 # The exact event-driven reference (not part of the engine): tests and report tools.
 REF_SRC  := src/reference/event_sim.cpp src/reference/closed_forms.cpp
 
 CORE_OBJ := $(CORE_SRC:%.cpp=$(BUILD)/obj/%.o)
+SCENE_OBJ := $(SCENE_SRC:%.cpp=$(BUILD)/obj/%.o)
+GAMES_OBJ := $(GAMES_SRC:%.cpp=$(BUILD)/obj/%.o)
+APP_OBJ  := $(APP_SRC:%.cpp=$(BUILD)/obj/%.o)
+# In link order: each library uses only those after it.
+LIBS := $(BUILD)/libphysics_app.a $(BUILD)/libphysics_games.a $(BUILD)/libphysics_scene.a $(BUILD)/libphysics.a
 GAME_OBJ := $(GAME_SRC:%.cpp=$(BUILD)/obj/%.o)
 TEST_OBJ := $(TEST_SRC:%.cpp=$(BUILD)/obj/%.o)
 REF_OBJ  := $(REF_SRC:%.cpp=$(BUILD)/obj/%.o)
@@ -86,7 +94,7 @@ TEST_OBJ += $(REF_OBJ) $(NUM_OBJ)
 SDL_CFLAGS = $(shell pkg-config --cflags sdl2 SDL2_ttf)
 SDL_LIBS   = $(shell pkg-config --libs sdl2 SDL2_ttf)
 
-.PHONY: all run test deps clean check-no-sdl layers determinism memcheck soak fuzz report stability bench
+.PHONY: all run test deps clean check-lib layers determinism memcheck soak fuzz report stability bench
 all: $(BUILD)/game $(BUILD)/tests
 
 deps:
@@ -106,7 +114,7 @@ run: deps
 # build, so their -O0 builds and runs share the jobs with it instead of
 # waiting for it (on 2 cores, ~30 s less from a fresh clone).
 test: deps
-	@$(MAKE) --no-print-directory $(if $(TEST_ARGS),,exercise-trees) layers $(BUILD)/tests $(BUILD)/game check-no-sdl \
+	@$(MAKE) --no-print-directory $(if $(TEST_ARGS),,exercise-trees) layers $(BUILD)/tests $(BUILD)/game check-lib \
 	  $(if $(TEST_ARGS),,exercise-check)
 	BOOST_TEST_COLOR_OUTPUT=no ./$(BUILD)/tests $(TEST_ARGS) 2>&1
 
@@ -114,18 +122,27 @@ test: deps
 layers:
 	@python3 tools/check_layers.py
 
-# The physics core must not depend on SDL: its library names no SDL symbol.
-check-no-sdl: $(BUILD)/libphysics.a
-	@if nm -C $< | grep -q ' U SDL_'; then echo "libphysics.a references SDL"; exit 1; fi
+# The library a game embeds holds the course and the engine only: no symbol
+# (defined or used) of SDL, JSON (nlohmann), PNG (stb), scenes, games or the app.
+LIB_FOREIGN := SDL_|TTF_|nlohmann|stbi|physics::(Scene|SceneSpec|Save|Platformer|Targets|Level|Testbed|Headless|Style|Dump)\b
+check-lib: $(BUILD)/libphysics.a
+	@found=$$(nm -C $< | grep -E '$(LIB_FOREIGN)' | head -3); \
+	if [ -n "$$found" ]; then echo "libphysics.a holds or uses a symbol that is not the engine's or the course's:"; \
+	  echo "$$found"; exit 1; fi; \
+	echo "check-lib: libphysics.a holds the course and the engine only ($$(nm $< | grep -c ' T ') functions)"
 
 $(BUILD)/libphysics.a: $(CORE_OBJ)
+$(BUILD)/libphysics_scene.a: $(SCENE_OBJ)
+$(BUILD)/libphysics_games.a: $(GAMES_OBJ)
+$(BUILD)/libphysics_app.a: $(APP_OBJ)
+$(LIBS):
 	@mkdir -p $(@D)
-	ar rcs $@ $^
+	rm -f $@ && ar rcs $@ $^
 
-$(BUILD)/game: $(GAME_OBJ) $(BUILD)/libphysics.a
+$(BUILD)/game: $(GAME_OBJ) $(LIBS)
 	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS) $(SDL_LIBS) $(APP_LIBS)
 
-$(BUILD)/tests: $(TEST_OBJ) $(BUILD)/libphysics.a
+$(BUILD)/tests: $(TEST_OBJ) $(LIBS)
 	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS) -lboost_unit_test_framework $(APP_LIBS)
 
 $(BUILD)/obj/src/app/window.o $(BUILD)/obj/src/app/main.o: CXXFLAGS += $(SDL_CFLAGS)
@@ -151,10 +168,10 @@ $(filter $(BUILD)/obj/tests/%,$(TEST_OBJ)): $(TEST_PCH).gch
 $(BUILD)/obj/tests/%.o: private CXXFLAGS += $(TEST_FLAGS) -include $(TEST_PCH) -Winvalid-pch
 
 # ---- numerics (docs/numerics.md) ----
-$(BUILD)/stability: $(BUILD)/obj/tools/stability_main.o $(NUM_OBJ) $(REF_OBJ) $(BUILD)/libphysics.a
+$(BUILD)/stability: $(BUILD)/obj/tools/stability_main.o $(NUM_OBJ) $(REF_OBJ) $(LIBS)
 	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS)
 
-$(BUILD)/report: $(BUILD)/obj/tools/report_main.o $(NUM_OBJ) $(REF_OBJ) $(BUILD)/libphysics.a
+$(BUILD)/report: $(BUILD)/obj/tools/report_main.o $(NUM_OBJ) $(REF_OBJ) $(LIBS)
 	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS)
 
 # Error against run time: report/accuracy.csv, REPORT.md, work_precision.png (needs gnuplot).
@@ -195,7 +212,7 @@ soak: deps
 	@$(MAKE) --no-print-directory $(BUILD)/soak
 	./$(BUILD)/soak $(SOAK_STEPS)
 
-$(BUILD)/soak: $(BUILD)/obj/tools/soak.o $(BUILD)/libphysics.a
+$(BUILD)/soak: $(BUILD)/obj/tools/soak.o $(LIBS)
 	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS)
 
 # Coverage-guided fuzzing of the scene loader (libFuzzer, clang from Debian),
@@ -206,8 +223,8 @@ fuzz: deps
 	@$(MAKE) --no-print-directory PACKAGES="clang libclang-rt-14-dev nlohmann-json3-dev" deps
 	@mkdir -p $(FUZZ_DIR)/corpus
 	cp scenes/*.json tests/fuzz_regressions/* $(FUZZ_DIR)/corpus/ 2>/dev/null || true
-	clang++ -std=c++20 -O1 -g -ffp-contract=off -Isrc -fsanitize=fuzzer,address,undefined \
-	  -fno-sanitize-recover=all $(CORE_SRC) fuzz/scene_fuzzer.cpp -o $(FUZZ_DIR)/scene_fuzzer
+	clang++ -std=c++20 -O1 -g -ffp-contract=off -Iinclude -Isrc -fsanitize=fuzzer,address,undefined \
+	  -fno-sanitize-recover=all $(CORE_SRC) $(SCENE_SRC) fuzz/scene_fuzzer.cpp -o $(FUZZ_DIR)/scene_fuzzer
 	./$(FUZZ_DIR)/scene_fuzzer -max_total_time=$(FUZZ_SECONDS) -max_len=8192 -timeout=10 -rss_limit_mb=4096 \
 	  -artifact_prefix=$(FUZZ_DIR)/ -print_final_stats=1 $(FUZZ_DIR)/corpus
 
@@ -225,7 +242,7 @@ bench: deps
 	@$(MAKE) --no-print-directory build/bench $(if $(PEERS),build/bench-peers) OPT=-O2 SANITIZE=
 	./build/bench $(if $(PEERS),--peers build/bench-peers --peer-sources "$(notdir $(PEER_TARS))") $(BENCH_ARGS)
 
-$(BUILD)/bench: $(BENCH_OBJ) $(BUILD)/libphysics.a
+$(BUILD)/bench: $(BENCH_OBJ) $(LIBS)
 	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS) -lbox2d -lchipmunk -lpthread -lm
 
 # ---- Peers built from source (make bench PEERS=DIR) ----
@@ -292,7 +309,7 @@ $(BUILD)/obj/bench/peers/engine_chipmunk_release.o: bench/engine_chipmunk.cpp $(
 	@mkdir -p $(@D)
 	$(CXX) $(CXXFLAGS) -I$(PEER_DIR)/chipmunk/include -c $< -o $@
 
-$(BUILD)/bench-peers: $(PEERS_OBJ) $(BUILD)/libphysics.a $(BOX2D3_LIB) $(CHIPMUNK_LIB)
+$(BUILD)/bench-peers: $(PEERS_OBJ) $(LIBS) $(BOX2D3_LIB) $(CHIPMUNK_LIB)
 	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS) -lpthread -lm
 
 clean:

@@ -14,7 +14,7 @@ namespace bench {
 
 namespace {
 
-using physics::Aabb;
+using physics::FloatBox;
 using physics::PairKey;
 
 // Sort-and-sweep on x with an axis kept sorted from one pass to the next:
@@ -22,7 +22,7 @@ using physics::PairKey;
 // nearly linear. Every pair whose x intervals overlap is tested on y.
 class SweepAndPrune {
  public:
-  const std::vector<PairKey>& find(const std::vector<Aabb>& boxes, const std::vector<std::uint8_t>& fixed) {
+  const std::vector<PairKey>& find(const std::vector<FloatBox>& boxes, const std::vector<std::uint8_t>& fixed) {
     const std::size_t n = boxes.size();
     if (order_.size() != n) {
       order_.resize(n);
@@ -38,10 +38,10 @@ class SweepAndPrune {
     pairs_.clear();
     for (std::size_t a = 0; a < n; ++a) {
       const std::uint32_t i = order_[a];
-      const Aabb bi = boxes[i];
+      const FloatBox bi = boxes[i];
       for (std::size_t b = a + 1; b < n; ++b) {
         const std::uint32_t j = order_[b];
-        const Aabb& bj = boxes[j];
+        const FloatBox& bj = boxes[j];
         if (bj.min_x > bi.max_x) break;
         if (fixed[i] && fixed[j]) continue;
         if (bi.min_y <= bj.max_y && bj.min_y <= bi.max_y) pairs_.push_back(physics::pair_key(i, j));
@@ -79,7 +79,7 @@ std::string compare_broadphases(const std::vector<std::size_t>& sizes) {
       physics::UniformGrid grid;
       SweepAndPrune sap;
       std::vector<Body> bodies;
-      std::vector<Aabb> boxes;
+      std::vector<FloatBox> boxes;
       std::vector<std::uint8_t> fixed;
       std::vector<double> t_grid, t_sap;
       std::size_t pairs = 0;
@@ -93,7 +93,7 @@ std::string compare_broadphases(const std::vector<std::size_t>& sizes) {
           const physics::Vector p{(b.cx - b.hx) * 10.0, -(b.cy + b.hy) * 10.0};
           const physics::Rect r{static_cast<int>(std::lround(2 * b.hx * 10.0)),
                                 static_cast<int>(std::lround(2 * b.hy * 10.0))};
-          boxes.push_back(Aabb::around(p, r, 1.0));
+          boxes.push_back(FloatBox::around(p, r, 1.0));
           fixed.push_back(b.fixed);
         }
         auto t0 = clock::now();

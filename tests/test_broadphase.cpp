@@ -16,7 +16,7 @@ using namespace physics;
 namespace {
 
 // Every pair of overlapping boxes, not both fixed, by brute force.
-std::vector<PairKey> brute_pairs(const std::vector<Aabb>& boxes, const std::vector<std::uint8_t>& fixed) {
+std::vector<PairKey> brute_pairs(const std::vector<FloatBox>& boxes, const std::vector<std::uint8_t>& fixed) {
   std::vector<PairKey> out;
   for (std::uint32_t i = 0; i < boxes.size(); ++i)
     for (std::uint32_t j = i + 1; j < boxes.size(); ++j)
@@ -112,21 +112,21 @@ BOOST_AUTO_TEST_CASE(boxes_are_rounded_outwards_and_contain_the_body) {
   const Rect r{7, 3};
   for (const double x : {0.0, 0.1, -0.1, 1.0 / 3.0, 123456.789, -9.87654321e6, 1e7 + 0.3, 3.3e20, -1e39}) {
     const Vector p{x, -x / 7};
-    const Aabb tight = Aabb::around(p, r, 0.0);
+    const FloatBox tight = FloatBox::around(p, r, 0.0);
     BOOST_TEST(tight.contains(p, r));
     BOOST_TEST(tight.min_x <= p.x);
     BOOST_TEST(static_cast<double>(tight.max_x) >= p.x + r.width);
-    const Aabb grown = Aabb::around(p, r, 2.0);
+    const FloatBox grown = FloatBox::around(p, r, 2.0);
     BOOST_TEST(grown.contains(p, r));
     BOOST_TEST(static_cast<double>(grown.min_x) <= p.x - 2.0);
     BOOST_TEST(static_cast<double>(grown.max_y) >= p.y + r.height + 2.0);
   }
   // Beyond float range the box becomes infinite rather than wrong.
-  const Aabb far = Aabb::around({1e300, 0}, r, 1.0);
+  const FloatBox far = FloatBox::around({1e300, 0}, r, 1.0);
   BOOST_TEST(far.contains({1e300, 0}, r));
   BOOST_TEST(far.valid());
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  BOOST_TEST(!Aabb::around({nan, 0}, r, 1.0).valid());
+  BOOST_TEST(!FloatBox::around({nan, 0}, r, 1.0).valid());
 }
 
 BOOST_AUTO_TEST_CASE(the_grid_finds_exactly_the_overlapping_pairs_in_loop_order) {
@@ -134,14 +134,14 @@ BOOST_AUTO_TEST_CASE(the_grid_finds_exactly_the_overlapping_pairs_in_loop_order)
     Random rng(seed);
     const int n = rng.uniform_int(0, 400);
     const double world = rng.uniform(50, 3000);
-    std::vector<Aabb> boxes;
+    std::vector<FloatBox> boxes;
     std::vector<std::uint8_t> fixed;
     for (int i = 0; i < n; ++i) {
       const double kind = rng.uniform(0, 1);
       double w = rng.uniform(0.5, 30), h = rng.uniform(0.5, 30);
       if (kind < 0.03) w = world, h = 20;  // walls and floors: kept out of the grid
       const Vector p{rng.uniform(-world / 2, world), rng.uniform(-world / 2, world)};
-      Aabb b{static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.x + w),
+      FloatBox b{static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.x + w),
              static_cast<float>(p.y + h)};
       if (kind > 0.99) b.min_x = std::numeric_limits<float>::quiet_NaN();
       if (kind > 0.98 && kind <= 0.99) b.max_x = std::numeric_limits<float>::infinity();
@@ -160,27 +160,27 @@ BOOST_AUTO_TEST_CASE(the_grid_finds_exactly_the_overlapping_pairs_in_loop_order)
 
 BOOST_AUTO_TEST_CASE(a_query_after_moves_reports_every_overlapping_box) {
   Random rng(7);
-  std::vector<Aabb> boxes;
+  std::vector<FloatBox> boxes;
   std::vector<std::uint8_t> fixed;
   for (int i = 0; i < 500; ++i) {
     const Vector p{rng.uniform(0, 1000), rng.uniform(0, 1000)};
-    boxes.push_back(Aabb::around(p, {rng.uniform_int(1, 20), rng.uniform_int(1, 20)}, 0.5));
+    boxes.push_back(FloatBox::around(p, {rng.uniform_int(1, 20), rng.uniform_int(1, 20)}, 0.5));
     fixed.push_back(0);
   }
-  boxes.push_back(Aabb::around({0, 0}, {1000, 10}, 0.5));  // a large one
+  boxes.push_back(FloatBox::around({0, 0}, {1000, 10}, 0.5));  // a large one
   fixed.push_back(1);
   UniformGrid grid;
   grid.build(boxes, fixed);
   // Move a third of the bodies anywhere, even far outside the grid.
   for (std::uint32_t i = 0; i < boxes.size(); i += 3) {
     const Vector p{rng.uniform(-2000, 3000), rng.uniform(-2000, 3000)};
-    boxes[i] = Aabb::around(p, {rng.uniform_int(1, 20), rng.uniform_int(1, 20)}, 0.5);
+    boxes[i] = FloatBox::around(p, {rng.uniform_int(1, 20), rng.uniform_int(1, 20)}, 0.5);
     grid.move(i, boxes[i]);
   }
   std::size_t missed = 0, checked = 0;
   for (int q = 0; q < 2000; ++q) {
     const double reach = q % 2 ? 3100 : 1000;  // half of them where most boxes are
-    const Aabb box = Aabb::around({rng.uniform(-reach + 900, reach), rng.uniform(-reach + 900, reach)},
+    const FloatBox box = FloatBox::around({rng.uniform(-reach + 900, reach), rng.uniform(-reach + 900, reach)},
                                   {rng.uniform_int(1, 150), rng.uniform_int(1, 150)}, 0.5);
     std::vector<std::uint32_t> seen;
     grid.query(box, [&](std::uint32_t j) { seen.push_back(j); });
@@ -210,7 +210,7 @@ BOOST_AUTO_TEST_CASE(many_large_bodies_find_the_same_pairs_as_all_pairs) {
   for (std::size_t i = 0; i < ids.size(); ++i)
     for (std::size_t j = i + 1; j < ids.size(); ++j) {
       if (!std::isfinite(k.mass[ids[i]]) && !std::isfinite(k.mass[ids[j]])) continue;
-      if (overlap(Aabb::around(k.position[ids[i]], k.box[ids[i]], 1.0), Aabb::around(k.position[ids[j]], k.box[ids[j]], 1.0)))
+      if (overlap(FloatBox::around(k.position[ids[i]], k.box[ids[i]], 1.0), FloatBox::around(k.position[ids[j]], k.box[ids[j]], 1.0)))
         expected.push_back({ids[i], ids[j]});
     }
   BOOST_TEST(w.broadphase.grid().large_count() >= 100u);
@@ -230,8 +230,8 @@ BOOST_AUTO_TEST_CASE(candidate_pairs_are_the_overlapping_grown_boxes_never_two_i
       for (std::size_t j = i + 1; j < ids.size(); ++j) {
         const Components& k = w.components;
         if (!std::isfinite(k.mass[ids[i]]) && !std::isfinite(k.mass[ids[j]])) continue;
-        if (overlap(Aabb::around(k.position[ids[i]], k.box[ids[i]], margin),
-                    Aabb::around(k.position[ids[j]], k.box[ids[j]], margin)))
+        if (overlap(FloatBox::around(k.position[ids[i]], k.box[ids[i]], margin),
+                    FloatBox::around(k.position[ids[j]], k.box[ids[j]], margin)))
           expected.push_back({ids[i], ids[j]});
       }
     BOOST_TEST(pairs.size() == expected.size());

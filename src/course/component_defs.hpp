@@ -11,15 +11,13 @@
 #include <vector>
 
 #include "course/ecs.hpp"
+#include "physics/math.hpp"
 #include "course/utils/rect.hpp"
 #include "course/utils/vect.hpp"
 
 namespace physics {
 
-struct Color {
-  std::uint8_t r = 0, g = 0, b = 0, a = 255;
-  friend constexpr bool operator==(Color, Color) = default;
-};
+// Color (r, g, b, a: 8 bits each) is the public API's (include/physics/math.hpp).
 
 inline constexpr double infinity = std::numeric_limits<double>::infinity();
 

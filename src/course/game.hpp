@@ -55,7 +55,8 @@ Block::t red_block_with_force(World& w);
 void init_scene(World& w, std::uint64_t seed = 42);
 
 // One frame of physics (the sheet: "call update in the main program"):
-// Forces, Move, Collision, each `substeps` times with dt / substeps.
+// Forces, Move, Collision, each `substeps` times with dt / substeps. The
+// engine runs it (engine/step.cpp), for scenes and the public API alike.
 void step(World& w);
 
 // Draw's part of the frame, on whatever canvas the front end gives.

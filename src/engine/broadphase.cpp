@@ -49,16 +49,16 @@ constexpr double cells_per_body = 2.0;
 
 }  // namespace
 
-Aabb Aabb::around(Vector p, Rect r, double margin) {
+FloatBox FloatBox::around(Vector p, Rect r, double margin) {
   return {float_down(p.x - margin), float_down(p.y - margin), float_up((p.x + r.width) + margin),
           float_up((p.y + r.height) + margin)};
 }
 
-Aabb Aabb::outward(double x0, double y0, double x1, double y1) {
+FloatBox FloatBox::outward(double x0, double y0, double x1, double y1) {
   return {float_down(x0), float_down(y0), float_up(x1), float_up(y1)};
 }
 
-double Aabb::extent() const {
+double FloatBox::extent() const {
   return std::max(static_cast<double>(max_x) - min_x, static_cast<double>(max_y) - min_y);
 }
 
@@ -76,12 +76,12 @@ int UniformGrid::cell_y(double y) const {
   return static_cast<int>(t);
 }
 
-void UniformGrid::size_grid(std::span<const Aabb> boxes, std::size_t small, double max_extent) {
+void UniformGrid::size_grid(std::span<const FloatBox> boxes, std::size_t small, double max_extent) {
   double lo_x = 0, lo_y = 0, hi_x = 0, hi_y = 0;
   bool first = true;
   for (std::size_t i = 0; i < boxes.size(); ++i) {
     if (cell_of_[i] == 0) continue;  // not small (see build)
-    const Aabb& b = boxes[i];
+    const FloatBox& b = boxes[i];
     if (first) {
       lo_x = hi_x = b.min_x, lo_y = hi_y = b.min_y;
       first = false;
@@ -116,7 +116,7 @@ void UniformGrid::emit(std::uint32_t a, std::uint32_t b) {
 // In stages: classify the boxes (small in the grid, large aside), size the
 // grid, sort the small boxes into cells, then the pairs: grid cells against
 // their neighbours, large boxes against the grid and each other; sorted.
-void UniformGrid::build(std::span<const Aabb> boxes, std::span<const std::uint8_t> fixed) {
+void UniformGrid::build(std::span<const FloatBox> boxes, std::span<const std::uint8_t> fixed) {
   const std::size_t n = boxes.size();
   if (n >= (std::size_t{1} << 32) - 1) throw std::length_error("broadphase: too many bodies");
   fixed_.assign(fixed.begin(), fixed.end());
@@ -130,7 +130,7 @@ void UniformGrid::build(std::span<const Aabb> boxes, std::span<const std::uint8_
   sort_pairs(n);
 }
 
-void UniformGrid::index(std::span<const Aabb> boxes) {
+void UniformGrid::index(std::span<const FloatBox> boxes) {
   if (boxes.size() >= (std::size_t{1} << 32) - 1) throw std::length_error("broadphase: too many bodies");
   fixed_.clear();
   found_.clear();
@@ -144,14 +144,14 @@ void UniformGrid::index(std::span<const Aabb> boxes) {
 // Sorts the bodies into small (in the grid) and large (aside); boxes with a
 // NaN bound are in neither and collide with nothing. Afterwards cell_of_ says
 // which bodies are small (nonzero). Returns how many are small.
-std::size_t UniformGrid::classify(std::span<const Aabb> boxes, double& max_extent) {
+std::size_t UniformGrid::classify(std::span<const FloatBox> boxes, double& max_extent) {
   const std::size_t n = boxes.size();
   large_.clear();
   large_box_.clear();
   large_slot_.assign(n, -1);
   double sum = 0.0;
   std::size_t counted = 0;
-  for (const Aabb& b : boxes) {
+  for (const FloatBox& b : boxes) {
     const double e = b.extent();
     if (b.valid() && std::isfinite(e)) sum += e, ++counted;
   }
@@ -159,7 +159,7 @@ std::size_t UniformGrid::classify(std::span<const Aabb> boxes, double& max_exten
   cell_of_.assign(n, 0);
   std::size_t small = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    const Aabb& b = boxes[i];
+    const FloatBox& b = boxes[i];
     if (!b.valid()) continue;
     const double e = b.extent();
     if (std::isfinite(e) && e <= threshold) {
@@ -177,7 +177,7 @@ std::size_t UniformGrid::classify(std::span<const Aabb> boxes, double& max_exten
 
 // Counting sort of the small boxes by cell (row-major). Filling backwards
 // leaves each cell's bodies in increasing index order.
-void UniformGrid::fill_cells(std::span<const Aabb> boxes, std::size_t small) {
+void UniformGrid::fill_cells(std::span<const FloatBox> boxes, std::size_t small) {
   const std::size_t n = boxes.size();
   const std::size_t cells = this->cells();
   cell_start_.assign(cells + 1, 0);
@@ -227,7 +227,7 @@ void UniformGrid::pairs_in_grid() {
         below_e = start[below + static_cast<std::size_t>(std::min(cx + 1, nx_ - 1)) + 1];
       }
       for (std::uint32_t a = s; a < e; ++a) {
-        const Aabb box = entry[a].box;
+        const FloatBox box = entry[a].box;
         for (std::uint32_t b = a + 1; b < same_end; ++b)
           if (overlap(box, entry[b].box)) emit(entry[a].index, entry[b].index);
         for (std::uint32_t b = below_s; b < below_e; ++b)
@@ -252,9 +252,9 @@ void UniformGrid::pairs_of_large() {
     return large_box_[a].min_x < large_box_[b].min_x || (large_box_[a].min_x == large_box_[b].min_x && a < b);
   });
   for (std::size_t a = 0; a < large_order_.size(); ++a) {
-    const Aabb& box = large_box_[large_order_[a]];
+    const FloatBox& box = large_box_[large_order_[a]];
     for (std::size_t b = a + 1; b < large_order_.size(); ++b) {
-      const Aabb& other = large_box_[large_order_[b]];
+      const FloatBox& other = large_box_[large_order_[b]];
       if (other.min_x > box.max_x) break;
       if (overlap(box, other)) emit(large_[large_order_[a]], large_[large_order_[b]]);
     }
@@ -283,7 +283,7 @@ void UniformGrid::sort_pairs(std::size_t n) {
   }
 }
 
-void UniformGrid::move(std::uint32_t i, const Aabb& box) {
+void UniformGrid::move(std::uint32_t i, const FloatBox& box) {
   if (large_slot_[i] >= 0) {
     large_box_[static_cast<std::size_t>(large_slot_[i])] = box;
     return;

@@ -29,13 +29,13 @@ namespace physics {
 // An axis-aligned box in float, rounded outwards from the double box it was
 // made from, so it always contains it: a pair of bodies whose Aabbs do not
 // overlap cannot overlap either. Float halves the memory the grid walks.
-struct Aabb {
+struct FloatBox {
   float min_x = 0, min_y = 0, max_x = 0, max_y = 0;
 
   // The box of a body at p of size r, grown by `margin` px on every side.
-  static Aabb around(Vector p, Rect r, double margin);
+  static FloatBox around(Vector p, Rect r, double margin);
   // The smallest float box containing [x0, x1] x [y0, y1].
-  static Aabb outward(double x0, double y0, double x1, double y1);
+  static FloatBox outward(double x0, double y0, double x1, double y1);
   // Whether the body at p of size r is still inside this box, computed as
   // the body's own corners p and p + r are in double: exactly the values that
   // Collision::resolve compares.
@@ -51,7 +51,7 @@ struct Aabb {
   // the strict test of Rect::has_origin, so no contact is ever missed).
   // `&`, not `&&`: most tested pairs fail on some axis, unpredictably, and
   // four compares cost less than a mispredicted branch.
-  friend bool overlap(const Aabb& a, const Aabb& b) {
+  friend bool overlap(const FloatBox& a, const FloatBox& b) {
     return (a.min_x <= b.max_x) & (b.min_x <= a.max_x) & (a.min_y <= b.max_y) & (b.min_y <= a.max_y);
   }
 };
@@ -77,22 +77,22 @@ class UniformGrid {
   // (two infinite masses never collide, so they never enter the list).
   // Boxes with a NaN bound (a body at NaN) overlap nothing.
   // O(n + pairs); the result is in pairs(), sorted.
-  void build(std::span<const Aabb> boxes, std::span<const std::uint8_t> fixed);
+  void build(std::span<const FloatBox> boxes, std::span<const std::uint8_t> fixed);
   const std::vector<PairKey>& pairs() const { return pairs_; }
   // The cells of build() without its pairs (pairs() is left empty), for
   // queries that only ask which boxes lie somewhere (engine/query.hpp).
-  void index(std::span<const Aabb> boxes);
+  void index(std::span<const FloatBox> boxes);
 
   // Body i now has the box `box` for later queries. The pairs of build() are
   // left as they are; the box i had when the grid was built stays in its cell
   // (queries may report it: callers must accept extra candidates).
-  void move(std::uint32_t i, const Aabb& box);
+  void move(std::uint32_t i, const FloatBox& box);
 
   // Calls f(j) for every body j whose current box may overlap `box`; every j
   // whose box does overlap is reported at least once. j may be reported more
   // than once, and the body whose box is queried may be reported itself.
   template <class F>
-  void query(const Aabb& box, F&& f) const {
+  void query(const FloatBox& box, F&& f) const {
     query_grid(box, f);
     for (std::size_t l = 0; l < large_.size(); ++l)
       if (overlap(large_box_[l], box)) f(large_[l]);
@@ -105,7 +105,7 @@ class UniformGrid {
 
  private:
   struct Entry {
-    Aabb box;
+    FloatBox box;
     std::uint32_t index;
   };
   struct Moved {
@@ -115,13 +115,13 @@ class UniformGrid {
 
   // query() without the large bodies.
   template <class F>
-  void query_grid(const Aabb& box, F&& f) const;
+  void query_grid(const FloatBox& box, F&& f) const;
   int cell_x(double x) const;
   int cell_y(double y) const;
   // build()'s stages.
-  std::size_t classify(std::span<const Aabb> boxes, double& max_extent);
-  void size_grid(std::span<const Aabb> boxes, std::size_t small, double max_extent);
-  void fill_cells(std::span<const Aabb> boxes, std::size_t small);
+  std::size_t classify(std::span<const FloatBox> boxes, double& max_extent);
+  void size_grid(std::span<const FloatBox> boxes, std::size_t small, double max_extent);
+  void fill_cells(std::span<const FloatBox> boxes, std::size_t small);
   void pairs_in_grid();
   void pairs_of_large();
   void emit(std::uint32_t a, std::uint32_t b);
@@ -137,7 +137,7 @@ class UniformGrid {
   std::vector<std::uint32_t> cell_of_;     // scratch: cell of each small body
   std::vector<std::uint8_t> is_large_;     // per body
   std::vector<std::uint32_t> large_;       // indices of the large bodies
-  std::vector<Aabb> large_box_;            // their current boxes
+  std::vector<FloatBox> large_box_;            // their current boxes
   std::vector<std::int32_t> large_slot_;   // per body: position in large_, or -1
   std::vector<std::uint32_t> large_order_; // scratch: large_ sorted by min_x
   std::vector<std::uint8_t> fixed_;        // per body, copied from build()
@@ -154,7 +154,7 @@ class UniformGrid {
 };
 
 template <class F>
-void UniformGrid::query_grid(const Aabb& box, F&& f) const {
+void UniformGrid::query_grid(const FloatBox& box, F&& f) const {
   if (!box.valid()) return;
   // A stored box overlapping `box` has its lower corner at most
   // max_small_extent_ before box.min: scan from there. The small extra

@@ -49,7 +49,7 @@ void BroadPhase::course_build(const Components& k) {
   fixed_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const EntityId e = course_entities_[i];
-    boxes_[i] = Aabb::around(k.position[e], k.box[e], course_margin);
+    boxes_[i] = FloatBox::around(k.position[e], k.box[e], course_margin);
     fixed_[i] = !std::isfinite(k.mass[e]);  // the same test as "two walls never collide"
   }
   grid_.build(boxes_, fixed_);
@@ -63,7 +63,7 @@ bool BroadPhase::refresh(const Components& k, std::uint32_t i, PairKey current) 
   // hold all of its contacts. Give it a new box and queue the pairs it may
   // now form that the pass has not reached yet (the earlier ones are behind
   // us in the sheet's loop too).
-  const Aabb box = Aabb::around(k.position[e], k.box[e], course_margin);
+  const FloatBox box = FloatBox::around(k.position[e], k.box[e], course_margin);
   boxes_[i] = box;
   grid_.move(i, box);
   grid_.query(box, [&](std::uint32_t j) {
@@ -184,7 +184,7 @@ void BroadPhase::fat_rebuild(const Components& k, std::span<const EntityId> enti
                c.x1 + fat_margin + std::max(d.x, 0.0), c.y1 + fat_margin + std::max(d.y, 0.0)};
     // Rounded outwards to float: the grid's boxes contain the exact ones, so
     // it finds a superset of the pairs, which the exact test trims.
-    boxes_[i] = Aabb::outward(fat_[i].x0, fat_[i].y0, fat_[i].x1, fat_[i].y1);
+    boxes_[i] = FloatBox::outward(fat_[i].x0, fat_[i].y0, fat_[i].x1, fat_[i].y1);
     fixed_[i] = !std::isfinite(k.mass[entities[i]]);
   }
   grid_.build(boxes_, fixed_);

@@ -111,7 +111,7 @@ class BroadPhase {
   UniformGrid grid_;
   std::vector<EntityId> entities_;   // the bodies of find()'s fat grid, in registration order
   std::vector<std::uint8_t> fixed_;  // infinite mass, by registration rank
-  std::vector<Aabb> boxes_;          // the grid's boxes, by registration rank
+  std::vector<FloatBox> boxes_;          // the grid's boxes, by registration rank
   bool fat_built_ = false;           // the grid holds find()'s fat boxes
 
   // Course pass state.

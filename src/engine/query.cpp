@@ -95,13 +95,13 @@ QueryIndex::QueryIndex(const World& w) : ids_(query_bodies(w)) {
   const std::size_t n = ids_.size();
   position_.reserve(n);
   size_.reserve(n);
-  std::vector<Aabb> boxes;
+  std::vector<FloatBox> boxes;
   boxes.reserve(n);
   bool any = false;
   for (const EntityId e : ids_) {
     position_.push_back(k.position[e]);
     size_.push_back(k.box[e]);
-    const Aabb b = boxes.emplace_back(Aabb::around(k.position[e], k.box[e], 0.0));
+    const FloatBox b = boxes.emplace_back(FloatBox::around(k.position[e], k.box[e], 0.0));
     if (!b.valid()) continue;  // a body at NaN, which nothing finds
     const Bounds f{b.min_x, b.min_y, b.max_x, b.max_y};
     bounds_ = any ? Bounds{std::min(bounds_.x0, f.x0), std::min(bounds_.y0, f.y0), std::max(bounds_.x1, f.x1),
@@ -158,7 +158,7 @@ std::optional<RayHit> QueryIndex::walk_grid(Vector origin, Vector travel) const 
     const double fa = f0 + (f1 - f0) * c / n;
     const double fb = c + 1 == n ? f1 : f0 + (f1 - f0) * (c + 1) / n;
     const Vector pa = origin + fa * travel, pb = origin + fb * travel;
-    grid_.query(Aabb::outward(std::min(pa.x, pb.x) - slack, std::min(pa.y, pb.y) - slack,
+    grid_.query(FloatBox::outward(std::min(pa.x, pb.x) - slack, std::min(pa.y, pb.y) - slack,
                               std::max(pa.x, pb.x) + slack, std::max(pa.y, pb.y) + slack),
                 test);
     if (best && best->fraction < fb) break;
@@ -172,7 +172,7 @@ std::vector<EntityId> QueryIndex::query_box(Vector lo, Vector hi) const {
   if (lo.x > hi.x || lo.y > hi.y) throw std::invalid_argument("query: query_box's lo must not exceed hi on an axis");
   std::vector<EntityId> out;
   // The grid's closed float boxes hold the open ones: it reports a superset.
-  grid_.query(Aabb::outward(lo.x, lo.y, hi.x, hi.y), [&](std::uint32_t i) {
+  grid_.query(FloatBox::outward(lo.x, lo.y, hi.x, hi.y), [&](std::uint32_t i) {
     if (overlaps_region(position_[i], size_[i], lo, hi)) out.push_back(ids_[i]);
   });
   std::sort(out.begin(), out.end());

@@ -413,9 +413,9 @@ std::optional<std::pair<std::size_t, std::size_t>> first_overlap(const std::vect
   // The engine's broad phase (its grid) lists the candidate pairs, sorted by
   // the first then the second body; the sheet's strict test (mdiff,
   // has_origin: touching boxes do not overlap) keeps the real ones.
-  std::vector<Aabb> boxes;
+  std::vector<FloatBox> boxes;
   boxes.reserve(bodies.size());
-  for (const Body& b : bodies) boxes.push_back(Aabb::outward(b.pos.x, b.pos.y, b.pos.x + b.width, b.pos.y + b.height));
+  for (const Body& b : bodies) boxes.push_back(FloatBox::outward(b.pos.x, b.pos.y, b.pos.x + b.width, b.pos.y + b.height));
   const std::vector<std::uint8_t> fixed(bodies.size(), 0);
   UniformGrid grid;
   grid.build(boxes, fixed);

@@ -125,7 +125,7 @@ def closure():
         files.append(f)
         text = open(os.path.join(ROOT, f), encoding="utf-8").read()
         for inc in INCLUDE.findall(text):
-            for base in (os.path.dirname(f), "src"):
+            for base in (os.path.dirname(f), "src", "include"):
                 cand = os.path.normpath(os.path.join(base, inc))
                 if os.path.isfile(os.path.join(ROOT, cand)):
                     todo.append(cand)

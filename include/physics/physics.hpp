@@ -1,0 +1,225 @@
+// The engine's public API: worlds of axis-aligned boxes, stepped at a fixed dt.
+// Guide: docs/api.md. Units: px, ms, px/ms, px/ms^2; y grows downwards; a
+// body's position is its box's top-left corner; sizes are whole pixels.
+//
+// Worlds and bodies are named by ids ({index, generation}, as Box2D v3's):
+// destroying a world or a body makes its ids stale. Every function given a
+// stale, null or foreign id, or a bad value (NaN, a size of 0, a negative
+// mass...), throws physics::Error naming the problem; nothing is changed
+// then. `is_valid` tells without throwing. Not thread-safe: use one thread
+// per set of worlds, or lock around every call.
+//
+// Links against libphysics.a (pkg-config physics, or CMake find_package
+// (physics) with target physics::physics). Includes only standard headers.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "physics/math.hpp"
+
+namespace physics {
+
+// ---- errors and ids ----
+
+// Thrown on a stale or foreign id and on a bad value; what() is one line.
+class Error : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+// A world: index1 is its slot + 1 (0 is the null id), generation counts the
+// slot's reuses so that a destroyed world's id never names a later one.
+struct WorldId {
+  std::uint16_t index1 = 0;
+  std::uint16_t generation = 0;
+  friend bool operator==(WorldId, WorldId) = default;
+};
+
+// A body of one world: its slot in the world + 1, and its generation.
+struct BodyId {
+  std::uint32_t index1 = 0;
+  WorldId world;
+  std::uint16_t generation = 0;
+  friend bool operator==(BodyId, BodyId) = default;
+};
+
+inline constexpr WorldId null_world{};
+inline constexpr BodyId null_body{};
+
+// ---- definitions ----
+
+// How contacts are resolved: the course's one pass over the pairs (the
+// sheet's), the iterated solver for stacks and resting contact, or auto
+// (what each substep needs, swept collision included). docs/numerics.md.
+enum class SolverKind : std::uint8_t { course, stable, automatic };
+// Motion in a substep: the course's symplectic Euler, or exact constant-force motion.
+enum class IntegratorKind : std::uint8_t { course, exact };
+
+struct WorldDef {
+  double dt = 1000.0 / 60.0;    // ms a step, in [1e-6, 1e6]
+  int substeps = 1;             // each step runs forces, move, collision this many times, in [1, 1000]
+  Vec2 gravity{};               // px/ms^2, applied to finite masses
+  SolverKind solver = SolverKind::course;
+  int iterations = 8;           // velocity iterations of the stable solver, in [1, 1000]
+  bool ccd = false;             // swept collision: no tunnelling through thin bodies
+  IntegratorKind integrator = IntegratorKind::course;
+  bool forces = true;           // the systems a world runs: without forces, no gravity nor force;
+  bool move = true;             // without move, nothing moves;
+  bool collision = true;        // without collision, bodies pass through each other
+  bool contact_events = false;  // record begin/end touch events (contact_events())
+  // Bodies whose centre leaves these bounds count as escaped (health()); no bounds if empty.
+  std::optional<Aabb> bounds;
+};
+WorldDef default_world_def();  // the course's: dt 1000/60 ms, one substep, no gravity, the course solver
+
+// The face of a one-way body that stops others (none: every face stops them).
+enum class OneWay : std::uint8_t { none, up, down, left, right };
+
+// Which pairs meet: a and b interact only if (a.category & b.mask) and (b.category & a.mask).
+struct Filter {
+  std::uint32_t category = 1;
+  std::uint32_t mask = 0xFFFFFFFFu;
+  friend bool operator==(Filter, Filter) = default;
+};
+
+inline constexpr double fixed_mass = std::numeric_limits<double>::infinity();  // a body nothing moves
+
+struct BodyDef {
+  Vec2 position{};            // px, top-left corner
+  Vec2 size{10.0, 10.0};      // px, whole numbers in [1, 1048576]
+  double mass = 1.0;          // > 0, or fixed_mass
+  Vec2 velocity{};            // px/ms
+  Vec2 force{};               // applied on the first step only, as a scene's "force"
+  double restitution = 1.0;   // in [0, 1]; a pair uses the smaller
+  double friction = 0.0;      // in [0, 1000]; a pair uses sqrt(mu_a mu_b)
+  Filter filter{};
+  bool sensor = false;        // reports contact events, is never pushed nor pushes
+  OneWay one_way = OneWay::none;
+  Color color{255, 0, 0, 255};  // for drawing only
+  std::uint64_t user_data = 0;  // yours: the engine only stores it
+};
+BodyDef default_body_def();  // a 10x10 red body of mass 1 at (0, 0), at rest
+
+// ---- worlds ----
+
+WorldId create_world(const WorldDef& def = default_world_def());  // throws Error on a bad def
+void destroy_world(WorldId world);                                // its bodies' ids go stale too
+bool is_valid(WorldId world);                                     // false for null, stale, never made
+// One step of def.dt ms: forces, move, collision for each substep, in the course's order.
+void step(WorldId world);
+std::int64_t frame(WorldId world);  // steps taken since creation (or since the restored state's)
+std::size_t body_count(WorldId world);
+std::vector<BodyId> bodies(WorldId world);  // the live bodies, in creation order
+WorldDef world_def(WorldId world);          // the def as the world runs it
+void set_gravity(WorldId world, Vec2 gravity);
+// Diagnostics over finite masses: sum of m v^2 / 2 and of m v.
+double kinetic_energy(WorldId world);
+Vec2 momentum(WorldId world);
+
+// ---- bodies ----
+
+BodyId create_body(WorldId world, const BodyDef& def = default_body_def());  // throws Error on a bad def
+void destroy_body(BodyId body);  // it no longer moves, collides nor is listed; its id goes stale
+bool is_valid(BodyId body);
+WorldId world_of(BodyId body);
+
+Vec2 position(BodyId body);
+void set_position(BodyId body, Vec2 position);
+Vec2 size(BodyId body);
+void set_size(BodyId body, Vec2 size);
+Aabb bounds(BodyId body);  // position to position + size
+Vec2 velocity(BodyId body);
+void set_velocity(BodyId body, Vec2 velocity);
+Vec2 force(BodyId body);                   // the pending sum of forces for the next step
+void apply_force(BodyId body, Vec2 force);  // added to it; the next step turns it into velocity, then clears it
+void apply_impulse(BodyId body, Vec2 impulse);  // velocity += impulse / mass now; nothing for fixed bodies
+double mass(BodyId body);
+void set_mass(BodyId body, double mass);  // > 0 or fixed_mass
+double restitution(BodyId body);
+void set_restitution(BodyId body, double restitution);
+double friction(BodyId body);
+void set_friction(BodyId body, double friction);
+Filter filter(BodyId body);
+void set_filter(BodyId body, Filter filter);
+bool is_sensor(BodyId body);
+void set_sensor(BodyId body, bool sensor);
+OneWay one_way(BodyId body);
+void set_one_way(BodyId body, OneWay face);
+Color color(BodyId body);
+void set_color(BodyId body, Color color);
+std::uint64_t user_data(BodyId body);
+void set_user_data(BodyId body, std::uint64_t data);
+
+// ---- queries (interiors are open: touching is not overlapping) ----
+
+struct RayResult {
+  BodyId body;     // the first body the ray enters
+  Vec2 point;      // where, on its boundary
+  Vec2 normal;     // unit outward normal of the face entered
+  double fraction; // in [0, 1] of max_distance
+};
+// From origin along direction (need not be unit) for max_distance px; bodies it starts in are ignored.
+std::optional<RayResult> ray_cast(WorldId world, Vec2 origin, Vec2 direction, double max_distance);
+std::vector<BodyId> query_box(WorldId world, Aabb box);  // bodies whose interior meets box
+std::vector<BodyId> query_point(WorldId world, Vec2 point);  // bodies whose interior holds point
+
+// ---- contact events (WorldDef::contact_events) ----
+
+struct TouchEvent {
+  bool begin;          // true: started touching in the step; false: stopped
+  BodyId a, b;         // a created before b
+  Vec2 normal;         // unit, pushes a away from b
+  double depth;        // px, the overlap at the end of the step
+  double normal_impulse, tangent_impulse;  // exchanged during the step
+  std::int64_t frame;  // the step after which it happened
+};
+std::vector<TouchEvent> contact_events(WorldId world);  // the last step's, in pair order
+
+// ---- state ----
+
+// A copy of a world's whole state (bodies, frame, solver warm start): restoring
+// it and stepping gives, bit for bit, what stepping from the copy's moment gave.
+class WorldState {
+ public:
+  WorldState();
+  ~WorldState();
+  WorldState(const WorldState&);
+  WorldState& operator=(const WorldState&);
+  WorldState(WorldState&&) noexcept;
+  WorldState& operator=(WorldState&&) noexcept;
+  struct Data;  // the engine's; opaque here
+
+ private:
+  std::unique_ptr<Data> data_;
+  friend WorldState save_state(WorldId world);
+  friend void restore_state(WorldId world, const WorldState& state);
+};
+WorldState save_state(WorldId world);
+// The world becomes the saved one: its bodies, frame and def; ids saved with it are valid again.
+void restore_state(WorldId world, const WorldState& state);  // throws Error if empty
+
+// ---- profile and health ----
+
+struct StageTime {
+  std::string_view stage;  // "forces", "move", "collision", "pairs", "ccd", ... (docs/api.md)
+  double ms_per_step;
+};
+std::vector<StageTime> profile(WorldId world);  // wall time per stage, averaged over the steps taken
+
+struct HealthReport {
+  bool finite = true;                 // false once a position or velocity is NaN or infinite
+  std::optional<BodyId> non_finite;   // the first such body; do not step the world again
+  std::int64_t escaped = 0;           // bodies whose centre left WorldDef::bounds (each once)
+  std::optional<BodyId> first_escape;
+  double deepest_overlap = 0.0;       // px, a persistent deep overlap seen (course solver), else 0
+};
+HealthReport health(WorldId world);
+
+}  // namespace physics

@@ -1,0 +1,58 @@
+#include "api/convert.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "engine/limits.hpp"
+
+namespace physics::api {
+
+namespace {
+std::string show(double v) {
+  std::ostringstream o;
+  o << v;
+  return o.str();
+}
+}  // namespace
+
+void require(bool ok, const std::string& what, const std::string& rule, double got) {
+  if (!ok) throw Error(what + " must be " + rule + " (got " + show(got) + ")");
+}
+
+void require(bool ok, const std::string& what, const std::string& rule, Vec2 got) {
+  if (!ok) throw Error(what + " must be " + rule + " (got (" + show(got.x) + ", " + show(got.y) + "))");
+}
+
+void check_finite(Vec2 v, const std::string& what) {
+  require(std::isfinite(v.x) && std::isfinite(v.y), what, "finite", v);
+}
+
+void check_motion(Vec2 v, const std::string& what) {
+  require(std::abs(v.x) <= max_motion && std::abs(v.y) <= max_motion, what, "finite, within 1e6 per axis", v);
+}
+
+void check_size(Vec2 s) {
+  const auto whole = [](double d) { return d >= 1.0 && d <= max_block_size && d == std::floor(d); };
+  require(whole(s.x) && whole(s.y), "a body's size", "whole pixels in [1, 1048576]", s);
+}
+
+void check_mass(double m) { require(m > 0.0, "a body's mass", "> 0 or fixed_mass (infinity)", m); }
+
+void check_restitution(double e) { require(e >= 0.0 && e <= 1.0, "a body's restitution", "in [0, 1]", e); }
+
+void check_friction(double mu) {
+  require(mu >= 0.0 && mu <= max_friction, "a body's friction", "in [0, 1000]", mu);
+}
+
+Rect to_rect(Vec2 s) { return {static_cast<int>(s.x), static_cast<int>(s.y)}; }
+
+ContactRules rules_of(Filter f, bool sensor, OneWay one_way) {
+  ContactRules r;
+  r.category = f.category;
+  r.mask = f.mask;
+  r.sensor = sensor;
+  r.one_way = static_cast<Face>(one_way);  // same order: none, up, down, left, right
+  return r;
+}
+
+}  // namespace physics::api

@@ -1,0 +1,30 @@
+// The public API's value types to the engine's and back, and its checks of
+// values: each throws physics::Error with one line naming the bad value.
+#pragma once
+
+#include <string>
+
+#include "course/component_defs.hpp"
+#include "physics/physics.hpp"
+
+namespace physics::api {
+
+inline Vector to_engine(Vec2 v) { return {v.x, v.y}; }
+inline Vec2 to_public(Vector v) { return {v.x, v.y}; }
+
+// Throws Error(what + " must be " + rule + " (got ...)") unless ok.
+void require(bool ok, const std::string& what, const std::string& rule, double got);
+void require(bool ok, const std::string& what, const std::string& rule, Vec2 got);
+
+// Each value as a body's: throws Error naming `what` if out of range.
+void check_finite(Vec2 v, const std::string& what);
+void check_motion(Vec2 v, const std::string& what);  // finite, within 1e6 per axis
+void check_size(Vec2 size);
+void check_mass(double mass);
+void check_restitution(double e);
+void check_friction(double mu);
+Rect to_rect(Vec2 size);  // after check_size
+
+ContactRules rules_of(Filter f, bool sensor, OneWay one_way);
+
+}  // namespace physics::api

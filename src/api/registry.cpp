@@ -1,0 +1,78 @@
+#include "api/registry.hpp"
+
+#include <limits>
+
+namespace physics::api {
+
+namespace {
+std::vector<Slot>& slots() {
+  static std::vector<Slot> s;
+  return s;
+}
+
+Slot* find(WorldId id) {
+  auto& s = slots();
+  if (id.index1 == 0 || id.index1 > s.size()) return nullptr;
+  Slot& slot = s[id.index1 - 1];
+  return slot.live && slot.generation == id.generation ? &slot : nullptr;
+}
+}  // namespace
+
+std::string describe(WorldId id) {
+  return "world id (index " + std::to_string(id.index1) + ", generation " + std::to_string(id.generation) + ")";
+}
+
+std::string describe(BodyId id) {
+  return "body id (index " + std::to_string(id.index1) + ", generation " + std::to_string(id.generation) + ") of " +
+         describe(id.world);
+}
+
+bool live(WorldId id) { return find(id) != nullptr; }
+
+WorldCopy& world(WorldId id) {
+  if (id.index1 == 0) throw Error("null world id");
+  Slot* s = find(id);
+  if (!s) throw Error(describe(id) + " is stale or was never made: no such world");
+  return *s->live;
+}
+
+bool live(BodyId id) {
+  Slot* s = find(id.world);
+  if (!s || id.index1 == 0 || id.index1 > s->live->generation.size()) return false;
+  const EntityId e = id.index1 - 1;
+  return s->live->generation[e] == id.generation && s->live->world.alive(e);
+}
+
+Named body(BodyId id) {
+  if (id.index1 == 0) throw Error("null body id");
+  WorldCopy& w = world(id.world);
+  if (!live(id)) throw Error(describe(id) + " is stale (the body was destroyed) or was never made");
+  return {w, id.index1 - 1};
+}
+
+BodyId id_of(WorldId world, const WorldCopy& w, EntityId e) {
+  return {e + 1, world, w.generation[e]};
+}
+
+WorldId add(std::unique_ptr<WorldCopy> w) {
+  auto& s = slots();
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (!s[i].live) {
+      s[i].live = std::move(w);
+      return {static_cast<std::uint16_t>(i + 1), s[i].generation};
+    }
+  }
+  if (s.size() >= std::numeric_limits<std::uint16_t>::max()) throw Error("too many worlds (65535 live at most)");
+  s.push_back({std::move(w), 1});
+  return {static_cast<std::uint16_t>(s.size()), 1};
+}
+
+void remove(WorldId id) {
+  world(id);  // throws on a bad id
+  Slot& slot = slots()[id.index1 - 1];
+  slot.live.reset();
+  // Generation 0 is never handed out, so a default-constructed id never names a world.
+  if (++slot.generation == 0) slot.generation = 1;
+}
+
+}  // namespace physics::api
