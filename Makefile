@@ -53,7 +53,7 @@ endif
 
 # Debian packages each target needs; `deps` installs the missing ones.
 PACKAGES := g++ make pkg-config libsdl2-dev libsdl2-ttf-dev libboost-test-dev fonts-dejavu-core \
-            nlohmann-json3-dev libboost-program-options-dev libstb-dev python3
+            nlohmann-json3-dev libboost-program-options-dev libstb-dev python3 cmake
 SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 # Four libraries, one per layer, each linked only by what needs it:
@@ -94,7 +94,7 @@ TEST_OBJ += $(REF_OBJ) $(NUM_OBJ)
 SDL_CFLAGS = $(shell pkg-config --cflags sdl2 SDL2_ttf)
 SDL_LIBS   = $(shell pkg-config --libs sdl2 SDL2_ttf)
 
-.PHONY: all run test deps clean check-lib layers determinism memcheck soak fuzz report stability bench
+.PHONY: all run test deps clean check-lib layers links determinism memcheck soak fuzz report stability bench
 all: $(BUILD)/game $(BUILD)/tests
 
 deps:
@@ -114,13 +114,17 @@ run: deps
 # build, so their -O0 builds and runs share the jobs with it instead of
 # waiting for it (on 2 cores, ~30 s less from a fresh clone).
 test: deps
-	@$(MAKE) --no-print-directory $(if $(TEST_ARGS),,exercise-trees) layers $(BUILD)/tests $(BUILD)/game check-lib \
-	  $(if $(TEST_ARGS),,exercise-check)
+	@$(MAKE) --no-print-directory $(if $(TEST_ARGS),,exercise-trees) layers links $(BUILD)/tests $(BUILD)/game check-lib \
+	  examples install-check $(if $(TEST_ARGS),,exercise-check)
 	BOOST_TEST_COLOR_OUTPUT=no ./$(BUILD)/tests $(TEST_ARGS) 2>&1
 
 # Includes under src/ go one way (utils < components < engine/systems < entities < game < app), no cycle.
 layers:
 	@python3 tools/check_layers.py
+
+# Every relative link and quoted repository path in README.md and docs/ exists.
+links:
+	@python3 tools/check_links.py
 
 # The library a game embeds holds the course and the engine only: no symbol
 # (defined or used) of SDL, JSON (nlohmann), PNG (stb), scenes, games or the app.
@@ -311,6 +315,51 @@ $(BUILD)/obj/bench/peers/engine_chipmunk_release.o: bench/engine_chipmunk.cpp $(
 
 $(BUILD)/bench-peers: $(PEERS_OBJ) $(LIBS) $(BOX2D3_LIB) $(CHIPMUNK_LIB)
 	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS) -lpthread -lm
+
+# ---- the library, installed (docs/api.md) ----
+# make install PREFIX=DIR: the public headers, libphysics.a, a pkg-config file
+# (DIR/lib/pkgconfig/physics.pc) and a CMake package (DIR/lib/cmake/physics).
+VERSION := 1.0.0
+PREFIX  ?= /usr/local
+.PHONY: install install-check examples
+install: $(BUILD)/libphysics.a
+	@[ -n "$(PREFIX)" ] || { echo "install: PREFIX is empty"; exit 2; }
+	install -d $(PREFIX)/include/physics $(PREFIX)/lib/pkgconfig $(PREFIX)/lib/cmake/physics
+	install -m 644 include/physics/*.hpp $(PREFIX)/include/physics/
+	install -m 644 $(BUILD)/libphysics.a $(PREFIX)/lib/
+	sed -e 's|@PREFIX@|$(abspath $(PREFIX))|' -e 's|@VERSION@|$(VERSION)|' tools/install/physics.pc.in \
+	  > $(PREFIX)/lib/pkgconfig/physics.pc
+	install -m 644 tools/install/physicsConfig.cmake $(PREFIX)/lib/cmake/physics/
+	sed -e 's|@VERSION@|$(VERSION)|' -e 's|@MAJOR@|$(firstword $(subst ., ,$(VERSION)))|' \
+	  tools/install/physicsConfigVersion.cmake.in > $(PREFIX)/lib/cmake/physics/physicsConfigVersion.cmake
+
+# An installed copy in a scratch prefix, and examples/hello.cpp built out of
+# the tree against it both ways (pkg-config, then CMake's find_package), run,
+# and its answer checked: the box rests on the floor's top (y 520).
+CHECK_PREFIX := $(abspath $(BUILD))/install-check
+install-check: $(BUILD)/libphysics.a
+	@rm -rf $(CHECK_PREFIX) && $(MAKE) --no-print-directory install PREFIX=$(CHECK_PREFIX)/prefix > /dev/null
+	@mkdir -p $(CHECK_PREFIX)/pc && cp examples/hello.cpp $(CHECK_PREFIX)/pc/
+	cd $(CHECK_PREFIX)/pc && $(CXX) -std=c++20 -Wall -Wextra -Werror hello.cpp -o hello \
+	  $$(PKG_CONFIG_PATH=$(CHECK_PREFIX)/prefix/lib/pkgconfig pkg-config --cflags --libs physics)
+	cmake -S examples -B $(CHECK_PREFIX)/cmake -DCMAKE_PREFIX_PATH=$(CHECK_PREFIX)/prefix > /dev/null
+	+cmake --build $(CHECK_PREFIX)/cmake > /dev/null
+	@for way in pc cmake; do out=$$($(CHECK_PREFIX)/$$way/hello); echo "install-check ($$way): $$out"; \
+	  case "$$out" in "the box rests at (380.0, 520.0)") ;; *) echo "install-check: unexpected answer"; exit 1;; esac; done
+	@out=$$($(CHECK_PREFIX)/cmake/crates --headless 600) && echo "install-check (cmake, SDL): $$out"
+
+# The examples, built in the tree from the public headers alone (-Iinclude,
+# no -Isrc: they can use nothing else), and their headless runs.
+EXAMPLE_FLAGS := -std=c++20 $(OPT) -Wall -Wextra -Werror -Iinclude
+$(BUILD)/examples/hello: examples/hello.cpp include/physics/physics.hpp include/physics/math.hpp $(BUILD)/libphysics.a
+	@mkdir -p $(@D)
+	$(CXX) $(EXAMPLE_FLAGS) $< -o $@ $(BUILD)/libphysics.a
+$(BUILD)/examples/crates: examples/crates.cpp include/physics/physics.hpp include/physics/math.hpp $(BUILD)/libphysics.a
+	@mkdir -p $(@D)
+	$(CXX) $(EXAMPLE_FLAGS) $(SDL_CFLAGS) $< -o $@ $(BUILD)/libphysics.a $(SDL_LIBS)
+examples: $(BUILD)/examples/hello $(BUILD)/examples/crates
+	./$(BUILD)/examples/hello
+	./$(BUILD)/examples/crates --headless 600
 
 clean:
 	rm -rf build

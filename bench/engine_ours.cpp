@@ -1,12 +1,13 @@
-// Our engine behind the bench's neutral interface. The scene is in metres,
-// y up, centres; the engine works in pixels, y down, top-left corners (the
-// sheet's SDL conventions), with integer box sizes: 1 m = px_per_m px.
+// Our engine behind the bench's neutral interface, through the public API
+// (include/physics/physics.hpp) as a game would use it. The scene is in
+// metres, y up, centres; the engine works in pixels, y down, top-left
+// corners (the sheet's SDL conventions), with integer box sizes: 1 m =
+// px_per_m px.
 #include <cmath>
 #include <memory>
 
 #include "bench.hpp"
-#include "course/entities/block.hpp"
-#include "course/game.hpp"
+#include "physics/physics.hpp"
 
 namespace bench {
 
@@ -16,57 +17,57 @@ constexpr double px_per_m = 10.0;
 
 class Ours final : public Engine {
  public:
-  Ours(const Scene& s, bool course) : height_(s.height), world_(make_world(s, course)) {
-    physics::World& w = *world_;
-    w.components.reserve(s.bodies.size());
+  Ours(const Scene& s, bool course) : height_(s.height), world_(physics::create_world(def(s, course))) {
     for (const Body& b : s.bodies) {
-      const auto e = physics::Block::make(
-          w, (b.cx - b.hx) * px_per_m, (s.height - (b.cy + b.hy)) * px_per_m, static_cast<int>(2 * b.hx * px_per_m),
-          static_cast<int>(2 * b.hy * px_per_m), physics::Color{200, 200, 200, 255},
-          b.fixed ? physics::infinity : 1.0, s.restitution);
-      w.components.velocity[e.id] = {b.vx * px_per_m / 1000.0, -b.vy * px_per_m / 1000.0};
-      w.components.friction[e.id] = s.friction;
-      ids_.push_back(e.id);
+      physics::BodyDef d = physics::default_body_def();
+      d.position = {(b.cx - b.hx) * px_per_m, (s.height - (b.cy + b.hy)) * px_per_m};
+      d.size = {std::trunc(2 * b.hx * px_per_m), std::trunc(2 * b.hy * px_per_m)};
+      d.color = {200, 200, 200, 255};
+      d.mass = b.fixed ? physics::fixed_mass : 1.0;
+      d.restitution = s.restitution;
+      d.velocity = {b.vx * px_per_m / 1000.0, -b.vy * px_per_m / 1000.0};
+      d.friction = s.friction;
+      ids_.push_back(physics::create_body(world_, d));
     }
   }
+  ~Ours() override { physics::destroy_world(world_); }
+  Ours(const Ours&) = delete;
+  Ours& operator=(const Ours&) = delete;
 
-  void step() override { physics::Game::step(*world_); }
+  void step() override { physics::step(world_); }
 
   void read(std::vector<Body>& out) const override {
-    const physics::Components& k = world_->components;
     out.resize(ids_.size());
     for (std::size_t i = 0; i < ids_.size(); ++i) {
-      const physics::EntityId e = ids_[i];
-      const double w = k.box[e].width, h = k.box[e].height;
-      out[i] = Body{(k.position[e].x + w / 2) / px_per_m,
-                    height_ - (k.position[e].y + h / 2) / px_per_m,
-                    w / 2 / px_per_m,
-                    h / 2 / px_per_m,
-                    k.velocity[e].x * 1000.0 / px_per_m,
-                    -k.velocity[e].y * 1000.0 / px_per_m,
-                    !std::isfinite(k.mass[e])};
+      const physics::BodyId id = ids_[i];
+      const physics::Vec2 p = physics::position(id), size = physics::size(id), v = physics::velocity(id);
+      out[i] = Body{(p.x + size.x / 2) / px_per_m,
+                    height_ - (p.y + size.y / 2) / px_per_m,
+                    size.x / 2 / px_per_m,
+                    size.y / 2 / px_per_m,
+                    v.x * 1000.0 / px_per_m,
+                    -v.y * 1000.0 / px_per_m,
+                    !std::isfinite(physics::mass(id))};
     }
   }
 
  private:
-  // A scene declares only the systems it needs: the gas has no force to
-  // apply, so it runs without Forces (and pays nothing for it); nothing
-  // draws. Scenes where bodies come to rest on each other use the stable
-  // solver (the course's single pass cannot hold a pile, see docs/numerics.md).
-  static std::unique_ptr<physics::World> make_world(const Scene& s, bool course) {
-    physics::SystemSet set;
-    set.draw = false;
-    set.forces = s.gravity != 0.0;
-    physics::Params p;
-    p.dt = s.dt * 1000.0;
-    p.gravity = {0.0, s.gravity * px_per_m / 1e6};
-    p.solver = s.resting && !course ? physics::Solver::stable : physics::Solver::course;
-    return std::make_unique<physics::World>(set, p);
+  // A world runs only the systems it needs: the gas has no force to apply,
+  // so it runs without Forces (and pays nothing for it). Scenes where bodies
+  // come to rest on each other use the stable solver (the course's single
+  // pass cannot hold a pile, see docs/numerics.md).
+  static physics::WorldDef def(const Scene& s, bool course) {
+    physics::WorldDef d = physics::default_world_def();
+    d.forces = s.gravity != 0.0;
+    d.dt = s.dt * 1000.0;
+    d.gravity = {0.0, s.gravity * px_per_m / 1e6};
+    d.solver = s.resting && !course ? physics::SolverKind::stable : physics::SolverKind::course;
+    return d;
   }
 
   double height_;
-  std::unique_ptr<physics::World> world_;
-  std::vector<physics::EntityId> ids_;
+  physics::WorldId world_;
+  std::vector<physics::BodyId> ids_;
 };
 
 }  // namespace
