@@ -19,6 +19,7 @@ namespace {
 constexpr int width = 800, height = 600;
 constexpr double run_speed = 0.25, jump_speed = 0.75;  // px/ms
 constexpr int crate_every = 45;                         // frames
+constexpr std::size_t max_crates = 80;
 
 struct Input {
   bool left = false, right = false, jump = false;
@@ -37,7 +38,7 @@ class Game {
   Game& operator=(const Game&) = delete;
 
   void step(const Input& in) {
-    if (++frame_ % crate_every == 0) drop_crate();
+    if (++frame_ % crate_every == 0 && crates() < max_crates) drop_crate();
     physics::Vec2 v = physics::velocity(player_);
     v.x = run_speed * ((in.right ? 1 : 0) - (in.left ? 1 : 0));
     if (in.jump && on_ground()) v.y = -jump_speed;
@@ -55,6 +56,8 @@ class Game {
       const SDL_Rect rect{int(box.lower.x), int(box.lower.y), int(box.size().x), int(box.size().y)};
       SDL_SetRenderDrawColor(r, c.r, c.g, c.b, c.a);
       SDL_RenderFillRect(r, &rect);
+      SDL_SetRenderDrawColor(r, c.r / 2, c.g / 2, c.b / 2, c.a);  // an outline, so that crates stand apart
+      SDL_RenderDrawRect(r, &rect);
     }
     SDL_RenderPresent(r);
   }
