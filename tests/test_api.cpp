@@ -5,6 +5,7 @@
 #include <string>
 
 #include "helpers.hpp"
+#include "api/view.hpp"
 #include "physics/physics.hpp"
 #include "scene/builtin_scenes.hpp"
 #include "scene/scene.hpp"
@@ -283,6 +284,40 @@ BOOST_AUTO_TEST_CASE(health_counts_escapes_and_stops_a_non_finite_world) {
   for (const StageTime& s : profile(w)) named_stages = named_stages || (s.stage == "move" && s.ms_per_step >= 0.0);
   BOOST_TEST(named_stages);
   destroy_world(w);
+}
+
+BOOST_AUTO_TEST_CASE(touching_lists_the_resting_pair_with_its_impulse) {
+  Falling f(SolverKind::stable, true);
+  f.run(300);
+  const auto t = touching(f.world);
+  BOOST_TEST_REQUIRE(t.size() == 1u);
+  BOOST_TEST(t[0].a == f.floor);
+  BOOST_TEST(t[0].b == f.box);
+  BOOST_TEST(t[0].normal.y == 1.0);  // pushes the floor down, away from the box
+  BOOST_TEST(t[0].normal_impulse > 0.0);  // holding the box up against gravity
+}
+
+// A View gives the public API a world its caller owns (the games on the testbed's).
+BOOST_AUTO_TEST_CASE(a_view_names_a_world_made_elsewhere_and_goes_stale_with_its_view) {
+  World scene = make_world(*find_builtin("bounce"), false);
+  WorldId id;
+  BodyId red;
+  {
+    const api::View view(scene);
+    id = view.id();
+    BOOST_TEST(body_count(id) == scene.components.size());
+    red = api::body_id(id, Game::wall_count);  // the red block comes after the four walls
+    BOOST_TEST(mass(red) == 10.0);
+    set_velocity(red, {0.5, 0.0});
+    BOOST_TEST(scene.components.velocity[Game::wall_count].x == 0.5);
+    step(id);
+    BOOST_TEST(scene.frame == 1);
+    BOOST_TEST(world_def(id).dt == scene.params.dt);
+    BOOST_TEST(has(error_of([&] { destroy_world(id); }), "does not own"));
+    BOOST_TEST(&api::internal(id) == &scene);
+  }
+  BOOST_TEST(!is_valid(id));
+  BOOST_TEST(!is_valid(red));
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -182,6 +182,14 @@ struct TouchEvent {
 };
 std::vector<TouchEvent> contact_events(WorldId world);  // the last step's, in pair order
 
+struct Touching {
+  BodyId a, b;         // a created before b
+  Vec2 normal;         // unit, pushes a away from b
+  double depth;        // px, the overlap at the end of the step
+  double normal_impulse, tangent_impulse;  // exchanged during the step (0 for a pair merely resting in range)
+};
+std::vector<Touching> touching(WorldId world);  // the pairs touching after the last step, in pair order
+
 // ---- state ----
 
 // A copy of a world's whole state (bodies, frame, solver warm start): restoring

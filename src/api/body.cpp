@@ -27,13 +27,13 @@ void check(const BodyDef& d) {
 
 // The body's own components, for a getter or a setter.
 struct Own {
-  api::WorldCopy& w;
+  api::Live& w;
   EntityId e;
-  Components& c() { return w.world.components; }
+  Components& c() { return w.world->components; }
 };
 Own own(BodyId id) {
   const api::Named n = api::body(id);
-  return {n.world, n.entity};
+  return {n.live, n.entity};
 }
 
 void set_rules(BodyId id, Filter f, bool sensor, OneWay face) {
@@ -45,9 +45,9 @@ void set_rules(BodyId id, Filter f, bool sensor, OneWay face) {
 BodyDef default_body_def() { return BodyDef{}; }
 
 BodyId create_body(WorldId world, const BodyDef& d) {
-  api::WorldCopy& w = api::world(world);
+  api::Live& w = api::world(world);
   check(d);
-  Components& c = w.world.components;
+  Components& c = w.world->components;
   const Body b{c.create()};
   c.position[b.id] = api::to_engine(d.position);
   c.box[b.id] = api::to_rect(d.size);
@@ -59,21 +59,21 @@ BodyId create_body(WorldId world, const BodyDef& d) {
   c.friction[b.id] = d.friction;
   const ContactRules rules = api::rules_of(d.filter, d.sensor, d.one_way);
   if (!rules.plain()) c.set_rules(b.id, rules);
-  Systems& s = w.world.systems;
+  Systems& s = w.world->systems;
   if (s.move) s.move->register_entity(b);
   if (s.forces) s.forces->register_entity(b);
   if (s.collision) s.collision->register_entity(b);
-  w.generation.resize(c.size(), 0);
-  w.user_data.resize(c.size(), 0);
-  w.generation[b.id] = 1;
-  w.user_data[b.id] = d.user_data;
+  w.table.generation.resize(c.size(), 0);
+  w.table.user_data.resize(c.size(), 0);
+  w.table.generation[b.id] = 1;
+  w.table.user_data[b.id] = d.user_data;
   return api::id_of(world, w, b.id);
 }
 
 void destroy_body(BodyId id) {
   Own o = own(id);
-  o.w.world.destroy(o.e);
-  ++o.w.generation[o.e];  // the id goes stale even if a restored state brings the body back
+  o.w.world->destroy(o.e);
+  ++o.w.table.generation[o.e];  // the id goes stale even if a restored state brings the body back
 }
 
 bool is_valid(BodyId id) { return api::live(id); }
@@ -129,7 +129,7 @@ void set_one_way(BodyId id, OneWay face) { set_rules(id, filter(id), is_sensor(i
 
 Color color(BodyId id) { Own o = own(id); return o.c().color[o.e]; }
 void set_color(BodyId id, Color c) { Own o = own(id); o.c().color[o.e] = c; }
-std::uint64_t user_data(BodyId id) { Own o = own(id); return o.w.user_data[o.e]; }
-void set_user_data(BodyId id, std::uint64_t data) { Own o = own(id); o.w.user_data[o.e] = data; }
+std::uint64_t user_data(BodyId id) { Own o = own(id); return o.w.table.user_data[o.e]; }
+void set_user_data(BodyId id, std::uint64_t data) { Own o = own(id); o.w.table.user_data[o.e] = data; }
 
 }  // namespace physics

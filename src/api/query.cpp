@@ -20,18 +20,18 @@ auto asked(F&& f) {
   }
 }
 
-std::vector<BodyId> ids(WorldId world, const api::WorldCopy& w, const std::vector<EntityId>& found) {
+std::vector<BodyId> ids(WorldId world, const api::Live& w, const std::vector<EntityId>& found) {
   std::vector<BodyId> out;
   for (const EntityId e : found)
-    if (w.world.alive(e)) out.push_back(api::id_of(world, w, e));
+    if (w.world->alive(e)) out.push_back(api::id_of(world, w, e));
   return out;
 }
 }  // namespace
 
 std::optional<RayResult> ray_cast(WorldId world, Vec2 origin, Vec2 direction, double max_distance) {
-  const api::WorldCopy& w = api::world(world);
+  const api::Live& w = api::world(world);
   const auto hit = asked([&] {
-    return physics::ray_cast(w.world, api::to_engine(origin), api::to_engine(direction), max_distance);
+    return physics::ray_cast(*w.world, api::to_engine(origin), api::to_engine(direction), max_distance);
   });
   if (!hit) return std::nullopt;
   return RayResult{api::id_of(world, w, hit->body), api::to_public(hit->point), api::to_public(hit->normal),
@@ -39,13 +39,13 @@ std::optional<RayResult> ray_cast(WorldId world, Vec2 origin, Vec2 direction, do
 }
 
 std::vector<BodyId> query_box(WorldId world, Aabb box) {
-  const api::WorldCopy& w = api::world(world);
-  return ids(world, w, asked([&] { return physics::query_box(w.world, api::to_engine(box.lower), api::to_engine(box.upper)); }));
+  const api::Live& w = api::world(world);
+  return ids(world, w, asked([&] { return physics::query_box(*w.world, api::to_engine(box.lower), api::to_engine(box.upper)); }));
 }
 
 std::vector<BodyId> query_point(WorldId world, Vec2 point) {
-  const api::WorldCopy& w = api::world(world);
-  return ids(world, w, asked([&] { return physics::query_point(w.world, api::to_engine(point)); }));
+  const api::Live& w = api::world(world);
+  return ids(world, w, asked([&] { return physics::query_point(*w.world, api::to_engine(point)); }));
 }
 
 }  // namespace physics

@@ -5,6 +5,11 @@
 namespace physics::api {
 
 namespace {
+struct Slot {
+  std::unique_ptr<Live> live;   // null while the slot is free
+  std::uint16_t generation = 0;  // bumped when the slot is freed
+};
+
 std::vector<Slot>& slots() {
   static std::vector<Slot> s;
   return s;
@@ -27,34 +32,44 @@ std::string describe(BodyId id) {
          describe(id.world);
 }
 
+void Live::sync() {
+  const std::size_t n = world->components.size();
+  if (table.generation.size() < n) {
+    table.generation.resize(n, 1);
+    table.user_data.resize(n, 0);
+  }
+}
+
 bool live(WorldId id) { return find(id) != nullptr; }
 
-WorldCopy& world(WorldId id) {
+Live& world(WorldId id) {
   if (id.index1 == 0) throw Error("null world id");
   Slot* s = find(id);
   if (!s) throw Error(describe(id) + " is stale or was never made: no such world");
+  s->live->sync();
   return *s->live;
 }
 
 bool live(BodyId id) {
   Slot* s = find(id.world);
-  if (!s || id.index1 == 0 || id.index1 > s->live->generation.size()) return false;
+  if (!s || id.index1 == 0) return false;
+  s->live->sync();
   const EntityId e = id.index1 - 1;
-  return s->live->generation[e] == id.generation && s->live->world.alive(e);
+  return e < s->live->table.generation.size() && s->live->table.generation[e] == id.generation &&
+         s->live->world->alive(e);
 }
 
 Named body(BodyId id) {
   if (id.index1 == 0) throw Error("null body id");
-  WorldCopy& w = world(id.world);
+  Live& w = world(id.world);
   if (!live(id)) throw Error(describe(id) + " is stale (the body was destroyed) or was never made");
   return {w, id.index1 - 1};
 }
 
-BodyId id_of(WorldId world, const WorldCopy& w, EntityId e) {
-  return {e + 1, world, w.generation[e]};
-}
+BodyId id_of(WorldId world, const Live& w, EntityId e) { return {e + 1, world, w.table.generation[e]}; }
 
-WorldId add(std::unique_ptr<WorldCopy> w) {
+WorldId add(Live live) {
+  auto w = std::make_unique<Live>(std::move(live));
   auto& s = slots();
   for (std::size_t i = 0; i < s.size(); ++i) {
     if (!s[i].live) {

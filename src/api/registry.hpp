@@ -1,7 +1,8 @@
 // The public API's table of worlds (include/physics/physics.hpp): each slot
-// holds an engine World and what the API adds to it (the def, the bodies'
-// generations and user data). Ids are checked here, once, for every call:
-// a null, stale or never-made id throws physics::Error naming it.
+// holds an engine World (its own, or one it views: api/view.hpp) and what the
+// API adds to it (the def, the bodies' generations and user data). Ids are
+// checked here, once, for every call: a null, stale or never-made id throws
+// physics::Error naming it.
 #pragma once
 
 #include <memory>
@@ -13,34 +14,37 @@
 
 namespace physics::api {
 
-// Everything restore_state puts back: WorldState::Data is this.
-struct WorldCopy {
-  World world;
+// What the API keeps beside a World's own state; saved and restored with it.
+struct Table {
   WorldDef def;
-  std::vector<std::uint16_t> generation;  // by entity id; 0: never a body of this API
+  std::vector<std::uint16_t> generation;  // by entity id: the id's generation
   std::vector<std::uint64_t> user_data;   // by entity id
 };
 
-struct Slot {
-  std::unique_ptr<WorldCopy> live;  // null while the slot is free
-  std::uint16_t generation = 0;     // bumped when the slot is freed
+struct Live {
+  std::unique_ptr<World> owned;  // null for a view
+  World* world = nullptr;        // owned.get(), or the viewed world
+  Table table;
+  // Bodies made outside the API (a scene's, the testbed's) get generation 1
+  // the first time the API looks: their ids are valid from then on.
+  void sync();
 };
 
 // The live world an id names, or throws Error.
-WorldCopy& world(WorldId id);
+Live& world(WorldId id);
 // The world and entity a body id names, or throws Error.
 struct Named {
-  WorldCopy& world;
+  Live& live;
   EntityId entity;
 };
 Named body(BodyId id);
 
-WorldId add(std::unique_ptr<WorldCopy> w);  // a free slot, or a new one
-void remove(WorldId id);                    // throws Error if not live
+WorldId add(Live live);     // a free slot, or a new one
+void remove(WorldId id);    // throws Error if not live
 bool live(WorldId id);
 bool live(BodyId id);
 
-BodyId id_of(WorldId world, const WorldCopy& w, EntityId e);
+BodyId id_of(WorldId world, const Live& w, EntityId e);
 std::string describe(WorldId id);
 std::string describe(BodyId id);
 

@@ -7,7 +7,8 @@
 namespace physics {
 
 struct WorldState::Data {
-  api::WorldCopy copy;
+  World world;
+  api::Table table;
 };
 
 WorldState::WorldState() = default;
@@ -22,14 +23,16 @@ WorldState& WorldState::operator=(WorldState&&) noexcept = default;
 
 WorldState save_state(WorldId world) {
   WorldState s;
-  s.data_ = std::make_unique<WorldState::Data>(WorldState::Data{api::world(world)});
+  const api::Live& w = api::world(world);
+  s.data_ = std::make_unique<WorldState::Data>(WorldState::Data{*w.world, w.table});
   return s;
 }
 
 void restore_state(WorldId world, const WorldState& state) {
-  api::WorldCopy& w = api::world(world);
+  api::Live& w = api::world(world);
   if (!state.data_) throw Error("restore_state: the state is empty (not made by save_state)");
-  w = state.data_->copy;
+  *w.world = state.data_->world;
+  w.table = state.data_->table;
 }
 
 }  // namespace physics

@@ -32,7 +32,7 @@ SystemSet systems_of(const WorldDef& d) {
   return s;
 }
 
-std::unique_ptr<api::WorldCopy> make(const WorldDef& d) {
+api::Live make(const WorldDef& d) {
   Params p;
   try {
     p = params_of(d);
@@ -40,15 +40,18 @@ std::unique_ptr<api::WorldCopy> make(const WorldDef& d) {
   } catch (const std::invalid_argument& e) {
     throw Error(std::string("bad WorldDef: ") + e.what());
   }
-  auto w = std::make_unique<api::WorldCopy>(api::WorldCopy{World(systems_of(d), p), d, {}, {}});
+  api::Live w;
+  w.owned = std::make_unique<World>(systems_of(d), p);
+  w.world = w.owned.get();
+  w.table.def = d;
   if (d.bounds) {
     const Aabb& b = *d.bounds;
     api::check_finite(b.lower, "WorldDef::bounds.lower");
     api::check_finite(b.upper, "WorldDef::bounds.upper");
     api::require(b.lower.x <= b.upper.x && b.lower.y <= b.upper.y, "WorldDef::bounds.upper", ">= lower", b.upper);
-    w->world.health.watch(b.lower.x, b.lower.y, b.upper.x, b.upper.y, 0);
+    w.world->health.watch(b.lower.x, b.lower.y, b.upper.x, b.upper.y, 0);
   }
-  if (d.contact_events) w->world.enable_events();
+  if (d.contact_events) w.world->enable_events();
   return w;
 }
 }  // namespace
@@ -57,51 +60,54 @@ WorldDef default_world_def() { return WorldDef{}; }
 
 WorldId create_world(const WorldDef& def) { return api::add(make(def)); }
 
-void destroy_world(WorldId world) { api::remove(world); }
+void destroy_world(WorldId world) {
+  if (!api::world(world).owned) throw Error(api::describe(world) + " views a world it does not own: its owner ends it");
+  api::remove(world);
+}
 
 bool is_valid(WorldId world) { return api::live(world); }
 
 void step(WorldId world) {
-  World& w = api::world(world).world;
+  World& w = *api::world(world).world;
   if (!w.health.finite()) throw Error(api::describe(world) + " holds a non-finite position or velocity: see health()");
   step(w);
 }
 
-std::int64_t frame(WorldId world) { return api::world(world).world.frame; }
+std::int64_t frame(WorldId world) { return api::world(world).world->frame; }
 
 std::vector<BodyId> bodies(WorldId world) {
-  const api::WorldCopy& w = api::world(world);
+  const api::Live& w = api::world(world);
   std::vector<BodyId> out;
-  for (EntityId e = 0; e < w.generation.size(); ++e)
-    if (w.world.alive(e)) out.push_back(api::id_of(world, w, e));
+  for (EntityId e = 0; e < w.table.generation.size(); ++e)
+    if (w.world->alive(e)) out.push_back(api::id_of(world, w, e));
   return out;
 }
 
 std::size_t body_count(WorldId world) { return bodies(world).size(); }
 
-WorldDef world_def(WorldId world) { return api::world(world).def; }
+WorldDef world_def(WorldId world) { return api::world(world).table.def; }
 
 void set_gravity(WorldId world, Vec2 gravity) {
-  api::WorldCopy& w = api::world(world);
+  api::Live& w = api::world(world);
   api::check_motion(gravity, "gravity");
-  w.def.gravity = gravity;
-  w.world.params.gravity = api::to_engine(gravity);
+  w.table.def.gravity = gravity;
+  w.world->params.gravity = api::to_engine(gravity);
 }
 
-double kinetic_energy(WorldId world) { return api::world(world).world.kinetic_energy(); }
+double kinetic_energy(WorldId world) { return api::world(world).world->kinetic_energy(); }
 
-Vec2 momentum(WorldId world) { return api::to_public(api::world(world).world.momentum()); }
+Vec2 momentum(WorldId world) { return api::to_public(api::world(world).world->momentum()); }
 
 std::vector<StageTime> profile(WorldId world) {
-  const StageTimes& t = api::world(world).world.times;
+  const StageTimes& t = api::world(world).world->times;
   std::vector<StageTime> out;
   for (std::size_t s = 0; s < stage_count; ++s) out.push_back({name(static_cast<Stage>(s)), t.ms_per_step(static_cast<Stage>(s))});
   return out;
 }
 
 HealthReport health(WorldId world) {
-  const api::WorldCopy& w = api::world(world);
-  const Health& h = w.world.health;
+  const api::Live& w = api::world(world);
+  const Health& h = w.world->health;
   HealthReport r;
   r.finite = h.finite();
   if (h.non_finite) r.non_finite = api::id_of(world, w, h.non_finite->id);
@@ -112,11 +118,20 @@ HealthReport health(WorldId world) {
 }
 
 std::vector<TouchEvent> contact_events(WorldId world) {
-  const api::WorldCopy& w = api::world(world);
+  const api::Live& w = api::world(world);
   std::vector<TouchEvent> out;
-  for (const ContactEvent& e : w.world.events.events())
+  for (const ContactEvent& e : w.world->events.events())
     out.push_back({e.kind == EventKind::begin, api::id_of(world, w, e.a), api::id_of(world, w, e.b),
                    api::to_public(e.normal), e.depth, e.jn, e.jt, e.frame});
+  return out;
+}
+
+std::vector<Touching> touching(WorldId world) {
+  const api::Live& w = api::world(world);
+  std::vector<Touching> out;
+  for (const ContactEvents::Touch& t : w.world->events.touching())
+    out.push_back({api::id_of(world, w, t.pair.c), api::id_of(world, w, t.pair.b), api::to_public(t.normal), t.depth,
+                   t.jn, t.jt});
   return out;
 }
 

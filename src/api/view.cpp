@@ -1,0 +1,49 @@
+#include "api/view.hpp"
+
+#include "api/registry.hpp"
+
+namespace physics::api {
+
+namespace {
+// The def a world runs, read back from its parameters and systems.
+WorldDef def_of(const World& w) {
+  WorldDef d;
+  d.dt = w.params.dt;
+  d.substeps = w.params.substeps;
+  d.gravity = {w.params.gravity.x, w.params.gravity.y};
+  d.solver = w.params.solver == Solver::stable      ? SolverKind::stable
+             : w.params.solver == Solver::automatic ? SolverKind::automatic
+                                                    : SolverKind::course;
+  d.iterations = w.params.iterations;
+  d.ccd = w.params.ccd;
+  d.integrator = w.params.integrator == Integrator::exact ? IntegratorKind::exact : IntegratorKind::course;
+  d.forces = w.systems.forces.has_value();
+  d.move = w.systems.move.has_value();
+  d.collision = w.systems.collision.has_value();
+  d.contact_events = w.events.enabled;
+  return d;
+}
+}  // namespace
+
+View::View(World& w) {
+  Live live;
+  live.world = &w;
+  live.table.def = def_of(w);
+  id_ = add(std::move(live));
+}
+
+View::~View() {
+  if (live(id_)) remove(id_);
+}
+
+World& internal(WorldId id) { return *world(id).world; }
+
+BodyId body_id(WorldId id, EntityId e) {
+  Live& w = world(id);
+  if (e >= w.table.generation.size()) throw Error("entity " + std::to_string(e) + " is not a body of " + describe(id));
+  return id_of(id, w, e);
+}
+
+EntityId entity(BodyId b) { return body(b).entity; }
+
+}  // namespace physics::api
