@@ -31,6 +31,7 @@ LEVELS = [
     (1, "components", lambda p: p in ("course/ecs.hpp",) or re.fullmatch(r"course/component_defs\.[ch]pp", p) is not None),
     (2, "engine/systems", lambda p: p.split("/")[0] in ("engine", "reference") or p.startswith("course/systems/")
         or re.fullmatch(r"course/system_defs\.[ch]pp", p) is not None),
+    (2.5, "api", lambda p: p.startswith("api/")),
     (3, "entities", lambda p: p.startswith("course/entities/")),
     (4, "game", lambda p: re.fullmatch(r"course/game\.[ch]pp", p) is not None),
     (5, "app", lambda p: p.split("/")[0] in ("app", "games", "scene", "input")),
