@@ -93,7 +93,8 @@ po::options_description descriptions() {
       ("list-scenes", "list the built-in scenes and the scene files in scenes/ (games marked), and exit")
       ("scene", po::value<std::string>()->value_name("NAME|FILE"),
        "a built-in scene (see --list-scenes; default many) or a scene file (.json)")
-      ("print-scene", "print the scene as a scene file (JSON) and exit")
+      ("print-scene", "print the scene, with the values given here, as a scene file (JSON) and exit (no output "
+       "or run flag with it)")
       ("headless", "run without a window and print a summary (also when there is no display)")
       ("frames", po::value<std::string>()->value_name("N"),
        "frames to run: headless default 600; in a window, quit after N (default: when the user quits)")
