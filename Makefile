@@ -377,7 +377,48 @@ clean:
 # tree, ~32 s of CPU from scratch: `exercise-trees`), then the project's own
 # q suites pass. `make test` runs it (the trees beside its own build) and the
 # parse-level check of the markers (exercise-lint).
-.PHONY: exercise exercise-test exercise-check exercise-trees exercise-lint
+# `make exercise-run Q=4`: your answer in the window (the sheet: "Constater
+# que le bloc se déplace"): the project's game built with the exercise
+# tree's src/course/ in place of its own, on the question's built-in scene
+# (Q1 walls, Q2-Q4 drift, Q5 impulse, Q6-Q8 bounce, Q9 many; SCENE= another,
+# ARGS= more flags). With no display, a headless run that prints where each
+# body starts and ends. `make run Q=4` inside the tree does the same.
+.PHONY: exercise exercise-test exercise-check exercise-trees exercise-lint exercise-run exercise-game
+EXERCISE ?= exercise
+EX_RUN   := $(EXERCISE)/build/run
+EX_FRAMES ?= 120
+EX_SCENE  = $(or $(SCENE),$(word $(or $(filter 1 2 3 4 5 6 7 8 9,$(Q)),9),walls drift drift drift impulse bounce bounce bounce many))
+# The tree's course files, compiled as in its own Makefile: warnings shown,
+# not errors (a half-written answer still runs), -O0 for a debugger. Their
+# headers are the project's (only .cpp files hold answers), so the objects
+# fit the rest of the game, and the results are the same bits at any -O.
+EX_COURSE_OBJ := $(COURSE_SRC:%.cpp=$(EX_RUN)/obj/%.o)
+$(EX_RUN)/obj/%.o: $(EXERCISE)/%.cpp
+	@mkdir -p $(@D)
+	$(CXX) -I$(EXERCISE)/src $(filter-out -Werror,$(CXXFLAGS)) -O0 -c $< -o $@
+# The tree's course objects come first: they define every symbol of
+# libphysics.a's course members, so the linker takes none of those (had it
+# to, the duplicates would stop the link, never pass silently).
+$(EX_RUN)/game: $(EX_COURSE_OBJ) $(GAME_OBJ) $(LIBS)
+	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS) $(SDL_LIBS) $(APP_LIBS)
+exercise-game: $(EX_RUN)/game
+-include $(shell find $(EX_RUN)/obj -name '*.d' 2>/dev/null)
+
+exercise-run: deps
+	@case "$(Q)" in ""|[1-9]) ;; *) echo "exercise-run: Q must be 1 to 9 (got '$(Q)')" >&2; exit 2;; esac
+	@[ -f $(EXERCISE)/.exercise ] || python3 tools/exercise/make_exercise.py --out $(EXERCISE)
+	@$(MAKE) --no-print-directory -s exercise-game
+	@if [ -n "$$DISPLAY$$WAYLAND_DISPLAY$$SDL_VIDEODRIVER" ]; then \
+	  echo "exercise-run: $(EXERCISE)/src/course on the scene $(EX_SCENE) (H: keys, Esc quits)"; \
+	  $(EX_RUN)/game --scene $(EX_SCENE) $(ARGS); \
+	else \
+	  echo "exercise-run: no display (DISPLAY, WAYLAND_DISPLAY unset): $(EXERCISE)/src/course on the scene" \
+	    "$(EX_SCENE), headless, $(EX_FRAMES) frames; the window opens where there is a display"; \
+	  $(EX_RUN)/game --scene $(EX_SCENE) --headless --frames 0 --dump $(EX_RUN)/start.csv >/dev/null && \
+	  $(EX_RUN)/game --scene $(EX_SCENE) --headless --frames $(EX_FRAMES) --dump $(EX_RUN)/end.csv $(ARGS) && \
+	  tools/exercise/moves.sh $(EX_RUN)/start.csv $(EX_RUN)/end.csv $(EX_FRAMES); \
+	fi
+
 exercise:
 	python3 tools/exercise/make_exercise.py --out exercise $(if $(filter 1,$(FORCE)),--force)
 
@@ -385,8 +426,8 @@ exercise-test:
 	@[ -f exercise/.exercise ] || python3 tools/exercise/make_exercise.py --out exercise
 	@$(MAKE) --no-print-directory -C exercise test $(if $(Q),Q=$(Q)) $(if $(STRICT),STRICT=$(STRICT))
 
-exercise-check: exercise-trees $(BUILD)/tests
-	@tools/exercise/check.sh --main ./$(BUILD)/tests build/exercise-check
+exercise-check: exercise-trees $(BUILD)/tests $(BUILD)/game
+	@MAKE="$(MAKE)" tools/exercise/check.sh --main ./$(BUILD)/tests build/exercise-check
 
 exercise-trees:
 	MAKE="$(MAKE)" EXERCISE_OPT=-O0 tools/exercise/check.sh --trees build/exercise-check

@@ -73,6 +73,19 @@ bool is_png(const std::string& path) {
   return head == "\x89PNG\r\n\x1a\n";
 }
 
+// The line of --list-scenes whose first word is `name` (a scene file's
+// path may start with the folder it was found in), or "".
+std::string listed(const std::string& out, const std::string& name) {
+  std::istringstream in(out);
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream words(line);
+    std::string first;
+    words >> first;
+    if (first == name || first.ends_with("/" + name)) return line;
+  }
+  return "";
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(cli_flags)
@@ -86,10 +99,31 @@ BOOST_AUTO_TEST_CASE(help_documents_every_flag) {
     BOOST_TEST(has(r.out, flag), flag);
 }
 
-BOOST_AUTO_TEST_CASE(list_scenes_names_every_builtin) {
+BOOST_AUTO_TEST_CASE(list_scenes_names_every_builtin_and_every_scene_file) {
   const Ran r = cli({"--list-scenes"});
   BOOST_TEST(r.code == 0);
-  for (const SceneSpec& s : builtin_scenes()) BOOST_TEST(has(r.out, s.name + " "), s.name);
+  for (const SceneSpec& s : builtin_scenes()) BOOST_TEST(has(listed(r.out, s.name), s.description), s.name);
+  // Every file of the project's scenes/ (found here or beside the program),
+  // with its own description; a game's level is marked by its kind.
+  std::size_t files = 0;
+  for (const auto& e : fs::directory_iterator(fs::path(scene_file("x")).parent_path())) {
+    if (e.path().extension() != ".json") continue;
+    ++files;
+    const SceneSpec s = read_scene_file(e.path().string());
+    const std::string line = listed(r.out, "scenes/" + e.path().filename().string());
+    BOOST_TEST(has(line, s.description), e.path().filename() << ": " << line);
+    BOOST_TEST(has(line, "[") == !s.game.kind.empty(), line);
+  }
+  BOOST_TEST(files >= 15u);
+  BOOST_TEST(has(listed(r.out, "scenes/platformer.json"), "[platformer] a platformer"));
+  BOOST_TEST(has(listed(r.out, "scenes/targets-2.json"), "[targets] the target game, level 2"));
+}
+
+BOOST_AUTO_TEST_CASE(help_names_the_games_and_how_to_run_them) {
+  const Ran r = cli({"--help"});
+  BOOST_TEST(has(r.out, "build/game --scene scenes/platformer.json"), r.out);
+  BOOST_TEST(has(r.out, "build/game --scene scenes/targets-1.json"));
+  BOOST_TEST(has(r.out, "--list-scenes lists every scene"));
 }
 
 BOOST_AUTO_TEST_CASE(the_default_is_the_many_scene_headless_without_a_front_end) {
@@ -388,6 +422,55 @@ BOOST_AUTO_TEST_CASE(bad_values_on_the_command_line) {
   expect_bad({"--friction", "slippery"}, "--friction: must be a number (got 'slippery')");
 }
 
+// Two outputs on one file would overwrite each other (and one on the
+// replayed log would destroy it): refused naming both flags, and the file
+// is left as it was.
+BOOST_AUTO_TEST_CASE(two_outputs_naming_one_file_are_refused) {
+  TempDir dir;
+  const std::string same = dir.file("same.png", "kept"), log = dir.file("r.log", "kept");
+  const std::vector<std::string> flags{"--dump", "--trace", "--events", "--save", "--screenshot", "--record"};
+  for (std::size_t i = 0; i < flags.size(); ++i)
+    for (std::size_t j = i + 1; j < flags.size(); ++j) {
+      const Ran r = cli({"--scene", "bounce", flags[i], same, flags[j], same});
+      BOOST_TEST(r.code == 2, flags[i] << " " << flags[j]);
+      BOOST_TEST((has(r.err, flags[i]) && has(r.err, flags[j]) && has(r.err, "name one file")), r.err);
+      BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+      BOOST_TEST(read(same) == "kept");
+    }
+  // Spelled differently, still one file.
+  const std::string csv_file = dir.file("out.csv");
+  expect_bad({"--dump", csv_file, "--trace", (dir.path / "." / "out.csv").string()},
+             "--dump and --trace name one file (" + csv_file + "): give each output its own file");
+  for (const char* flag : {"--dump", "--trace", "--events", "--save"}) {
+    expect_bad({"--replay", log, flag, log}, "--replay and " + std::string(flag) + " name one file");
+    BOOST_TEST(read(log) == "kept");
+  }
+  // Two files: both written.
+  const std::string a = dir.file("a.csv"), b = dir.file("b.csv");
+  BOOST_TEST(cli({"--scene", "bounce", "--frames", "2", "--dump", a, "--trace", b}).code == 0);
+  BOOST_TEST((!read(a).empty() && !read(b).empty() && read(a) != read(b)));
+}
+
+// --print-scene prints and exits: a flag it would ignore is refused, not
+// dropped; the scene's own values (--dt, --ccd, --style...) still apply.
+BOOST_AUTO_TEST_CASE(print_scene_refuses_the_flags_it_would_ignore) {
+  TempDir dir;
+  const std::string out = dir.file("out.png");
+  for (const std::vector<std::string>& ignored :
+       {std::vector<std::string>{"--dump", out}, {"--trace", out}, {"--events", out}, {"--save", out},
+        {"--screenshot", out}, {"--record", out}, {"--replay", out}, {"--headless"}, {"--frames", "10"},
+        {"--strict"}, {"--overlays", "aabb"}}) {
+    std::vector<std::string> args{"--scene", "bounce", "--print-scene"};
+    args.insert(args.end(), ignored.begin(), ignored.end());
+    expect_bad(args, "--print-scene and " + ignored[0] + ": --print-scene prints the scene and exits, it would "
+                     "ignore " + ignored[0] + " (give one of them)");
+    BOOST_TEST(!fs::exists(out), ignored[0]);
+  }
+  const Ran p = cli({"--scene", "bounce", "--print-scene", "--dt", "5", "--style", "speed"});
+  BOOST_TEST_REQUIRE(p.code == 0, p.err);
+  BOOST_TEST(parse_scene(p.out, "p.json").params.dt == 5.0);
+}
+
 BOOST_AUTO_TEST_CASE(unwritable_outputs_fail_before_the_run) {
   expect_bad({"--dump", "/nonexistent/dir/x.csv"}, "--dump: cannot write /nonexistent/dir/x.csv");
   expect_bad({"--trace", "/nonexistent/dir/x.csv"}, "--trace: cannot write");
@@ -463,6 +546,48 @@ BOOST_AUTO_TEST_CASE(the_window_draws_the_same_bodies_as_the_offscreen_picture) 
     }
   BOOST_TEST(painted > compared / 10, painted << " painted pixels of " << compared);  // walls and blocks
   BOOST_TEST(differ < compared / 200, differ << " pixels differ of " << compared);    // edge rounding at most
+}
+
+// --list-scenes reads scenes/ where the program runs: a file that does not
+// read is listed with its error, the others still are.
+BOOST_AUTO_TEST_CASE(list_scenes_reads_the_scenes_folder_where_it_runs) {
+  TempDir dir;
+  fs::create_directories(dir.path / "scenes");
+  dir.file("scenes/mine.json", R"({"description": "my own scene", "blocks": []})");
+  dir.file("scenes/level.json", R"({"description": "my level", "game": {"kind": "targets"}, "blocks": [
+    {"pos": [100, 500], "size": [30, 30], "mass": "inf", "tag": "sling"},
+    {"pos": [600, 500], "size": [20, 20], "mass": 1, "tag": "target"}]})");
+  dir.file("scenes/broken.json", "{\"blocks\": [");
+  const Ran r = program(dir, no_display, {"--list-scenes"});
+  BOOST_TEST(r.code == 0, r.err);
+  BOOST_TEST(has(r.out, "scene files in scenes/"), r.out);
+  BOOST_TEST(has(listed(r.out, "scenes/mine.json"), "my own scene"), r.out);
+  BOOST_TEST(has(listed(r.out, "scenes/level.json"), "[targets] my level"), r.out);
+  BOOST_TEST(has(listed(r.out, "scenes/broken.json"), "(does not read: "), r.out);
+  BOOST_TEST(!has(r.out, "platformer"));  // this folder's files, not the project's
+}
+
+// A window closed before --frames (Esc, Q, the close button; here SIGTERM,
+// which SDL turns into the same quit event) saves the last frame it showed,
+// and says so, rather than leaving an empty PNG behind.
+BOOST_AUTO_TEST_CASE(a_window_closed_early_saves_the_last_frame_shown) {
+  TempDir dir;
+  // The trace's first rows on disk mean the window is open (SDL catches
+  // SIGTERM from then on). --frames 3000 bounds the run (50 s) if it did not.
+  const std::string cmd =
+      "cd " + quote(dir.path.string()) + " && { env " + no_display + " SDL_VIDEODRIVER=dummy " +
+      quote(game_binary()) + " --scene gas --frames 3000 --screenshot early.png --trace t.csv >stdout 2>stderr "
+      "</dev/null & p=$!; i=0; while [ ! -s t.csv ] && [ $i -lt 400 ]; do sleep 0.05; i=$((i+1)); done; "
+      "sleep 0.3; kill -TERM $p; wait $p; }";
+  const int status = std::system(cmd.c_str());
+  const std::string err = read(dir.file("stderr"));
+  BOOST_TEST_REQUIRE(WIFEXITED(status), err);
+  BOOST_TEST(WEXITSTATUS(status) == 0, err);
+  BOOST_TEST(has(err, "game: --screenshot: the window was closed at frame "), err);
+  BOOST_TEST(has(err, ", before frame 3000: early.png shows frame "), err);
+  const Picture p = read_png(dir.file("early.png"));
+  BOOST_TEST((p.width == 800u && p.height == 600u));
+  BOOST_TEST(std::count(p.rgb.begin(), p.rgb.end(), 255) < std::ptrdiff_t(p.rgb.size()), "not all white");
 }
 
 BOOST_AUTO_TEST_CASE(a_missing_font_turns_the_hud_off_with_a_warning) {

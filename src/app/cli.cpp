@@ -1,5 +1,6 @@
 #include "app/cli.hpp"
 
+#include <algorithm>
 #include <boost/program_options.hpp>
 #include <cctype>
 #include <charconv>
@@ -89,10 +90,11 @@ po::options_description descriptions() {
   po::options_description d("options");
   d.add_options()
       ("help,h", "print this help and exit")
-      ("list-scenes", "list the built-in scenes and exit")
+      ("list-scenes", "list the built-in scenes and the scene files in scenes/ (games marked), and exit")
       ("scene", po::value<std::string>()->value_name("NAME|FILE"),
        "a built-in scene (see --list-scenes; default many) or a scene file (.json)")
-      ("print-scene", "print the scene as a scene file (JSON) and exit")
+      ("print-scene", "print the scene, with the values given here, as a scene file (JSON) and exit (no output "
+       "or run flag with it)")
       ("headless", "run without a window and print a summary (also when there is no display)")
       ("frames", po::value<std::string>()->value_name("N"),
        "frames to run: headless default 600; in a window, quit after N (default: when the user quits)")
@@ -137,6 +139,88 @@ po::options_description descriptions() {
        "drawing style (window and screenshots): the course's boxes (plain), movable blocks coloured by speed "
        "from blue at rest to red at 1 px/ms and above (speed), or a shape in each box by its tag (sprite)");
   return d;
+}
+
+// --print-scene prints and exits: a flag it would ignore (a file it would
+// not write, a run it would not do) is refused rather than dropped silently.
+// Two outputs naming one file would overwrite each other, and an output on
+// the --replay log would destroy it: refused too.
+void conflicts(const po::variables_map& vm) {
+  if (vm.count("print-scene"))
+    for (const char* flag : {"dump", "trace", "events", "save", "screenshot", "record", "replay", "headless",
+                             "frames", "strict", "overlays"})
+      if (vm.count(flag))
+        throw UsageError(std::string("--print-scene and --") + flag + ": --print-scene prints the scene and exits, "
+                         "it would ignore --" + flag + " (give one of them)");
+  const auto same_file = [](const std::string& a, const std::string& b) {
+    std::error_code ec1, ec2;
+    const auto pa = std::filesystem::weakly_canonical(std::filesystem::absolute(a), ec1);
+    const auto pb = std::filesystem::weakly_canonical(std::filesystem::absolute(b), ec2);
+    return ec1 || ec2 ? a == b : pa == pb;
+  };
+  const char* files[] = {"replay", "dump", "trace", "events", "save", "screenshot", "record"};
+  for (std::size_t i = 0; i < std::size(files); ++i)
+    for (std::size_t j = i + 1; j < std::size(files); ++j) {
+      if (!vm.count(files[i]) || !vm.count(files[j])) continue;
+      const std::string& a = vm[files[i]].as<std::string>();
+      if (!same_file(a, vm[files[j]].as<std::string>())) continue;
+      throw UsageError(std::string("--") + files[i] + " and --" + files[j] + " name one file (" + a + "): " +
+                       (i == 0 ? "writing it would destroy the input log" : "give each output its own file"));
+    }
+}
+
+// The scene files to list: scenes/ in the working directory (where `make
+// run` runs, and where --scene reads relative paths from), else the
+// project's scenes/ beside the program (build/game, build/optO0/game), as a
+// path from here so that it can be given to --scene. Empty if neither.
+std::filesystem::path scenes_folder() {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::is_directory("scenes", ec)) return "scenes";
+  fs::path dir = fs::read_symlink("/proc/self/exe", ec).parent_path();
+  for (int up = 0; up < 3 && dir.has_relative_path(); ++up, dir = dir.parent_path())
+    if (fs::is_directory(dir / "scenes", ec)) {
+      // "../scenes" from build/; from farther away the whole path reads better.
+      const fs::path near = (dir / "scenes").lexically_proximate(fs::current_path(ec));
+      return std::distance(near.begin(), near.end()) <= 2 ? near : dir / "scenes";
+    }
+  return {};
+}
+
+// --list-scenes: the built-in scenes, then the scene files (a game's level
+// marked by its kind), each with its "description". A file that does not
+// read is listed with its error: the listing is not the place to stop.
+void list_scenes(std::ostream& out) {
+  out << "built-in scenes (--scene NAME):\n";
+  for (const SceneSpec& s : builtin_scenes()) {
+    std::string name = s.name;
+    name.resize(std::max<std::size_t>(name.size(), 10), ' ');
+    out << "  " << name << s.description << "\n";
+  }
+  const std::filesystem::path dir = scenes_folder();
+  if (dir.empty()) {
+    out << "no scenes/ folder here or beside the program: run from the project's folder to list its scene files\n";
+    return;
+  }
+  std::vector<std::filesystem::path> files;
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(dir, ec))
+    if (e.path().extension() == ".json") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  std::size_t width = 0;
+  for (const auto& f : files) width = std::max(width, f.string().size() + 2);
+  out << "scene files in " << dir.string() << "/ (--scene FILE; [game] marks a game's level):\n";
+  for (const auto& f : files) {
+    std::string path = f.string(), line;
+    try {
+      const SceneSpec s = read_scene_file(path);
+      line = (s.game.kind.empty() ? "" : "[" + s.game.kind + "] ") + s.description;
+    } catch (const SceneError& e) {
+      line = std::string("(does not read: ") + e.what() + ")";
+    }
+    path.resize(width, ' ');
+    out << "  " << path << line << "\n";
+  }
 }
 
 // Where the scene came from, for messages: its file, or "scene NAME".
@@ -282,7 +366,12 @@ std::string usage() {
        "  Values given here override the scene's. Bad input exits with code 2; a non-finite\n"
        "  position or velocity stops the run with code 3 (also an escape, with --strict).\n\n"
     << descriptions()
-    << "\nValues may follow the flag or an '=' (--gravity=0,-0.001 for a value starting with '-').\n";
+    << "\nValues may follow the flag or an '=' (--gravity=0,-0.001 for a value starting with '-').\n"
+       "\nGames (scene files with a \"game\" key, played in the window; docs/games.md):\n"
+       "  build/game --scene scenes/platformer.json   the platformer: arrows run, Space or Up jumps, R restarts\n"
+       "  build/game --scene scenes/targets-1.json    the target game: drag and release to launch, Enter after a\n"
+       "                                              win for the next level (targets-2, targets-3)\n"
+       "--list-scenes lists every scene: the built-in ones and the files in scenes/.\n";
   return o.str();
 }
 
@@ -379,6 +468,7 @@ Options parse(std::span<const std::string> args) {
     o.overrides.style = style_from_name(get("style"));
     if (!o.overrides.style) bad("--style", "must be plain, speed or sprite", get("style"));
   }
+  conflicts(vm);
   return o;
 }
 
@@ -461,11 +551,7 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err,
     return 0;
   }
   if (o.list_scenes) {
-    for (const SceneSpec& s : builtin_scenes()) {
-      std::string name = s.name;
-      name.resize(std::max<std::size_t>(name.size(), 9), ' ');
-      out << name << s.description << "\n";
-    }
+    list_scenes(out);
     return 0;
   }
   // Why the run is headless, if it is (empty: a window).

@@ -44,7 +44,10 @@ struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-Options parse(std::span<const std::string> args);  // throws UsageError
+// Throws UsageError, also for flags that contradict each other: two outputs
+// (or an output and --replay) naming one file, --print-scene with a flag it
+// would ignore.
+Options parse(std::span<const std::string> args);
 std::string usage();
 
 // A built-in name, else a file (a name that is neither is an error listing

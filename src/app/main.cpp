@@ -53,9 +53,15 @@ int run_window(Cli::Session& s) {
     tb.advance(elapsed * 1000.0, frames.value_or(std::numeric_limits<std::int64_t>::max()));
     const double ms = win->render(tb.world(), tb.view(fps, draw_ms));
     draw_ms = draw_ms == 0.0 ? ms : 0.9 * draw_ms + 0.1 * ms;
-    if (frames && tb.world().frame >= *frames) {
-      if (!o.screenshot.empty()) win->screenshot(o.screenshot);
-      running = false;
+    if (frames && tb.world().frame >= *frames) running = false;
+    // The picture is taken before present(), which leaves the back buffer
+    // undefined; a window closed early (Esc, Q, the close button) saves the
+    // last frame shown rather than leaving the file empty.
+    if (!running && !o.screenshot.empty()) {
+      win->screenshot(o.screenshot);
+      if (tb.world().frame < *frames)
+        *s.err << "game: --screenshot: the window was closed at frame " << tb.world().frame << ", before frame "
+               << *frames << ": " << o.screenshot << " shows frame " << tb.world().frame << "\n";
     }
     win->present();
   }

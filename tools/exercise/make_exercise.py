@@ -20,7 +20,8 @@ keeps its answer (the stub lines are dropped).
 
 The tree: the course tree (src/course/: game.*, component_defs.*, ...), every
 project header it includes and the .cpp beside each of them (so the engine
-files it needs), the per-question tests of tests/ and a Makefile. A file
+files it needs), the per-question tests of tests/ and a Makefile (`make test`, and `make run`,
+which builds the project's game on the tree's course files). A file
 whose content is unchanged is not rewritten (incremental builds). An
 existing DIR is not overwritten without --force: it may hold the student's
 answers.
@@ -217,8 +218,9 @@ def main():
         text = open(os.path.join(ROOT, f), encoding="utf-8").read()
         text, _ = stubbed(f, text, stub_q)
         changed += write_if_changed(os.path.join(out, f), text)
-    changed += write_if_changed(os.path.join(out, "Makefile"),
-                                open(os.path.join(ROOT, MAKEFILE), encoding="utf-8").read())
+    # `make run` in the tree builds the game in the project it came from.
+    makefile = open(os.path.join(ROOT, MAKEFILE), encoding="utf-8").read().replace("@PROJECT@", ROOT)
+    changed += write_if_changed(os.path.join(out, "Makefile"), makefile)
     # Files of an earlier generation that are no longer part of the tree.
     wanted = {os.path.join(out, f) for f in files} | {os.path.join(out, "Makefile"), stamp}
     for d in ("src", "tests"):
