@@ -1,15 +1,18 @@
-// The engine's own geometry (engine/geometry.hpp) against the course's
-// answers it stands in for (Rect::mdiff, Rect::has_origin,
-// Collision::penetration): the same bits on every input, random or chosen on
-// an edge (touching boxes, ties between the four vectors, zero sizes, signed
-// zeros, infinities and NaN), so that the engine's CCD, health check and
-// queries behave exactly as they did when they called the course's.
+// The engine's own geometry (engine/geometry.hpp) and stages
+// (engine/stages.hpp) against the course's answers they stand in for
+// (Rect::mdiff, Rect::has_origin, Collision::penetration; Forces, Move,
+// Collision::resolve and its pass): the same bits on every input, random or
+// chosen on an edge (touching boxes, ties between the four vectors, zero
+// sizes, signed zeros, infinities and NaN; fixed bodies, bodies at rest,
+// friction), so that the engine behaves exactly as it did when it called the
+// course's.
 #include <bit>
 #include <cstdint>
 #include <limits>
 #include <random>
 
 #include "engine/geometry.hpp"
+#include "engine/stages.hpp"
 #include "helpers.hpp"
 
 using namespace physics;
@@ -87,6 +90,131 @@ BOOST_AUTO_TEST_CASE(gives_the_sheets_values_with_its_tie_rules) {
   BOOST_TEST((penetration_vector({-30, -30}, {60, 60}) == Vector{-30, 0}));
   BOOST_TEST((penetration_vector({-40, -20}, {60, 60}) == Vector{20, 0}));
   BOOST_TEST((penetration_vector({-40, -40}, {60, 60}) == Vector{20, 0}));
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+namespace {
+
+// n bodies on a tight grid (most neighbours overlap, some touch), with
+// fixed bodies, bodies at rest, zero sizes, friction and pending forces.
+Components random_bodies(std::mt19937_64& rng, int n) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0), speed(-0.5, 0.5);
+  std::uniform_int_distribution<int> size(0, 40), cell(0, 7), kind(0, 7);
+  Components k;
+  for (int i = 0; i < n; ++i) {
+    const EntityId e = k.create();
+    const bool on_grid = kind(rng) < 4;  // integer positions: touching boxes and ties
+    k.position[e] = {cell(rng) * 20.0 + (on_grid ? 0.0 : unit(rng) * 20.0),
+                     cell(rng) * 20.0 + (on_grid ? 0.0 : unit(rng) * 20.0)};
+    k.box[e] = Rect{size(rng), size(rng)};
+    k.mass[e] = kind(rng) == 0 ? infinity : 0.5 + 20.0 * unit(rng);
+    if (kind(rng) > 1) k.velocity[e] = {speed(rng), speed(rng)};
+    k.sum_forces[e] = {speed(rng), speed(rng)};
+    k.restitution[e] = unit(rng);
+    if (kind(rng) < 4) k.friction[e] = unit(rng);
+  }
+  return k;
+}
+
+std::vector<EntityId> all_ids(const Components& k) {
+  std::vector<EntityId> ids(k.size());
+  for (EntityId e = 0; e < ids.size(); ++e) ids[e] = e;
+  return ids;
+}
+
+// Bit for bit, every array the stages write.
+bool same(const Components& a, const Components& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t e = 0; e < a.size(); ++e)
+    if (!same(a.position[e], b.position[e]) || !same(a.velocity[e], b.velocity[e]) ||
+        !same(a.sum_forces[e], b.sum_forces[e]))
+      return false;
+  return true;
+}
+
+bool same(const Contact& a, const Contact& b) {
+  return a.c == b.c && a.b == b.b && same(a.penetration, b.penetration) && same(a.normal, b.normal) &&
+         a.approaching == b.approaching && same(a.jn, b.jn) && same(a.jt, b.jt);
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(engine_stages)
+
+BOOST_AUTO_TEST_CASE(forces_and_move_agree_with_the_course_systems) {
+  std::mt19937_64 rng(3);
+  for (int world = 0; world < 50; ++world) {
+    Components course = random_bodies(rng, 40);
+    Components engine = course;
+    Forces forces;
+    Move move;
+    for (EntityId e = 0; e < course.size(); ++e) {
+      forces.register_entity(Entity<component::sum_forces, component::mass, component::velocity>{e});
+      move.register_entity(Entity<component::position, component::velocity>{e});
+    }
+    const Vector gravity{0.0, world % 2 ? 0.001 : 0.0};
+    forces.update(course, course_dt / 3, gravity);
+    move.update(course, course_dt / 3);
+    apply_forces(engine, all_ids(engine), course_dt / 3, gravity);
+    move_bodies(engine, all_ids(engine), course_dt / 3);
+    BOOST_TEST_REQUIRE(same(course, engine), "world " << world);
+    BOOST_TEST(!same(course, random_bodies(rng, 40)));  // the comparison can fail
+  }
+}
+
+BOOST_AUTO_TEST_CASE(resolving_a_pair_agrees_with_the_course_collision) {
+  std::mt19937_64 rng(8);
+  int resolved = 0, approaching = 0;
+  for (int world = 0; world < 20; ++world) {
+    Components course = random_bodies(rng, 30);
+    Components engine = course;
+    // Every pair, in the sheet's order, each one after the corrections of the last.
+    for (EntityId c = 0; c < course.size(); ++c)
+      for (EntityId b = c + 1; b < course.size(); ++b) {
+        Contact from_course, from_engine;
+        const bool hit = Collision::resolve(course, c, b, &from_course);
+        BOOST_TEST_REQUIRE(hit == resolve_pair(engine, c, b, &from_engine));
+        if (hit) {
+          BOOST_TEST_REQUIRE(same(from_course, from_engine), "world " << world << " pair " << c << ", " << b);
+          ++resolved;
+          approaching += from_course.approaching;
+        }
+        BOOST_TEST_REQUIRE(same(course, engine), "world " << world << " pair " << c << ", " << b);
+      }
+  }
+  // The worlds exercise the algorithm: many contacts, impulses among them.
+  BOOST_TEST(resolved > 200);
+  BOOST_TEST(approaching > 100);
+}
+
+BOOST_AUTO_TEST_CASE(the_pass_over_the_broad_phase_agrees_with_the_course_collision) {
+  std::mt19937_64 rng(13);
+  for (int world = 0; world < 20; ++world) {
+    Components course = random_bodies(rng, 60);
+    Components engine = course;
+    const Components before = course;
+    Collision collision;
+    collision.record_contacts = true;
+    for (EntityId e = 0; e < course.size(); ++e)
+      collision.register_entity(Entity<component::position, component::box, component::mass, component::velocity,
+                                       component::restitution>{e});
+    BroadPhase for_course, for_engine;
+    collision.update(course, for_course.course_pairs(course, collision.entities(), course_dt));
+    std::vector<Contact> contacts;
+    const std::vector<EntityId> ids = all_ids(engine);
+    const std::size_t count = resolve_pairs(engine, for_engine.course_pairs(engine, ids, course_dt), &contacts);
+    BOOST_TEST_REQUIRE(count == collision.contact_count());
+    BOOST_TEST_REQUIRE(count > 0u);
+    BOOST_TEST_REQUIRE(contacts.size() == collision.contacts().size());
+    for (std::size_t i = 0; i < contacts.size(); ++i) BOOST_TEST_REQUIRE(same(contacts[i], collision.contacts()[i]));
+    BOOST_TEST_REQUIRE(same(course, engine), "world " << world);
+    // Without a contact list, the same pass.
+    Components again = before;
+    BroadPhase for_again;
+    BOOST_TEST(resolve_pairs(again, for_again.course_pairs(again, ids, course_dt)) == count);
+    BOOST_TEST(same(again, engine));
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()
