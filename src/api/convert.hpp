@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "course/component_defs.hpp"
+#include "engine/components.hpp"
 #include "physics/physics.hpp"
 
 namespace physics::api {

@@ -7,6 +7,7 @@
 
 #include "course/entities/block.hpp"
 #include "app/headless.hpp"
+#include "games/registry.hpp"
 #include "scene/scene_json.hpp"
 
 namespace physics {

@@ -29,7 +29,7 @@
 #include <utility>
 #include <vector>
 
-#include "course/component_defs.hpp"
+#include "engine/components.hpp"
 #include "engine/ccd.hpp"
 #include "engine/contact.hpp"
 #include "engine/contact_solver.hpp"

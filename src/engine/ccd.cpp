@@ -5,10 +5,9 @@
 #include <queue>
 
 #include "engine/contact.hpp"
+#include "engine/geometry.hpp"
 #include "engine/rules.hpp"
 #include "engine/sweep.hpp"
-#include "course/systems/collision.hpp"
-#include "course/utils/rect.hpp"
 
 namespace physics {
 
@@ -73,7 +72,7 @@ std::pair<double, double> impact(Components& k, EntityId c, EntityId b, Vector n
 
 std::optional<Impact> Ccd::time_of_impact(const Components& k, EntityId c, EntityId b, double t0, double t1) {
   const Vector vc = k.velocity[c], vb = k.velocity[b];
-  const auto [s, size] = Rect::mdiff(k.position[c], k.box[c], k.position[b], k.box[b]);
+  const auto [s, size] = minkowski_difference(k.position[c], k.box[c], k.position[b], k.box[b]);
   const Vector d = vb - vc;  // the Minkowski box moves at v_b - v_c
   const auto [enter, exit, along_x] = sweep(s, size, d);  // engine/sweep.hpp, shared with the ray cast
   if (!(enter < exit) || exit <= t0 || enter > t1) return std::nullopt;
@@ -88,7 +87,7 @@ std::optional<Impact> Ccd::time_of_impact(const Components& k, EntityId c, Entit
   // Already overlapping at t0 (spawned so, or left so by a capped substep):
   // an impact now if the pair approaches along its shortest way out.
   const Vector s0{s.x + t0 * d.x, s.y + t0 * d.y};
-  const Vector n = Vector::normalize(Collision::penetration(s0, size));
+  const Vector n = Vector::normalize(penetration_vector(s0, size));
   if (Vector::dot(vc - vb, n) >= -floor) return std::nullopt;
   return Impact{t0, n};
 }

@@ -22,7 +22,7 @@
 #include <span>
 #include <vector>
 
-#include "course/component_defs.hpp"
+#include "engine/components.hpp"
 #include "engine/events.hpp"
 #include "engine/pairs.hpp"
 

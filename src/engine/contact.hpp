@@ -7,7 +7,7 @@
 #include <cmath>
 #include <utility>
 
-#include "course/component_defs.hpp"
+#include "engine/components.hpp"
 
 namespace physics {
 

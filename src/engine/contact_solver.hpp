@@ -44,7 +44,7 @@
 #include <tuple>
 #include <vector>
 
-#include "course/component_defs.hpp"
+#include "engine/components.hpp"
 #include "engine/pairs.hpp"
 #include "engine/timing.hpp"
 

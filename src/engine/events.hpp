@@ -17,7 +17,7 @@
 #include <span>
 #include <vector>
 
-#include "course/component_defs.hpp"
+#include "engine/components.hpp"
 #include "engine/pairs.hpp"
 
 namespace physics {

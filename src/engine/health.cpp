@@ -4,7 +4,7 @@
 #include <bit>
 #include <cmath>
 
-#include "course/systems/collision.hpp"
+#include "engine/geometry.hpp"
 
 namespace physics {
 
@@ -67,9 +67,9 @@ void Health::count_escapes(const Components& c, std::int64_t frame) {
 }
 
 double overlap_depth(const Components& k, EntityId c, EntityId b) {
-  const auto [s_pos, s] = Rect::mdiff(k.position[c], k.box[c], k.position[b], k.box[b]);
-  if (!Rect::has_origin(s_pos, s)) return 0.0;
-  const Vector pen = Collision::penetration(s_pos, s);
+  const auto [s_pos, s] = minkowski_difference(k.position[c], k.box[c], k.position[b], k.box[b]);
+  if (!contains_origin(s_pos, s)) return 0.0;
+  const Vector pen = penetration_vector(s_pos, s);
   return std::abs(pen.x) + std::abs(pen.y);  // one of them is 0
 }
 

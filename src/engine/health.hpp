@@ -15,7 +15,7 @@
 #include <optional>
 #include <vector>
 
-#include "course/component_defs.hpp"
+#include "engine/components.hpp"
 
 namespace physics {
 

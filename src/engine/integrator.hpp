@@ -30,7 +30,7 @@
 #include <span>
 #include <vector>
 
-#include "course/component_defs.hpp"
+#include "engine/components.hpp"
 
 namespace physics {
 

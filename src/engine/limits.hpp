@@ -10,7 +10,7 @@
 namespace physics {
 
 // Limits that keep any input from exhausting memory, hanging the loader or
-// overflowing: sizes are summed in Rect::mdiff (int), far below INT_MAX here.
+// overflowing: sizes are summed in Rect::mdiff and minkowski_difference (int), far below INT_MAX here.
 // Frames a run may ask for (--frames, a saved state's frame, an input log's
 // ticks): exactly representable as doubles, far beyond any run that ends.
 inline constexpr std::int64_t max_frames = std::int64_t{1} << 53;

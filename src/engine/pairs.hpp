@@ -25,7 +25,7 @@
 #include <span>
 #include <vector>
 
-#include "course/component_defs.hpp"
+#include "engine/components.hpp"
 #include "engine/broadphase.hpp"
 #include "engine/rules.hpp"
 

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "engine/geometry.hpp"
 #include "engine/sweep.hpp"
 
 namespace physics {
@@ -66,7 +67,7 @@ std::optional<RayHit> ray_hit(Vector origin, Vector travel, EntityId body, Vecto
   // with a box of size 0 at the origin moves by -travel while the ray's
   // fraction goes from 0 to 1; the ray enters the body when the difference
   // takes in the origin.
-  const auto [s, size] = Rect::mdiff(origin, Rect{}, p, r);
+  const auto [s, size] = minkowski_difference(origin, Rect{}, p, r);
   const Vector d = -travel;
   const auto [enter, exit, along_x] = sweep(s, size, d);
   // enter < 0 < exit: the ray starts inside, and ignores the body.
@@ -84,7 +85,7 @@ std::optional<RayHit> ray_hit(Vector origin, Vector travel, EntityId body, Vecto
 }
 
 bool overlaps_region(Vector p, Rect r, Vector lo, Vector hi) {
-  // Open on both sides, as Rect::has_origin: touching is not overlapping.
+  // Open on both sides, as contains_origin (engine/geometry.hpp): touching is not overlapping.
   return lo.x < p.x + r.width && p.x < hi.x && lo.y < p.y + r.height && p.y < hi.y;
 }
 

@@ -1,4 +1,4 @@
-// Contact rules (component_defs.hpp, ContactRules): which pairs the solvers
+// Contact rules (engine/components.hpp, ContactRules): which pairs the solvers
 // see. The one place the broad phase asks, for every stage (the course pass,
 // CCD, the stable solver), so a filtered pair, a sensor's pair or a body
 // passing through a one-way platform never enters a solver's pair list.
@@ -6,7 +6,7 @@
 
 #include <cstdint>
 
-#include "course/component_defs.hpp"
+#include "engine/components.hpp"
 
 namespace physics {
 

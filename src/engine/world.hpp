@@ -7,7 +7,7 @@
 #include <optional>
 #include <string_view>
 
-#include "course/component_defs.hpp"
+#include "engine/components.hpp"
 #include "course/system_defs.hpp"
 #include "engine/auto_mode.hpp"
 #include "engine/ccd.hpp"

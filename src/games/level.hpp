@@ -7,7 +7,6 @@
 // the keys it was given, so a replayed input gives the same game.
 #pragma once
 
-#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -41,12 +40,6 @@ class Level {
   // testbed draws the drag from there).
   virtual std::optional<Vector> launch_point() const { return std::nullopt; }
 };
-
-// The level of a scene with a game (s.game.kind "platformer" or "targets")
-// on its world, whose bodies have `roles` (by entity id). Enables the
-// world's contact events. Throws SceneError naming the scene when the level
-// lacks what its game needs (a platformer without a block tagged "player").
-std::unique_ptr<Level> make_level(const SceneSpec& s, World& w, std::span<const BlockRole> roles);
 
 // The ids of the bodies tagged `tag`, in id order.
 std::vector<EntityId> tagged(std::span<const BlockRole> roles, const std::string& tag);

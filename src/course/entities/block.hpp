@@ -1,7 +1,7 @@
 // Block entity (course: entities/block.ml): a coloured rectangle with a mass.
 #pragma once
 
-#include "course/component_defs.hpp"
+#include "engine/components.hpp"
 #include "engine/world.hpp"
 
 namespace physics::Block {

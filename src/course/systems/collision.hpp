@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "course/component_defs.hpp"
+#include "engine/components.hpp"
 #include "engine/contact.hpp"
 #include "engine/pairs.hpp"
 

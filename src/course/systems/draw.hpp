@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "course/component_defs.hpp"
+#include "engine/components.hpp"
 
 namespace physics {
 

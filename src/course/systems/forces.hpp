@@ -2,7 +2,7 @@
 // the frame into a velocity change, then clears it.
 #pragma once
 
-#include "course/component_defs.hpp"
+#include "engine/components.hpp"
 
 namespace physics {
 

@@ -1,7 +1,7 @@
 // Move system (course: systems/move.ml): x += dt * v.
 #pragma once
 
-#include "course/component_defs.hpp"
+#include "engine/components.hpp"
 
 namespace physics {
 

@@ -1,0 +1,41 @@
+// The sheet's physics stages as the engine runs them: Forces (Q5), Move
+// (Q3) and the Collision pass (Q8), over the bodies of a stage, in their
+// registration order.
+//
+// The course's systems (course/systems/) are the student's answers, which
+// the exercise mode replaces by stubs; an engine that embeds no course code
+// (issue 21: the engine's step, the public API) runs these instead. They are
+// the course's formulas, operation for operation and in the same order, so
+// a step through them gives the same bits as one through the course's
+// systems: tests/test_geometry.cpp checks it on random worlds.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "engine/components.hpp"
+#include "engine/contact.hpp"
+#include "engine/pairs.hpp"
+
+namespace physics {
+
+// Forces: for each finite mass m, v += h·(Σf/m + gravity), then Σf = 0; an
+// infinite mass is left as it is.
+void apply_forces(Components& c, std::span<const EntityId> bodies, double h, Vector gravity);
+
+// Move: x += h·v, infinite masses included (a moving platform).
+void move_bodies(Components& c, std::span<const EntityId> bodies, double h);
+
+// The Collision pass's answer for the pair (c, b), Collision::resolve's:
+// nothing for two infinite masses or boxes that do not overlap (false);
+// otherwise the position correction shared by the speeds, the impulse
+// along the normal if the pair approaches, friction, and the contact in
+// *out if given (true).
+bool resolve_pair(Components& k, EntityId c, EntityId b, Contact* out = nullptr);
+
+// The pass over the broad phase's course pairs, Collision::update's: the
+// number of pairs resolved; their contacts appended to *contacts if given.
+std::size_t resolve_pairs(Components& k, BroadPhase::CoursePairs pairs, std::vector<Contact>* contacts = nullptr);
+
+}  // namespace physics

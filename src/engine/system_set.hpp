@@ -1,0 +1,29 @@
+// Which of the four systems a world runs (a scene's "systems" key): Draw,
+// Forces, Move, Collision, by name and as a set. The engine's, so that a
+// world's stages are named without the course's systems; the systems
+// themselves are the course's (course/system_defs.hpp).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace physics {
+
+enum class SystemId : std::uint8_t { draw, forces, move, collision };
+inline constexpr std::array<SystemId, 4> all_systems{SystemId::draw, SystemId::forces,
+                                                     SystemId::move, SystemId::collision};
+std::string_view name(SystemId s);
+std::optional<SystemId> system_from_name(std::string_view name);
+
+// Which systems a scene declares.
+struct SystemSet {
+  bool draw = true, forces = true, move = true, collision = true;
+  bool has(SystemId s) const;
+  void set(SystemId s, bool on);
+  std::string to_string() const;  // "draw,move,..." in frame order
+};
+
+}  // namespace physics
