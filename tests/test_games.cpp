@@ -97,26 +97,26 @@ BOOST_AUTO_TEST_CASE(the_player_runs_and_collects_a_coin_on_contact) {
   play(tb, 40, {{0, press(key::right)}});
   BOOST_TEST(platformer(tb).coins() == 1);
   BOOST_TEST(!tb.world().alive(coin));
-  BOOST_TEST(tb.world().components.position[platformer(tb).player()].x > 150.0);
+  BOOST_TEST(position(platformer(tb).player()).x > 150.0);
 }
 
 BOOST_AUTO_TEST_CASE(the_player_jumps_only_from_the_ground) {
   Testbed tb = level("platformer");
   play(tb, 10);
-  const EntityId p = platformer(tb).player();
+  const BodyId p = platformer(tb).player();
   play(tb, 1, {{0, press(key::space)}});
   BOOST_TEST(!platformer(tb).grounded());
-  BOOST_TEST(tb.world().components.velocity[p].y < -0.6);
+  BOOST_TEST(velocity(p).y < -0.6);
   // A second press in the air changes nothing: the rise goes on slowing down.
   play(tb, 10);
-  const double vy = tb.world().components.velocity[p].y;
+  const double vy = velocity(p).y;
   play(tb, 1, {{0, press(key::up)}});
-  BOOST_TEST(tb.world().components.velocity[p].y > vy);
+  BOOST_TEST(velocity(p).y > vy);
   // Back on the ground it jumps again.
   play(tb, 60);
   BOOST_TEST(platformer(tb).grounded());
   play(tb, 1, {{0, press(key::up)}});
-  BOOST_TEST(tb.world().components.velocity[p].y < -0.6);
+  BOOST_TEST(velocity(p).y < -0.6);
 }
 
 BOOST_AUTO_TEST_CASE(falling_off_the_world_restarts_the_level) {

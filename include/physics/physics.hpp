@@ -181,6 +181,7 @@ struct TouchEvent {
   std::int64_t frame;  // the step after which it happened
 };
 std::vector<TouchEvent> contact_events(WorldId world);  // the last step's, in pair order
+void enable_contact_events(WorldId world);  // from the next step on, as WorldDef::contact_events
 
 struct Touching {
   BodyId a, b;         // a created before b

@@ -60,6 +60,7 @@ BodyId create_body(WorldId world, const BodyDef& d) {
   const ContactRules rules = api::rules_of(d.filter, d.sensor, d.one_way);
   if (!rules.plain()) c.set_rules(b.id, rules);
   Systems& s = w.world->systems;
+  if (s.draw) s.draw->register_entity(b);  // a viewed world may draw (the testbed's)
   if (s.move) s.move->register_entity(b);
   if (s.forces) s.forces->register_entity(b);
   if (s.collision) s.collision->register_entity(b);

@@ -36,6 +36,8 @@ View::~View() {
   if (live(id_)) remove(id_);
 }
 
+void View::rebind(World& w) { world(id_).world = &w; }
+
 World& internal(WorldId id) { return *world(id).world; }
 
 BodyId body_id(WorldId id, EntityId e) {

@@ -19,6 +19,9 @@ class View {
   View(const View&) = delete;
   View& operator=(const View&) = delete;
   WorldId id() const { return id_; }
+  // The same id for `w` from now on: a world moved into its place (the
+  // testbed builds a level's world aside, then moves it in).
+  void rebind(World& w);
 
  private:
   WorldId id_;

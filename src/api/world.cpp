@@ -126,6 +126,12 @@ std::vector<TouchEvent> contact_events(WorldId world) {
   return out;
 }
 
+void enable_contact_events(WorldId world) {
+  api::Live& w = api::world(world);
+  w.world->enable_events();
+  w.table.def.contact_events = true;
+}
+
 std::vector<Touching> touching(WorldId world) {
   const api::Live& w = api::world(world);
   std::vector<Touching> out;

@@ -78,10 +78,20 @@ void Testbed::install(const SceneSpec& spec) {
   const std::vector<Body> bodies = expand(spec, spec.name);
   World world = make_world(spec, bodies, true);
   std::vector<BlockRole> roles = roles_by_entity(spec, bodies);
-  std::unique_ptr<Level> level = spec.game.kind.empty() ? nullptr : make_level(spec, world, roles);
-  world_ = std::move(world);
+  // A game plays through the public API, on a view of the world (the same
+  // id once the world is moved into place).
+  std::unique_ptr<api::View> view;
+  std::unique_ptr<Level> level;
+  if (!spec.game.kind.empty()) {
+    view = std::make_unique<api::View>(world);
+    level = make_level(spec, view->id(), roles);
+  }
+  if (world_) *world_ = std::move(world);
+  else world_ = std::make_unique<World>(std::move(world));
+  if (view) view->rebind(*world_);
   roles_ = std::move(roles);
   level_ = std::move(level);
+  game_view_ = std::move(view);
   outcome_ = Level::Outcome::playing;
   style_ = spec.style;
 }
@@ -103,7 +113,7 @@ void Testbed::restarted() {
   last_regions_.clear();
   acc_ms_ = 0.0;
   press_.reset();
-  if (on_reset) on_reset(world_);
+  if (on_reset) on_reset(*world_);
 }
 
 void Testbed::reset() { rebuild(); }
@@ -111,7 +121,7 @@ void Testbed::reset() { rebuild(); }
 // The Collision system records its contacts for the C overlay, or for the
 // contact events (--events): one flag, two users.
 void Testbed::record_contacts() {
-  if (world_.systems.collision) world_.systems.collision->record_contacts = overlays_.contacts || world_.events.enabled;
+  if (world_->systems.collision) world_->systems.collision->record_contacts = overlays_.contacts || world_->events.enabled;
 }
 
 void Testbed::select(std::size_t i) {
@@ -125,9 +135,9 @@ void Testbed::after_step() {
   // bodies that have moved apart), placed where the bodies meet now.
   last_contacts_.clear();
   last_regions_.clear();
-  if (world_.systems.collision && overlays_.contacts) {
-    const Components& c = world_.components;
-    last_contacts_ = world_.systems.collision->contacts();
+  if (world_->systems.collision && overlays_.contacts) {
+    const Components& c = world_->components;
+    last_contacts_ = world_->systems.collision->contacts();
     for (const Contact& k : last_contacts_) {
       const Vector a = c.position[k.c], b = c.position[k.b];
       const Vector lo{std::max(a.x, b.x), std::max(a.y, b.y)};
@@ -136,27 +146,27 @@ void Testbed::after_step() {
       last_regions_.push_back({lo, hi});
     }
   }
-  if (on_step) on_step(world_);
+  if (on_step) on_step(*world_);
 }
 
 void Testbed::step() {
   pump();  // a replay's events of this tick come before its step
   // A world with a non-finite body is stopped: nothing after it is physics.
-  if (world_.health.non_finite) return;
-  if (level_ && outcome_ == Level::Outcome::playing) level_->before_step(world_);
-  Game::step(world_);
+  if (world_->health.non_finite) return;
+  if (level_ && outcome_ == Level::Outcome::playing) level_->before_step(game_view_->id());
+  Game::step(*world_);
   ++ticks_;
   after_step();
   if (level_ && outcome_ == Level::Outcome::playing) after_level_step();
-  if (world_.health.non_finite) {
+  if (world_->health.non_finite) {
     paused_ = true;
-    say("stopped: " + Headless::non_finite_line(world_) + " (R: reset)", false);
+    say("stopped: " + Headless::non_finite_line(*world_) + " (R: reset)", false);
   }
 }
 
 // A lost level starts again; a won one stops, and Enter loads the next.
 void Testbed::after_level_step() {
-  outcome_ = level_->after_step(world_);
+  outcome_ = level_->after_step(game_view_->id());
   if (outcome_ == Level::Outcome::lost) {
     rebuild();
     say("level lost: starting again", true);
@@ -196,12 +206,12 @@ int Testbed::advance(double elapsed_ms, std::int64_t last_frame) {
   if (!message_.empty() && elapsed_ms > 0.0 && (message_left_ms_ -= elapsed_ms) <= 0.0) message_.clear();
   pump();  // a replay's events due now, paused or not
   if (paused_ || !(elapsed_ms > 0.0)) return 0;
-  const double dt = world_.params.dt;
+  const double dt = world_->params.dt;
   acc_ms_ = std::min(acc_ms_ + elapsed_ms * (slow_ ? slow_motion : 1.0), max_steps_per_frame * dt);
   // Whole steps covered; the 1e-9 keeps k·dt summed from k pieces a step.
   const int due = static_cast<int>(std::floor(acc_ms_ / dt + 1e-9));
   int n = 0;
-  while (n < due && world_.frame < last_frame && !paused_) {
+  while (n < due && world_->frame < last_frame && !paused_) {
     step();
     pump();  // a replayed pause stops the steps of this frame
     ++n;
@@ -222,7 +232,7 @@ bool Testbed::spawn(Vector centre, Vector v) {
   // Nor into a body (a tower would explode): one scan per click, with the
   // sheet's test (mdiff, has_origin), so a block is refused exactly where
   // Collision would see it overlap.
-  const Components& c = world_.components;
+  const Components& c = world_->components;
   for (std::size_t e = 0; e < c.size(); ++e) {
     const auto [s_pos, s_box] = Rect::mdiff(pos, Rect{spawn_size, spawn_size}, c.position[e], c.box[e]);
     if (Rect::has_origin(s_pos, s_box)) {
@@ -230,10 +240,10 @@ bool Testbed::spawn(Vector centre, Vector v) {
       return false;
     }
   }
-  const auto b = Block::make(world_, pos.x, pos.y, spawn_size, spawn_size, spawn_color, spawn_mass,
+  const auto b = Block::make(*world_, pos.x, pos.y, spawn_size, spawn_size, spawn_color, spawn_mass,
                              with_overrides(s, overrides_).restitution);
-  world_.components.velocity[b.id] = v;
-  roles_.resize(world_.components.size());
+  world_->components.velocity[b.id] = v;
+  roles_.resize(world_->components.size());
   message_.clear();
   return true;
 }
@@ -262,8 +272,8 @@ Testbed::Action Testbed::handle(const InputEvent& e) {
         v = fling_scale * pull;
         if (const double speed = Vector::norm(v); speed > max_fling) v = (max_fling / speed) * v;
       }
-      if (level_ && level_->launch(world_, from, v)) {
-        roles_.resize(world_.components.size(), level_->role_of_new_body());
+      if (level_ && level_->launch(game_view_->id(), {from.x, from.y}, {v.x, v.y})) {
+        roles_.resize(world_->components.size(), level_->role_of_new_body());
         return Action::none;
       }
       spawn(from, v);
@@ -338,14 +348,14 @@ std::vector<std::string> Testbed::key_list(std::size_t scene_count) {
 // hit and the health check's note (the course solver's limits met), as in
 // the headless summary.
 void Testbed::add_measures(View& v, double fps, double draw_ms) const {
-  v.hud.push_back(Headless::hud_line(world_, fps));
+  v.hud.push_back(Headless::hud_line(*world_, fps));
   char draw[64];
   std::snprintf(draw, sizeof draw, "  draw %.3f ms/frame", draw_ms);
-  v.hud.push_back(options_line(world_.params, overlays_));
-  for (std::string& line : wrap("ms/step: " + Headless::stage_times(world_) + (world_.systems.draw ? draw : "  draw off")))
+  v.hud.push_back(options_line(world_->params, overlays_));
+  for (std::string& line : wrap("ms/step: " + Headless::stage_times(*world_) + (world_->systems.draw ? draw : "  draw off")))
     v.hud.push_back(std::move(line));
   if (v.ray && v.ray->hit) v.hud.push_back(ray_line(*v.ray->hit));
-  if (const std::string note = Headless::advice(world_); !note.empty())
+  if (const std::string note = Headless::advice(*world_); !note.empty())
     for (std::string& line : wrap("note: " + note, " ")) v.hud.push_back(std::move(line));
 }
 
@@ -357,19 +367,20 @@ View Testbed::view(double fps, double draw_ms) const {
   if (overlays_.contacts) v.contacts = last_contacts_, v.contact_regions = last_regions_;
   if (press_) {
     // A game that launches from its own point: the same drag, drawn from there.
-    const std::optional<Vector> origin = level_ ? level_->launch_point() : std::nullopt;
+    const std::optional<Vec2> point = level_ ? level_->launch_point() : std::nullopt;
+    const std::optional<Vector> origin = point ? std::optional<Vector>(Vector{point->x, point->y}) : std::nullopt;
     v.sling = origin ? std::pair{*origin, *origin + (mouse_ - *press_)} : std::pair{*press_, mouse_};
   }
   if (ray_from_) {
     // Cast on every view: the bodies move under a ray held still.
     const Vector d = mouse_ - *ray_from_;
-    v.ray = RayView{*ray_from_, mouse_, ray_cast(world_, *ray_from_, d, Vector::norm(d))};
+    v.ray = RayView{*ray_from_, mouse_, ray_cast(*world_, *ray_from_, d, Vector::norm(d))};
   }
   if (overlays_.hud) {
     const SceneSpec& s = scene();
     // The frame number on the title line: the measures' line is full in an 800 px window.
     std::string title = "scene " + std::to_string(current_ + 1) + "/" + std::to_string(scenes_.size()) + " " + s.name +
-                        "  frame " + std::to_string(world_.frame);
+                        "  frame " + std::to_string(world_->frame);
     if (paused_) title += "  [paused]";
     if (slow_) title += "  [slow x0.25]";
     title += "   H: keys";

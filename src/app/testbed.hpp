@@ -23,6 +23,7 @@
 #include "input/keys.hpp"
 #include "scene/scene.hpp"
 #include "engine/query.hpp"
+#include "api/view.hpp"
 #include "games/level.hpp"
 #include "engine/world.hpp"
 
@@ -120,8 +121,8 @@ class Testbed {
   // fit this scene), or `last_tick` (whose events are handled).
   void play(std::int64_t last_tick = std::numeric_limits<std::int64_t>::max());
 
-  World& world() { return world_; }
-  const World& world() const { return world_; }
+  World& world() { return *world_; }
+  const World& world() const { return *world_; }
   const SceneSpec& scene() const { return scenes_[current_]; }
   // Each body's block tag and strength (scene keys "tag", "strength"), by entity id.
   std::span<const BlockRole> roles() const { return roles_; }
@@ -164,7 +165,8 @@ class Testbed {
   std::size_t current_;
   Overrides overrides_;
   Overlays overlays_;
-  World world_;
+  // On the heap, so that a game's api::View of it holds when the testbed moves.
+  std::unique_ptr<World> world_;
   bool paused_ = false, slow_ = false;
   double acc_ms_ = 0.0;
   std::optional<Vector> press_;      // left button down: the slingshot
@@ -178,6 +180,7 @@ class Testbed {
   std::size_t replayed_ = 0;  // also the next logged event's index
   std::vector<BlockRole> roles_;
   std::unique_ptr<Level> level_;  // the scene's game, if it has one
+  std::unique_ptr<api::View> game_view_;  // the game's id of world_ (with level_)
   Level::Outcome outcome_ = Level::Outcome::playing;
   Style style_ = Style::plain;    // the scene's, or the command line's
   std::vector<Contact> last_contacts_;

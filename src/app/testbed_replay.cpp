@@ -25,7 +25,7 @@ void Testbed::pump() {
   if (replayed_ == log->events.size() && ticks_ >= log->end) {
     replay_.reset();
     paused_ = true;
-    say("replay ended at tick " + std::to_string(ticks_) + " (frame " + std::to_string(world_.frame) + ")", false);
+    say("replay ended at tick " + std::to_string(ticks_) + " (frame " + std::to_string(world_->frame) + ")", false);
   }
 }
 
@@ -40,7 +40,7 @@ void Testbed::play(std::int64_t last_tick) {
   for (;;) {
     pump();
     // (A world stopped on a non-finite value steps no more: nothing to wait for.)
-    if (!replay_ || paused_ || ticks_ >= last_tick || world_.health.non_finite) return;
+    if (!replay_ || paused_ || ticks_ >= last_tick || world_->health.non_finite) return;
     step();
   }
 }

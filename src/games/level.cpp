@@ -2,10 +2,20 @@
 
 namespace physics {
 
-std::vector<EntityId> tagged(std::span<const BlockRole> roles, const std::string& tag) {
-  std::vector<EntityId> out;
+std::vector<Tagged> tagged(WorldId w, std::span<const BlockRole> roles, const std::string& tag) {
+  const std::vector<BodyId> all = bodies(w);  // in creation order: the roles' order
+  if (all.size() != roles.size())
+    throw SceneError("a game's world has " + std::to_string(all.size()) + " bodies but " +
+                     std::to_string(roles.size()) + " roles");
+  std::vector<Tagged> out;
   for (std::size_t e = 0; e < roles.size(); ++e)
-    if (roles[e].tag == tag) out.push_back(static_cast<EntityId>(e));
+    if (roles[e].tag == tag) out.push_back({all[e], &roles[e], e});
+  return out;
+}
+
+std::vector<BodyId> ids(const std::vector<Tagged>& t) {
+  std::vector<BodyId> out;
+  for (const Tagged& x : t) out.push_back(x.body);
   return out;
 }
 

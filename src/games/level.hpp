@@ -5,6 +5,10 @@
 // collected, a target broken), whether the level is won or lost, and what
 // the HUD says. Everything a Level decides depends only on the world and
 // the keys it was given, so a replayed input gives the same game.
+//
+// A game uses the world through the public API (include/physics/physics.hpp)
+// alone, as a game maker's program would: the testbed hands it the WorldId of
+// its world (api::View). Its bodies' tags come from the scene (BlockRole).
 #pragma once
 
 #include <optional>
@@ -13,8 +17,8 @@
 #include <vector>
 
 #include "input/keys.hpp"
+#include "physics/physics.hpp"
 #include "scene/scene.hpp"
-#include "engine/world.hpp"
 
 namespace physics {
 
@@ -28,20 +32,28 @@ class Level {
   virtual bool key(int code, bool down) = 0;
   // The testbed's slingshot: a launch from `from` at velocity v. True if the
   // game took it (and then made its own body, if any).
-  virtual bool launch(World& w, Vector from, Vector v) = 0;
-  // Around Game::step: the controls' effect before, the rules after.
-  virtual void before_step(World& w) = 0;
-  virtual Outcome after_step(World& w) = 0;
+  virtual bool launch(WorldId w, Vec2 from, Vec2 v) = 0;
+  // Around the step: the controls' effect before, the rules after.
+  virtual void before_step(WorldId w) = 0;
+  virtual Outcome after_step(WorldId w) = 0;
   // The game's HUD lines (score, what is left, the keys).
   virtual std::vector<std::string> hud() const = 0;
   // A body the game made (launch), for the testbed's list of roles.
   virtual BlockRole role_of_new_body() const { return {}; }
   // Where its launches leave from, if not from the press point (the
   // testbed draws the drag from there).
-  virtual std::optional<Vector> launch_point() const { return std::nullopt; }
+  virtual std::optional<Vec2> launch_point() const { return std::nullopt; }
 };
 
-// The ids of the bodies tagged `tag`, in id order.
-std::vector<EntityId> tagged(std::span<const BlockRole> roles, const std::string& tag);
+// A body of the scene's and its role; `index` is its place in creation order.
+struct Tagged {
+  BodyId body;
+  const BlockRole* role;
+  std::size_t index;
+};
+// The bodies of `w` tagged `tag`, in creation order; `roles` are the scene's,
+// one per body of the freshly made world (SceneError if they do not match).
+std::vector<Tagged> tagged(WorldId w, std::span<const BlockRole> roles, const std::string& tag);
+std::vector<BodyId> ids(const std::vector<Tagged>& t);
 
 }  // namespace physics

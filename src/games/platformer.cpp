@@ -5,20 +5,24 @@
 
 namespace physics {
 
-Platformer::Platformer(const SceneSpec& s, World& w, std::span<const BlockRole> roles)
-    : bottom_(s.height + 100.0), coins_(tagged(roles, "coin")), goals_(tagged(roles, "goal")) {
-  const std::vector<EntityId> players = tagged(roles, "player");
+namespace {
+double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
+}  // namespace
+
+Platformer::Platformer(const SceneSpec& s, WorldId w, std::span<const BlockRole> roles)
+    : bottom_(s.height + 100.0), coins_(ids(tagged(w, roles, "coin"))), goals_(ids(tagged(w, roles, "goal"))) {
+  const std::vector<BodyId> players = ids(tagged(w, roles, "player"));
   if (players.size() != 1)
     throw SceneError(s.name + ": a platformer needs exactly one block with \"tag\": \"player\" (found " +
                      std::to_string(players.size()) + ")");
   player_ = players.front();
-  for (const EntityId e : tagged(roles, "platform")) {
-    const Vector v = w.components.velocity[e];
-    const double speed = Vector::norm(v);
-    if (!(speed > 0.0 && std::isfinite(roles[e].travel)))
+  for (const Tagged& p : tagged(w, roles, "platform")) {
+    const Vec2 v = velocity(p.body);
+    const double speed = std::hypot(v.x, v.y);
+    if (!(speed > 0.0 && std::isfinite(p.role->travel)))
       throw SceneError(s.name + ": a block tagged \"platform\" needs a \"velocity\" and a \"travel\" (body " +
-                       std::to_string(e) + ")");
-    movers_.push_back({e, w.components.position[e], (1.0 / speed) * v, roles[e].travel});
+                       std::to_string(p.index) + ")");
+    movers_.push_back({p.body, position(p.body), (1.0 / speed) * v, p.role->travel});
   }
 }
 
@@ -36,20 +40,18 @@ bool Platformer::key(int code, bool down) {
 
 // A platform goes back and forth between its start and `travel` px along
 // its first velocity: its velocity flips at either end.
-void Platformer::move_platforms(World& w) const {
-  Components& k = w.components;
+void Platformer::move_platforms() const {
   for (const Mover& m : movers_) {
-    const Vector v = k.velocity[m.body];
-    const double along = Vector::dot(k.position[m.body] - m.start, m.dir), ahead = Vector::dot(v, m.dir);
-    if ((along >= m.travel && ahead > 0.0) || (along <= 0.0 && ahead < 0.0)) k.velocity[m.body] = -1.0 * v;
+    const Vec2 v = velocity(m.body);
+    const double along = dot(position(m.body) - m.start, m.dir), ahead = dot(v, m.dir);
+    if ((along >= m.travel && ahead > 0.0) || (along <= 0.0 && ahead < 0.0)) set_velocity(m.body, -1.0 * v);
   }
 }
 
-void Platformer::before_step(World& w) {
-  move_platforms(w);
-  Components& k = w.components;
-  const Vector under = ground_ ? k.velocity[*ground_] : Vector{};
-  Vector& v = k.velocity[player_];
+void Platformer::before_step(WorldId) {
+  move_platforms();
+  const Vec2 under = ground_ ? velocity(*ground_) : Vec2{};
+  Vec2 v = velocity(player_);
   // Running sets the speed relative to the ground; letting go leaves the
   // player to friction (so a moving platform carries a player standing still).
   // Not into a wall: pressed against one, friction would hold the player up
@@ -57,40 +59,41 @@ void Platformer::before_step(World& w) {
   const bool run_right = right_ && !left_ && !wall_right_, run_left = left_ && !right_ && !wall_left_;
   if (run_right || run_left) v.x = under.x + (run_right ? run_speed : -run_speed);
   if (jump_ && ground_) v.y = under.y - jump_speed;
+  if (run_right || run_left || (jump_ && ground_)) set_velocity(player_, v);
   jump_ = false;
 }
 
 // The player stands on what touches it with a normal pushing it up (y grows
 // downwards), and meets a wall where the normal pushes it sideways; sensors
 // aside.
-void Platformer::find_contacts(const World& w) {
+void Platformer::find_contacts(WorldId w) {
   ground_.reset();
   wall_left_ = wall_right_ = false;
-  for (const ContactEvents::Touch& t : w.events.touching()) {
-    const bool a = t.pair.c == player_, b = t.pair.b == player_;
+  for (const Touching& t : touching(w)) {
+    const bool a = t.a == player_, b = t.b == player_;
     if (!a && !b) continue;
-    const EntityId other = a ? t.pair.b : t.pair.c;
-    if (w.components.any_rules() && w.components.rules(other).sensor) continue;
-    const Vector push = a ? t.normal : -1.0 * t.normal;  // the normal pushes a away from b
+    const BodyId other = a ? t.b : t.a;
+    if (is_sensor(other)) continue;
+    const Vec2 push = a ? t.normal : -1.0 * t.normal;  // the normal pushes a away from b
     if (push.y < -0.5) ground_ = other;
     if (push.x > 0.5) wall_left_ = true;
     if (push.x < -0.5) wall_right_ = true;
   }
 }
 
-Level::Outcome Platformer::after_step(World& w) {
+Level::Outcome Platformer::after_step(WorldId w) {
   find_contacts(w);
-  for (const ContactEvent& e : w.events.events()) {
-    if (e.kind != EventKind::begin || (e.a != player_ && e.b != player_)) continue;
-    const EntityId other = e.a == player_ ? e.b : e.a;
-    if (std::find(coins_.begin(), coins_.end(), other) != coins_.end() && w.alive(other)) {
-      w.destroy(other);
+  for (const TouchEvent& e : contact_events(w)) {
+    if (!e.begin || (!(e.a == player_) && !(e.b == player_))) continue;
+    const BodyId other = e.a == player_ ? e.b : e.a;
+    if (std::find(coins_.begin(), coins_.end(), other) != coins_.end() && is_valid(other)) {
+      destroy_body(other);
       ++collected_;
     }
     if (std::find(goals_.begin(), goals_.end(), other) != goals_.end()) won_ = true;
   }
   if (won_) return Outcome::won;
-  const double y = w.components.position[player_].y;
+  const double y = position(player_).y;
   return std::isfinite(y) && y < bottom_ ? Outcome::playing : Outcome::lost;
 }
 

@@ -20,35 +20,35 @@ class Platformer final : public Level {
   static constexpr double run_speed = 0.25;   // px/ms, relative to what the player stands on
   static constexpr double jump_speed = 0.7;   // px/ms, upwards
 
-  Platformer(const SceneSpec& s, World& w, std::span<const BlockRole> roles);
+  Platformer(const SceneSpec& s, WorldId w, std::span<const BlockRole> roles);
 
   bool key(int code, bool down) override;
-  bool launch(World&, Vector, Vector) override { return true; }  // no slingshot here
-  void before_step(World& w) override;
-  Outcome after_step(World& w) override;
+  bool launch(WorldId, Vec2, Vec2) override { return true; }  // no slingshot here
+  void before_step(WorldId w) override;
+  Outcome after_step(WorldId w) override;
   std::vector<std::string> hud() const override;
 
-  EntityId player() const { return player_; }
+  BodyId player() const { return player_; }
   int coins() const { return collected_; }
   int coins_total() const { return static_cast<int>(coins_.size()); }
   bool grounded() const { return ground_.has_value(); }
 
  private:
   struct Mover {
-    EntityId body;
-    Vector start;
-    Vector dir;     // unit: its first velocity's direction
+    BodyId body;
+    Vec2 start;
+    Vec2 dir;       // unit: its first velocity's direction
     double travel;  // px from start along dir before it turns back
   };
-  void move_platforms(World& w) const;
-  void find_contacts(const World& w);
+  void move_platforms() const;
+  void find_contacts(WorldId w);
 
-  EntityId player_;
+  BodyId player_;
   double bottom_;  // px: below this the player has fallen off the world
-  std::vector<EntityId> coins_, goals_;
+  std::vector<BodyId> coins_, goals_;
   std::vector<Mover> movers_;
   bool left_ = false, right_ = false, jump_ = false;
-  std::optional<EntityId> ground_;  // what the player stands on
+  std::optional<BodyId> ground_;  // what the player stands on
   bool wall_left_ = false, wall_right_ = false;  // a solid side face touches the player there
   int collected_ = 0;
   bool won_ = false;

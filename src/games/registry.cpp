@@ -5,8 +5,8 @@
 
 namespace physics {
 
-std::unique_ptr<Level> make_level(const SceneSpec& s, World& w, std::span<const BlockRole> roles) {
-  w.enable_events();
+std::unique_ptr<Level> make_level(const SceneSpec& s, WorldId w, std::span<const BlockRole> roles) {
+  enable_contact_events(w);
   if (s.game.kind == "platformer") return std::make_unique<Platformer>(s, w, roles);
   if (s.game.kind == "targets") return std::make_unique<Targets>(s, w, roles);
   throw SceneError(s.name + ": game.kind: unknown game \"" + s.game.kind + "\"");

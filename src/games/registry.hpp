@@ -13,10 +13,10 @@
 namespace physics {
 
 // The level of a scene with a game (s.game.kind "platformer" or "targets")
-// on its world, whose bodies have `roles` (by entity id). Enables the
-// world's contact events. Throws SceneError naming the scene when the kind
+// on the world `w` (the testbed's, through api::View), whose bodies have
+// `roles` (by creation order). Enables the world's contact events. Throws SceneError naming the scene when the kind
 // is unknown or the level lacks what its game needs (a platformer without a
 // block tagged "player").
-std::unique_ptr<Level> make_level(const SceneSpec& s, World& w, std::span<const BlockRole> roles);
+std::unique_ptr<Level> make_level(const SceneSpec& s, WorldId w, std::span<const BlockRole> roles);
 
 }  // namespace physics

@@ -2,32 +2,37 @@
 
 #include <algorithm>
 
-#include "course/entities/block.hpp"
-
 namespace physics {
 
-Targets::Targets(const SceneSpec& s, World& w, std::span<const BlockRole> roles)
-    : targets_(tagged(roles, "target")), shots_(s.game.shots), shots_left_(s.game.shots), restitution_(s.restitution) {
-  const std::vector<EntityId> slings = tagged(roles, "sling");
+Targets::Targets(const SceneSpec& s, WorldId w, std::span<const BlockRole> roles)
+    : shots_(s.game.shots), shots_left_(s.game.shots), restitution_(s.restitution) {
+  const std::vector<BodyId> slings = ids(tagged(w, roles, "sling"));
   if (slings.size() != 1)
     throw SceneError(s.name + ": a target game needs exactly one block with \"tag\": \"sling\" (found " +
                      std::to_string(slings.size()) + ")");
+  for (const Tagged& t : tagged(w, roles, "target")) {
+    targets_.push_back(t.body);
+    strength_.push_back(t.role->strength);
+  }
   if (targets_.empty()) throw SceneError(s.name + ": a target game needs at least one block with \"tag\": \"target\"");
-  const Components& k = w.components;
-  const EntityId e = slings.front();
-  sling_ = k.position[e] + Vector{k.box[e].width / 2.0, k.box[e].height / 2.0};
-  for (const EntityId t : targets_) strength_.push_back(roles[t].strength);
+  const Vec2 size = physics::size(slings.front());
+  sling_ = position(slings.front()) + Vec2{size.x / 2.0, size.y / 2.0};
 }
 
 // The shot leaves from the sling whatever the press point: the drag only
 // aims (its velocity is the testbed's slingshot's).
-bool Targets::launch(World& w, Vector, Vector v) {
+bool Targets::launch(WorldId w, Vec2, Vec2 v) {
   if (shots_left_ == 0) return true;
   const double half = shot_size / 2.0;
-  const auto shot = Block::make(w, sling_.x - half, sling_.y - half, shot_size, shot_size, Color{60, 60, 70, 255},
-                                shot_mass, restitution_);
-  w.components.velocity[shot.id] = v;
-  w.components.friction[shot.id] = 0.5;
+  BodyDef shot = default_body_def();
+  shot.position = {sling_.x - half, sling_.y - half};
+  shot.size = {shot_size, shot_size};
+  shot.color = {60, 60, 70, 255};
+  shot.mass = shot_mass;
+  shot.restitution = restitution_;
+  shot.velocity = v;
+  shot.friction = 0.5;
+  create_body(w, shot);
   --shots_left_;
   since_last_shot_ = 0;
   return true;
@@ -35,13 +40,13 @@ bool Targets::launch(World& w, Vector, Vector v) {
 
 // A target breaks on the impulse of one step, whatever hit it (the shot, a
 // falling crate, the ground under a toppled tower).
-Level::Outcome Targets::after_step(World& w) {
+Level::Outcome Targets::after_step(WorldId w) {
   ++since_last_shot_;
-  for (const ContactEvents::Touch& t : w.events.touching())
+  for (const Touching& t : touching(w))
     for (std::size_t i = 0; i < targets_.size(); ++i) {
-      const EntityId e = targets_[i];
-      if ((t.pair.c == e || t.pair.b == e) && w.alive(e) && t.jn > strength_[i]) {
-        w.destroy(e);
+      const BodyId e = targets_[i];
+      if ((t.a == e || t.b == e) && is_valid(e) && t.normal_impulse > strength_[i]) {
+        destroy_body(e);
         ++broken_;
       }
     }

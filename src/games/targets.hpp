@@ -18,23 +18,23 @@ class Targets final : public Level {
   static constexpr int points = 100;            // per target
   static constexpr int settle_frames = 240;     // after the last shot before the level is lost
 
-  Targets(const SceneSpec& s, World& w, std::span<const BlockRole> roles);
+  Targets(const SceneSpec& s, WorldId w, std::span<const BlockRole> roles);
 
   bool key(int, bool) override { return false; }
-  bool launch(World& w, Vector from, Vector v) override;
-  void before_step(World&) override {}
-  Outcome after_step(World& w) override;
+  bool launch(WorldId w, Vec2 from, Vec2 v) override;
+  void before_step(WorldId) override {}
+  Outcome after_step(WorldId w) override;
   std::vector<std::string> hud() const override;
   BlockRole role_of_new_body() const override { return {"shot"}; }
-  std::optional<Vector> launch_point() const override { return sling_; }
+  std::optional<Vec2> launch_point() const override { return sling_; }
 
   int targets_left() const { return static_cast<int>(targets_.size()) - broken_; }
   int shots_left() const { return shots_left_; }
   int score() const { return broken_ * points; }
 
  private:
-  Vector sling_;  // centre of the launch point
-  std::vector<EntityId> targets_;
+  Vec2 sling_;  // centre of the launch point
+  std::vector<BodyId> targets_;
   std::vector<double> strength_;  // by target
   int shots_, shots_left_, broken_ = 0;
   std::int64_t since_last_shot_ = 0;
