@@ -115,47 +115,46 @@ bool is_valid(WorldId world);                                     // false for n
 // One step of def.dt ms: forces, move, collision for each substep, in the course's order.
 void step(WorldId world);
 std::int64_t frame(WorldId world);  // steps taken since creation (or since the restored state's)
-std::size_t body_count(WorldId world);
+std::size_t body_count(WorldId world);      // the live bodies
 std::vector<BodyId> bodies(WorldId world);  // the live bodies, in creation order
 WorldDef world_def(WorldId world);          // the def as the world runs it
-void set_gravity(WorldId world, Vec2 gravity);
-// Diagnostics over finite masses: sum of m v^2 / 2 and of m v.
-double kinetic_energy(WorldId world);
-Vec2 momentum(WorldId world);
+void set_gravity(WorldId world, Vec2 gravity);  // px/ms^2, from the next step on
+double kinetic_energy(WorldId world);  // sum of m v^2 / 2 over finite masses
+Vec2 momentum(WorldId world);          // sum of m v over finite masses
 
 // ---- bodies ----
 
 BodyId create_body(WorldId world, const BodyDef& def = default_body_def());  // throws Error on a bad def
 void destroy_body(BodyId body);  // it no longer moves, collides nor is listed; its id goes stale
-bool is_valid(BodyId body);
-WorldId world_of(BodyId body);
+bool is_valid(BodyId body);       // false for null, stale (destroyed), never made
+WorldId world_of(BodyId body);    // the world it belongs to
 
-Vec2 position(BodyId body);
-void set_position(BodyId body, Vec2 position);
-Vec2 size(BodyId body);
-void set_size(BodyId body, Vec2 size);
+Vec2 position(BodyId body);                     // px, top-left corner
+void set_position(BodyId body, Vec2 position);  // finite; a teleport: no velocity change
+Vec2 size(BodyId body);                 // px, whole numbers
+void set_size(BodyId body, Vec2 size);  // whole pixels in [1, 1048576]
 Aabb bounds(BodyId body);  // position to position + size
-Vec2 velocity(BodyId body);
-void set_velocity(BodyId body, Vec2 velocity);
+Vec2 velocity(BodyId body);                     // px/ms
+void set_velocity(BodyId body, Vec2 velocity);  // finite, within 1e6 per axis
 Vec2 force(BodyId body);                   // the pending sum of forces for the next step
 void apply_force(BodyId body, Vec2 force);  // added to it; the next step turns it into velocity, then clears it
 void apply_impulse(BodyId body, Vec2 impulse);  // velocity += impulse / mass now; nothing for fixed bodies
-double mass(BodyId body);
+double mass(BodyId body);                 // fixed_mass for a fixed body
 void set_mass(BodyId body, double mass);  // > 0 or fixed_mass
-double restitution(BodyId body);
-void set_restitution(BodyId body, double restitution);
-double friction(BodyId body);
-void set_friction(BodyId body, double friction);
-Filter filter(BodyId body);
-void set_filter(BodyId body, Filter filter);
-bool is_sensor(BodyId body);
-void set_sensor(BodyId body, bool sensor);
-OneWay one_way(BodyId body);
-void set_one_way(BodyId body, OneWay face);
-Color color(BodyId body);
-void set_color(BodyId body, Color color);
-std::uint64_t user_data(BodyId body);
-void set_user_data(BodyId body, std::uint64_t data);
+double restitution(BodyId body);                        // in [0, 1]
+void set_restitution(BodyId body, double restitution);  // in [0, 1]; a pair uses the smaller
+double friction(BodyId body);                     // Coulomb's coefficient
+void set_friction(BodyId body, double friction);  // in [0, 1000]; a pair uses sqrt(mu_a mu_b)
+Filter filter(BodyId body);                   // category and mask
+void set_filter(BodyId body, Filter filter);  // from the next step on
+bool is_sensor(BodyId body);                // reports overlaps, never pushes
+void set_sensor(BodyId body, bool sensor);  // from the next step on
+OneWay one_way(BodyId body);                 // the face that stops others
+void set_one_way(BodyId body, OneWay face);  // none: every face
+Color color(BodyId body);                 // for drawing
+void set_color(BodyId body, Color color);  // the engine never reads it
+std::uint64_t user_data(BodyId body);                 // yours
+void set_user_data(BodyId body, std::uint64_t data);  // the engine only stores it
 
 // ---- queries (interiors are open: touching is not overlapping) ----
 
@@ -207,10 +206,10 @@ class WorldState {
 
  private:
   std::unique_ptr<Data> data_;
-  friend WorldState save_state(WorldId world);
+  friend WorldState save_state(WorldId world);  // a copy of everything the next steps read
   friend void restore_state(WorldId world, const WorldState& state);
 };
-WorldState save_state(WorldId world);
+WorldState save_state(WorldId world);  // a copy of everything the next steps read
 // The world becomes the saved one: its bodies, frame and def; ids saved with it are valid again.
 void restore_state(WorldId world, const WorldState& state);  // throws Error if empty
 
@@ -229,6 +228,6 @@ struct HealthReport {
   std::optional<BodyId> first_escape;
   double deepest_overlap = 0.0;       // px, a persistent deep overlap seen (course solver), else 0
 };
-HealthReport health(WorldId world);
+HealthReport health(WorldId world);  // what the checks after each step found
 
 }  // namespace physics
