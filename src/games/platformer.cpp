@@ -18,7 +18,7 @@ Platformer::Platformer(const SceneSpec& s, World& w, std::span<const BlockRole> 
     if (!(speed > 0.0 && std::isfinite(roles[e].travel)))
       throw SceneError(s.name + ": a block tagged \"platform\" needs a \"velocity\" and a \"travel\" (body " +
                        std::to_string(e) + ")");
-    movers_.push_back({e, w.components.position[e], (1.0 / speed) * v, roles[e].travel});
+    movers_.push_back({e, roles[e].travel_from, roles[e].travel_dir, roles[e].travel});  // scene.cpp resolves them
   }
 }
 

@@ -10,84 +10,12 @@
 
 #include "engine/broadphase.hpp"
 #include "course/entities/block.hpp"
+#include "scene/checker.hpp"
 
 namespace physics {
 namespace {
 
-// "%g"-like text for messages: short, and exact enough to find the value.
-std::string num(double v) {
-  std::ostringstream o;
-  o.precision(10);
-  o << v;
-  return o.str();
-}
-
-std::string entry_path(std::size_t i) { return "blocks[" + std::to_string(i) + "]"; }
-
-// A key path, built only when a check fails: `base` + `key`
-// ("blocks[3]" + ".mass"). Checks run for every body of a large scene, so
-// the strings of messages are never built on the way to a pass.
-struct At {
-  const std::string& base;
-  const char* key = "";
-  std::string str() const { return base + key; }
-};
-
-// Raises the error for one scene; every message starts with "source: path: ".
-struct Checker {
-  const std::string& source;
-  [[noreturn]] void fail(const std::string& path, const std::string& problem) const {
-    throw SceneError(source + ": " + path + ": " + problem);
-  }
-  [[noreturn]] void fail(At at, const std::string& problem) const { fail(at.str(), problem); }
-  void finite(double v, At at) const {
-    if (!std::isfinite(v)) fail(at, "must be a finite number (got " + num(v) + ")");
-  }
-  void finite(Vector v, At at) const {
-    if (!std::isfinite(v.x) || !std::isfinite(v.y)) fail(at, "must be finite (got [" + num(v.x) + ", " + num(v.y) + "])");
-  }
-  // Velocities, forces, impulses and gravity: finite is not enough, since a
-  // finite 1e308 px/ms overflows to infinity on the first Move. 1e6 px/ms
-  // (a world crossed in one microsecond) is far beyond any sensible scene.
-  void motion(Vector v, At at) const {
-    finite(v, at);
-    if (std::abs(v.x) > max_motion || std::abs(v.y) > max_motion)
-      fail(at, "must be within ±" + num(max_motion) + " (got [" + num(v.x) + ", " + num(v.y) + "])");
-  }
-  void motion(const VecSpec& v, At at) const {
-    range(v, at);
-    motion(Vector{v.x.lo, v.y.lo}, at);
-    motion(Vector{v.x.hi, v.y.hi}, at);
-  }
-  void size(int v, At at) const {
-    if (v <= 0) fail(at, "must be > 0 (got " + std::to_string(v) + ")");
-    if (v > max_block_size) fail(at, "must be <= " + std::to_string(max_block_size) + " (got " + std::to_string(v) + ")");
-  }
-  void mass(double m, At at) const {
-    if (std::isnan(m) || m <= 0.0 || m == -infinity) fail(at, "must be > 0 or \"inf\" (got " + num(m) + ")");
-  }
-  void friction(double mu, At at) const {
-    if (!(mu >= 0.0 && mu <= max_friction)) fail(at, "must be in [0, " + num(max_friction) + "] (got " + num(mu) + ")");
-  }
-  void restitution(double e, At at) const {
-    if (!(e >= 0.0 && e <= 1.0)) fail(at, "must be in [0, 1] (got " + num(e) + ")");
-  }
-  void range(const RealSpec& r, At at) const {
-    finite(r.lo, at);
-    finite(r.hi, at);
-    if (r.drawn && r.lo > r.hi) fail(at, "range [" + num(r.lo) + ", " + num(r.hi) + "] is empty (min > max)");
-  }
-  void range(const VecSpec& v, At at) const {
-    range(v.x, at);
-    range(v.y, at);
-  }
-  void size_range(const IntSpec& r, At at) const {
-    size(r.lo, at);
-    size(r.hi, at);
-    if (r.drawn && r.lo > r.hi)
-      fail(at, "range [" + std::to_string(r.lo) + ", " + std::to_string(r.hi) + "] is empty (min > max)");
-  }
-};
+using namespace scene_check;
 
 // The velocity change of the first frame, force·dt/m + impulse/m, within
 // the motion limit (a mass of 1e-300 turned a force of 1e6 into inf).
@@ -124,6 +52,11 @@ void check_block(const Checker& k, const BlockSpec& b, const std::string& p) {
     k.fail(At{p, ".travel"}, "must be a finite number > 0 (got " + num(*b.travel) + ")");
   if (b.travel && b.tag != "platform")
     k.fail(At{p, ".travel"}, "only a block with \"tag\": \"platform\" travels (got the tag \"" + b.tag + "\")");
+  if (b.travel_from) k.finite(*b.travel_from, At{p, ".travel_from"});
+  if (b.travel_dir && !(std::abs(Vector::norm(*b.travel_dir) - 1.0) <= 1e-9))
+    k.fail(At{p, ".travel_dir"}, "must be a unit vector (got [" + num(b.travel_dir->x) + ", " + num(b.travel_dir->y) + "])");
+  if ((b.travel_from || b.travel_dir) && !b.travel)
+    k.fail(At{p, b.travel_from ? ".travel_from" : ".travel_dir"}, "only a block with a \"travel\" has one");
 }
 
 void check_game(const Checker& k, const GameSpec& g) {
@@ -464,8 +397,18 @@ std::vector<BlockRole> roles_by_entity(const SceneSpec& s, const std::vector<Bod
     const BlockEntry& e = s.blocks[b.entry];
     const BlockSpec* spec = std::get_if<BlockSpec>(&e);
     if (const auto* g = std::get_if<GridSpec>(&e)) spec = &g->first;
-    roles.push_back(spec ? BlockRole{spec->tag, spec->strength.value_or(infinity), spec->travel.value_or(infinity)}
-                         : BlockRole{});
+    if (!spec) {
+      roles.emplace_back();
+      continue;
+    }
+    BlockRole role{spec->tag, spec->strength.value_or(infinity), spec->travel.value_or(infinity)};
+    if (spec->travel) {
+      // The platformer's rule (games/platformer.cpp): from where it starts, along its first velocity.
+      const double speed = Vector::norm(b.velocity);
+      role.travel_from = spec->travel_from.value_or(b.pos);
+      role.travel_dir = spec->travel_dir.value_or((1.0 / speed) * b.velocity);
+    }
+    roles.push_back(std::move(role));
   }
   return roles;
 }

@@ -708,6 +708,8 @@ void read_block_keys(const Reader& r, const json& b, const Path& p, BlockSpec& o
   if (const json* v = find(b, "tag")) out.tag = r.text(*v, p + ".tag");  // its characters: validate()
   if (const json* v = find(b, "strength")) out.strength = r.number(*v, p + ".strength");  // > 0: validate()
   if (const json* v = find(b, "travel")) out.travel = r.number(*v, p + ".travel");  // > 0: validate()
+  if (const json* v = find(b, "travel_from")) out.travel_from = r.vec(*v, p + ".travel_from");
+  if (const json* v = find(b, "travel_dir")) out.travel_dir = r.vec(*v, p + ".travel_dir");  // unit: validate()
   read_contact_keys(r, b, p, out.contact);
 }
 
@@ -728,7 +730,7 @@ GameSpec read_game(const Reader& r, const json& g) {
 BlockSpec read_block(const Reader& r, const json& b, const Path& p) {
   r.keys(b, p,
          with_contact_keys({"pos", "size", "mass", "velocity", "force", "impulse", "color", "restitution", "tag", "strength",
-                            "travel"}));
+                            "travel", "travel_from", "travel_dir"}));
   BlockSpec out;
   read_block_keys(r, b, p, out);
   return out;
@@ -737,7 +739,7 @@ BlockSpec read_block(const Reader& r, const json& b, const Path& p) {
 GridSpec read_grid(const Reader& r, const json& g, const Path& p) {
   r.keys(g, p,
          with_contact_keys({"pos", "size", "mass", "velocity", "force", "impulse", "color", "restitution", "count", "step",
-                            "tag", "strength", "travel"}));
+                            "tag", "strength", "travel", "travel_from", "travel_dir"}));
   GridSpec out;
   read_block_keys(r, g, p, out.first);
   const json* count = find(g, "count");
@@ -1052,6 +1054,8 @@ void block_keys(ojson& o, const BlockSpec& b) {
   if (!b.tag.empty()) o["tag"] = b.tag;
   if (b.strength) o["strength"] = *b.strength;
   if (b.travel) o["travel"] = *b.travel;
+  if (b.travel_from) o["travel_from"] = vec(*b.travel_from);
+  if (b.travel_dir) o["travel_dir"] = vec(*b.travel_dir);
 }
 
 ojson entry(const BlockEntry& e) {
