@@ -11,6 +11,7 @@
 #include "engine/broadphase.hpp"
 #include "course/entities/block.hpp"
 #include "scene/checker.hpp"
+#include "scene/keys.hpp"
 
 namespace physics {
 namespace {
@@ -32,32 +33,8 @@ double largest(const VecSpec& v) {
   return std::max({std::abs(v.x.lo), std::abs(v.x.hi), std::abs(v.y.lo), std::abs(v.y.hi)});
 }
 
-void check_block(const Checker& k, const BlockSpec& b, const std::string& p) {
-  k.finite(b.pos, At{p, ".pos"});
-  k.size(b.width, At{p, ".size"});
-  k.size(b.height, At{p, ".size"});
-  k.mass(b.mass, At{p, ".mass"});
-  k.motion(b.velocity, At{p, ".velocity"});
-  k.motion(b.force, At{p, ".force"});
-  k.motion(b.impulse, At{p, ".impulse"});
-  if (b.restitution) k.restitution(*b.restitution, At{p, ".restitution"});
-  if (b.contact.friction) k.friction(*b.contact.friction, At{p, ".friction"});
-  const bool tag_ok = b.tag.size() <= 32 && std::all_of(b.tag.begin(), b.tag.end(), [](char c) {
-    return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
-  });
-  if (!tag_ok) k.fail(At{p, ".tag"}, "must be at most 32 characters of a-z, 0-9, '_' and '-' (got \"" + b.tag + "\")");
-  if (b.strength && !(std::isfinite(*b.strength) && *b.strength > 0.0))
-    k.fail(At{p, ".strength"}, "must be a finite number > 0 (got " + num(*b.strength) + ")");
-  if (b.travel && !(std::isfinite(*b.travel) && *b.travel > 0.0))
-    k.fail(At{p, ".travel"}, "must be a finite number > 0 (got " + num(*b.travel) + ")");
-  if (b.travel && b.tag != "platform")
-    k.fail(At{p, ".travel"}, "only a block with \"tag\": \"platform\" travels (got the tag \"" + b.tag + "\")");
-  if (b.travel_from) k.finite(*b.travel_from, At{p, ".travel_from"});
-  if (b.travel_dir && !(std::abs(Vector::norm(*b.travel_dir) - 1.0) <= 1e-9))
-    k.fail(At{p, ".travel_dir"}, "must be a unit vector (got [" + num(b.travel_dir->x) + ", " + num(b.travel_dir->y) + "])");
-  if ((b.travel_from || b.travel_dir) && !b.travel)
-    k.fail(At{p, b.travel_from ? ".travel_from" : ".travel_dir"}, "only a block with a \"travel\" has one");
-}
+// A block's keys: their rows (keys.cpp), in the table's order.
+void check_block(const Checker& k, const BlockSpec& b, const std::string& p) { check_block_keys(k, b, p); }
 
 void check_game(const Checker& k, const GameSpec& g) {
   if (g.kind.empty()) return;
@@ -117,7 +94,7 @@ void check_random(const Checker& k, const RandomSpec& r, const std::string& p) {
     k.restitution(r.restitution->lo, At{p, ".restitution"});
     k.restitution(r.restitution->hi, At{p, ".restitution"});
   }
-  if (r.contact.friction) k.friction(*r.contact.friction, At{p, ".friction"});
+  check_contact_keys(k, r.contact, p);
   k.finite(r.origin, At{p, (r.use_cells ? ".cells.pos" : ".area.pos")});
   const int max_w = r.side ? r.side->hi : r.width.hi, max_h = r.side ? r.side->hi : r.height.hi;
   if (r.use_cells) {

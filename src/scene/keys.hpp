@@ -1,0 +1,79 @@
+// The keys of a scene file, one row each: its name, type, range, default and
+// doc line, and for the keys of a block (and a grid) and of the world how it
+// is read, checked and written. The reader (scene_json.cpp), the validator
+// (scene.cpp), the writer (--print-scene, --save) and the key tables of
+// docs/scenes.md (generated: key_tables_markdown; tests/test_keys.cpp fails
+// when the doc differs) all go through these rows. Adding a block key: its
+// field in BlockSpec (scene.hpp) and its row in keys.cpp; a key the physics
+// reads also goes into Body and populate (scene.cpp) and Save (save.cpp).
+#pragma once
+
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "scene/checker.hpp"
+#include "scene/json_reader.hpp"
+
+namespace physics::scene_io {
+
+// What the doc says of a key. `key` is as in a path, ".name": its name is
+// what follows the dot.
+struct KeyDoc {
+  const char* key;
+  std::string_view type, range, fallback, doc;
+  const char* name() const { return key + 1; }
+};
+
+// A key that the tables read, check and write into a `Spec`.
+template <class Spec>
+struct Key {
+  KeyDoc doc;
+  // A required key: what its absence's message adds, e.g. "([width, height], px)"; "" if optional.
+  std::string_view missing;
+  // v: the key's value; path: the key's path (".name" included).
+  void (*read)(const Reader& r, const json& v, const Path& path, Spec& out);
+  // Writes the key into o where it is not its default (or always, if the writer always did).
+  void (*write)(ojson& o, const Spec& s);
+  // The key's meaning (range, cross-key rules); at: the key's path; null: nothing to check.
+  void (*check)(const scene_check::Checker& k, const Spec& s, const std::string& base) = nullptr;
+  bool contact = false;  // a contact key: a random entry's too (for all its bodies)
+};
+
+std::span<const Key<BlockSpec>> block_keys();  // a block's and a grid's
+std::span<const Key<SceneSpec>> world_keys();  // "world": {...}
+// Keys with their own readers (scene_json.cpp), here for their names and docs.
+std::span<const KeyDoc> scene_keys();   // the top level
+std::span<const KeyDoc> entry_keys();   // an entry of "blocks" that is a generator: grid, random, seed
+std::span<const KeyDoc> grid_keys();    // a grid's, beyond a block's
+std::span<const KeyDoc> random_keys();  // a random entry's, beyond the contact keys
+std::span<const KeyDoc> game_keys();    // "game": {...}
+std::span<const KeyDoc> state_keys();   // "state": {...}
+
+// The names the reader accepts in each object, in the tables' order.
+const std::vector<std::string_view>& block_names();
+const std::vector<std::string_view>& grid_names();    // block_names, then grid_keys
+const std::vector<std::string_view>& random_names();  // random_keys, then the contact keys
+const std::vector<std::string_view>& world_names();
+std::vector<std::string_view> names(std::span<const KeyDoc> docs);
+
+// Reading a block's keys (a grid's too): the required ones first, then each
+// given one, in the table's order. Unknown keys are the caller's (Reader::keys).
+void read_block_keys(const Reader& r, const json& b, const Path& p, BlockSpec& out);
+void read_contact_keys(const Reader& r, const json& b, const Path& p, ContactSpec& out);
+void write_block_keys(ojson& o, const BlockSpec& b);
+void write_contact_keys(ojson& o, const ContactSpec& c);
+
+}  // namespace physics::scene_io
+
+namespace physics {
+
+// The validator's part for a block's keys, in the table's order (scene.cpp).
+void check_block_keys(const scene_check::Checker& k, const BlockSpec& b, const std::string& path);
+void check_contact_keys(const scene_check::Checker& k, const ContactSpec& c, const std::string& path);
+
+// docs/scenes.md's key tables, as markdown.
+std::string key_tables_markdown();
+
+}  // namespace physics
