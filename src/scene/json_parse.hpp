@@ -2,9 +2,8 @@
 // handler (StrictDom) that builds the document like nlohmann's own DOM parser
 // but rejects duplicate keys and deep nesting, keeps a syntax error's
 // position, and hands each entry of the top-level "blocks" array over as soon
-// as it is complete: a plain block read without a document (PlainBlock, the
-// fast path of a large scene), anything else as a document that the typed
-// reader (json_reader.hpp) words the errors of.
+// as it is complete, as a document of its own that the typed reader
+// (json_reader.hpp) reads, so that a large scene is never held whole.
 #pragma once
 
 #include <array>
@@ -21,85 +20,6 @@ namespace physics::scene_io {
 inline constexpr std::size_t max_depth = 64;  // scene files need 5
 
 // ---------------------------------------------------------------------------
-// A plain block entry ({"pos": [x, y], "size": [w, h], "mass": m, ...}) read
-// from the parser's events without a document: the entries of a large scene
-// are nearly all plain blocks, and a json object per entry (a std::map, a
-// vector per pair, all freed again) was half of its load time. The events
-// are kept, so that an entry that is anything else (a generator, an unknown
-// or repeated key, a nested value, a wrong type, shape or range) is replayed
-// into the document and read by read_entry, which words the error: this path
-// never makes a message of its own, so every message stays the same.
-
-class PlainBlock {
- public:
-  enum class Kind : std::uint8_t { key, start_array, end_array, null, boolean, integer, natural, real, string };
-  struct Event {
-    Kind kind;
-    std::uint8_t id = 0;  // key: its index in names; string: its index in strings()
-    bool b = false;       // the value, by kind
-    std::int64_t i = 0;
-    std::uint64_t u = 0;
-    double d = 0;
-  };
-  // The keys of a plain block (read_block's list).
-  static constexpr std::array<std::string_view, 8> names{"pos",   "size",  "mass",  "velocity",
-                                                         "force", "impulse", "color", "restitution"};
-
-  void reset() {
-    events_.clear();
-    strings_.clear();
-    seen_ = 0;
-    in_array_ = false;
-  }
-  const std::vector<Event>& events() const { return events_; }
-  const std::string& text(const Event& e) const { return strings_[e.id]; }
-  bool in_array() const { return in_array_; }
-
-  // Each returns false when the event does not fit a plain block: the caller
-  // replays the events so far, then gives this one to the document.
-  bool key(std::string_view k) {
-    const auto it = std::find(names.begin(), names.end(), k);
-    const auto id = static_cast<std::uint8_t>(it - names.begin());
-    if (it == names.end() || (seen_ >> id & 1u)) return false;  // unknown, or a duplicate (the document's error)
-    seen_ |= 1u << id;
-    return push({Kind::key, id});
-  }
-  bool start_array() {
-    if (in_array_) return false;  // [[...]]: no block key holds one
-    in_array_ = true;
-    return push({Kind::start_array});
-  }
-  bool end_array() {
-    in_array_ = false;
-    return push({Kind::end_array});
-  }
-  bool scalar(const Event& e) { return push(e); }
-  bool string(std::string&& s) {
-    if (strings_.size() > 8) return false;
-    strings_.push_back(std::move(s));
-    return push({Kind::string, static_cast<std::uint8_t>(strings_.size() - 1)});
-  }
-
-  bool to_spec(BlockSpec& out) const;
-
- private:
-  bool push(const Event& e) {
-    events_.push_back(e);
-    return true;
-  }
-  static bool number(const Event& e, double& out);
-  static bool vec(const Event* e, Vector& out);
-  static bool side(const Event& e, int& out);
-  bool mass(const Event& e, double& out) const;
-  bool color(const Event& e, Color& out) const;
-
-  std::vector<Event> events_;
-  std::vector<std::string> strings_;
-  unsigned seen_ = 0;  // the keys given so far, a bit each
-  bool in_array_ = false;
-};
-
-// ---------------------------------------------------------------------------
 // Parsing: a SAX handler that builds the document like nlohmann's own DOM
 // parser, but rejects duplicate keys (nlohmann keeps the last one silently)
 // and nesting deeper than max_depth, and keeps the error's byte position.
@@ -110,61 +30,26 @@ class StrictDom : public nlohmann::json_sax<json> {
   std::string error;          // set when the parse failed
   std::size_t position = 0;   // byte position of a syntax error, else 0
 
-  // Each event goes to the plain block being read, if there is one and it
-  // takes it; else (the block replayed into the document first) to the document.
-  bool null() override { return fast({Kind::null}) || add(nullptr); }
-  bool boolean(bool v) override { return fast({.kind = Kind::boolean, .b = v}) || add(v); }
-  bool number_integer(number_integer_t v) override { return fast({.kind = Kind::integer, .i = v}) || add(v); }
-  bool number_unsigned(number_unsigned_t v) override { return fast({.kind = Kind::natural, .u = v}) || add(v); }
-  bool number_float(number_float_t v, const string_t&) override {
-    return fast({.kind = Kind::real, .d = v}) || add(v);
-  }
-  bool string(string_t& v) override {
-    if (fast_ && plain_.string(std::move(v))) return true;
-    if (fast_) fall_back();
-    return add(v);
-  }
+  bool null() override { return add(nullptr); }
+  bool boolean(bool v) override { return add(v); }
+  bool number_integer(number_integer_t v) override { return add(v); }
+  bool number_unsigned(number_unsigned_t v) override { return add(v); }
+  bool number_float(number_float_t v, const string_t&) override { return add(v); }
+  bool string(string_t& v) override { return add(std::move(v)); }
   bool binary(binary_t&) override {
     error = "binary values are not JSON";
     return false;
   }
-  bool start_object(std::size_t) override {
-    if (fast_) fall_back();  // a nested object: not a plain block
-    if (!stack_.empty() && stack_.back().blocks && on_plain_block) {
-      // An entry of "blocks": read as a plain block until it shows it is not one.
-      plain_.reset();
-      fast_ = true;
-      return true;
-    }
-    return open(json::object());
-  }
+  bool start_object(std::size_t) override { return open(json::object()); }
   bool start_array(std::size_t) override {
-    if (fast_ && plain_.start_array()) return true;
-    if (fast_) fall_back();
     // Most arrays of a scene are pairs ([x, y], [w, h]): one allocation, not two.
     json a = json::array();
     a.get_ref<json::array_t&>().reserve(2);
     return open(std::move(a));
   }
-  bool end_object() override {
-    if (fast_) {
-      BlockSpec spec;
-      if (plain_.to_spec(spec)) {
-        fast_ = false;
-        on_plain_block(std::move(spec), stack_.back().children++);
-        return true;
-      }
-      fall_back();  // read_entry says what is wrong with it
-    }
-    return close();
-  }
-  bool end_array() override {
-    if (fast_) return plain_.end_array();  // the plain block only opens arrays one deep
-    return close();
-  }
+  bool end_object() override { return close(); }
+  bool end_array() override { return close(); }
   bool key(string_t& k) override {
-    if (fast_ && plain_.key(k)) return true;
-    if (fast_) fall_back();
     // One lookup: the member is made here (null until its value comes), so
     // a second one with the same name is a duplicate.
     auto [it, inserted] = stack_.back().value->emplace(k, nullptr);
@@ -195,9 +80,6 @@ class StrictDom : public nlohmann::json_sax<json> {
   // complete (its index in the array); the element is dropped after, so a
   // large scene is never held whole as a document. Unset: nothing streamed.
   std::function<void(const json&, std::size_t)> on_block;
-  // Called instead with an element of it that is a plain block (PlainBlock),
-  // read without a document. Unset: every element goes to on_block.
-  std::function<void(BlockSpec&&, std::size_t)> on_plain_block;
 
  private:
   // An open array or object; where it sits in its parent (a key or an
@@ -213,45 +95,6 @@ class StrictDom : public nlohmann::json_sax<json> {
   std::vector<Open> stack_;
   json* slot_ = nullptr;  // the member key() made, waiting for its value
   std::string last_key_;  // its name
-  using Kind = PlainBlock::Kind;
-  PlainBlock plain_;      // the entry of "blocks" being read as a plain block,
-  bool fast_ = false;     // if this is set
-
-  bool fast(const PlainBlock::Event& e) {
-    if (!fast_) return false;
-    if (plain_.scalar(e)) return true;
-    fall_back();
-    return false;
-  }
-  // The entry is not a plain block: it becomes the document's, as if it had
-  // been given to it from its start (opened at the index it would have had).
-  // Replaying cannot fail: the events were those of a valid, shallow object
-  // with no repeated key.
-  void fall_back() {
-    fast_ = false;
-    open(json::object());
-    for (const PlainBlock::Event& e : plain_.events()) {
-      switch (e.kind) {
-        case Kind::key: {
-          string_t k(PlainBlock::names[e.id]);
-          key(k);
-          break;
-        }
-        case Kind::start_array: start_array(0); break;
-        case Kind::end_array: end_array(); break;
-        case Kind::null: null(); break;
-        case Kind::boolean: boolean(e.b); break;
-        case Kind::integer: number_integer(e.i); break;
-        case Kind::natural: number_unsigned(e.u); break;
-        case Kind::real: number_float(e.d, {}); break;
-        case Kind::string: {
-          string_t v = plain_.text(e);
-          string(v);
-          break;
-        }
-      }
-    }
-  }
 
   std::string path() const {
     std::string p;

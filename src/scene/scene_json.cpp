@@ -229,9 +229,6 @@ SceneSpec read_scene(std::string_view text, const std::string& source) {
   s.blocks.reserve(entries);
   StrictDom dom;
   const Path blocks = "blocks";
-  dom.on_plain_block = [&](BlockSpec&& b, std::size_t) {
-    if (!block_error) s.blocks.push_back(std::move(b));
-  };
   dom.on_block = [&](const json& e, std::size_t i) {
     if (block_error) return;
     try {
