@@ -119,6 +119,27 @@ BOOST_AUTO_TEST_CASE(every_world_key_is_written_and_read_back) {
   BOOST_TEST(!back.systems.draw);
 }
 
+// --save lost keys when it spelled them itself: every block key now comes
+// back from the world or from the body's role, through its row.
+BOOST_AUTO_TEST_CASE(every_block_key_is_saved_from_the_world_or_the_role) {
+  for (const auto& k : scene_io::block_keys())
+    BOOST_TEST((k.from_world != nullptr) != (k.from_role != nullptr), k.doc.name());
+  // A body made from the block with every key, saved before any step, is that block again
+  // (its impulse folded into the pending force).
+  SceneSpec s;
+  s.walls = false;
+  BlockSpec b = every_key();
+  s.blocks.push_back(b);
+  const std::vector<Body> bodies = expand(s, "k.json");
+  const World w = make_world(s, bodies, false);
+  const BlockSpec back = block_from_world(w.components, 0, s, roles_by_entity(s, bodies)[0]);
+  b.force = w.components.sum_forces[0];
+  b.impulse = {};
+  b.travel_from = Vector{90, 120};  // not the position: kept
+  b.travel_dir = Vector{-1, 0};     // not the velocity's direction: kept
+  BOOST_TEST((back == b));
+}
+
 // The reader accepts the table's keys and no other; its hint lists them.
 BOOST_AUTO_TEST_CASE(the_reader_takes_the_tables_keys_and_names_them) {
   const std::string msg = error_of(R"({"blocks": [{"pos": [100, 100], "size": [10, 10], "mass": 1, "tagg": "x"}]})");

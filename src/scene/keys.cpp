@@ -36,6 +36,10 @@ void with_travel(const Checker& k, const BlockSpec& b, bool given, At at) {
   if (given && !b.travel) k.fail(at, "only a block with a \"travel\" has one");
 }
 
+// A platform's direction from its velocity, as the platformer always took it
+// (1/|v|)·v: bit for bit the same for a velocity turned back (-v).
+Vector unit(Vector v) { return (1.0 / Vector::norm(v)) * v; }
+
 using BK = Key<BlockSpec>;
 
 // In the order of the writer (--print-scene's output) and the doc.
@@ -44,7 +48,9 @@ const BK block_rows[] = {
      "(the top-left corner [x, y], px)",
      [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.pos = r.vec(v, p); },
      [](ojson& o, const BlockSpec& b) { o["pos"] = vec(b.pos); },
-     [](const Checker& k, const BlockSpec& b, const std::string& at) { k.finite(b.pos, At{at, ".pos"}); }},
+     [](const Checker& k, const BlockSpec& b, const std::string& at) { k.finite(b.pos, At{at, ".pos"}); },
+     false,
+     [](const Components& k, EntityId e, const SceneSpec&, BlockSpec& b) { b.pos = k.position[e]; }},
     {{".size", "[width, height]", "integers in [1, 2^20]", "required", "px"},
      "([width, height], px)",
      [](const Reader& r, const json& v, const Path& p, BlockSpec& b) {
@@ -56,19 +62,25 @@ const BK block_rows[] = {
      [](const Checker& k, const BlockSpec& b, const std::string& at) {
        k.size(b.width, At{at, ".size"});
        k.size(b.height, At{at, ".size"});
-     }},
+     },
+     false,
+     [](const Components& k, EntityId e, const SceneSpec&, BlockSpec& b) { b.width = k.box[e].width, b.height = k.box[e].height; }},
     {{".mass", "number or `\"inf\"`", "> 0", "required", "`\"inf\"` for a fixed body"},
      "(a number > 0, or \"inf\" for a fixed body)",
      [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.mass = r.mass(v, p); },
      [](ojson& o, const BlockSpec& b) { o["mass"] = mass_json(b.mass); },
-     [](const Checker& k, const BlockSpec& b, const std::string& at) { k.mass(b.mass, At{at, ".mass"}); }},
+     [](const Checker& k, const BlockSpec& b, const std::string& at) { k.mass(b.mass, At{at, ".mass"}); },
+     false,
+     [](const Components& k, EntityId e, const SceneSpec&, BlockSpec& b) { b.mass = k.mass[e]; }},
     {{".velocity", "[x, y]", "±10^6 per axis", "[0, 0]", "px/ms at start"},
      "",
      [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.velocity = r.vec(v, p); },
      [](ojson& o, const BlockSpec& b) {
        if (!Vector::is_zero(b.velocity)) o["velocity"] = vec(b.velocity);
      },
-     [](const Checker& k, const BlockSpec& b, const std::string& at) { k.motion(b.velocity, At{at, ".velocity"}); }},
+     [](const Checker& k, const BlockSpec& b, const std::string& at) { k.motion(b.velocity, At{at, ".velocity"}); },
+     false,
+     [](const Components& k, EntityId e, const SceneSpec&, BlockSpec& b) { b.velocity = k.velocity[e]; }},
     {{".force", "[x, y]", "±10^6 per axis", "[0, 0]",
       "initial Σf (Q5), turned into a velocity change by Forces on frame 1"},
      "",
@@ -76,7 +88,10 @@ const BK block_rows[] = {
      [](ojson& o, const BlockSpec& b) {
        if (!Vector::is_zero(b.force)) o["force"] = vec(b.force);
      },
-     [](const Checker& k, const BlockSpec& b, const std::string& at) { k.motion(b.force, At{at, ".force"}); }},
+     [](const Checker& k, const BlockSpec& b, const std::string& at) { k.motion(b.force, At{at, ".force"}); },
+     // The pending force: an impulse not yet applied is in it.
+     false,
+     [](const Components& k, EntityId e, const SceneSpec&, BlockSpec& b) { b.force = k.sum_forces[e]; }},
     {{".impulse", "[x, y]", "±10^6 per axis", "[0, 0]",
       "velocity change × mass on frame 1 (given to Forces as the force impulse/dt)"},
      "",
@@ -84,13 +99,16 @@ const BK block_rows[] = {
      [](ojson& o, const BlockSpec& b) {
        if (!Vector::is_zero(b.impulse)) o["impulse"] = vec(b.impulse);
      },
-     [](const Checker& k, const BlockSpec& b, const std::string& at) { k.motion(b.impulse, At{at, ".impulse"}); }},
+     [](const Checker& k, const BlockSpec& b, const std::string& at) { k.motion(b.impulse, At{at, ".impulse"}); },
+     false, [](const Components&, EntityId, const SceneSpec&, BlockSpec&) {}},  // in the force (above)
     {{".color", "`\"#rrggbb\"`", "", "`\"#808080\"`", "its colour"},
      "",
      [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.color = r.color(v, p); },
      [](ojson& o, const BlockSpec& b) {
        if (!(b.color == default_block_color)) o["color"] = hex(b.color);
-     }},
+     },
+     nullptr, false,
+     [](const Components& k, EntityId e, const SceneSpec&, BlockSpec& b) { b.color = k.color[e]; }},
     {{".restitution", "number", "[0, 1]", "the world's", "a pair uses the smaller of its two"},
      "",
      [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.restitution = r.restitution(v, p); },
@@ -99,6 +117,10 @@ const BK block_rows[] = {
      },
      [](const Checker& k, const BlockSpec& b, const std::string& at) {
        if (b.restitution) k.restitution(*b.restitution, At{at, ".restitution"});
+     },
+     false,  // only where it differs from the world's (which the walls and unset blocks take)
+     [](const Components& k, EntityId e, const SceneSpec& from, BlockSpec& b) {
+       if (k.restitution[e] != from.restitution) b.restitution = k.restitution[e];
      }},
     {{".friction", "number", "[0, 1000]", "the world's",
       "Coulomb's coefficient; a pair uses sqrt(mu_a mu_b) ([game-physics.md](game-physics.md))"},
@@ -110,7 +132,10 @@ const BK block_rows[] = {
      [](const Checker& k, const BlockSpec& b, const std::string& at) {
        if (b.contact.friction) k.friction(*b.contact.friction, At{at, ".friction"});
      },
-     true},
+     true,
+     [](const Components& k, EntityId e, const SceneSpec& from, BlockSpec& b) {
+       if (k.friction[e] != from.friction) b.contact.friction = k.friction[e];
+     }},
     {{".category", "integer", "[0, 2^32 - 1]", "1",
       "bits: a pair interacts only if each one's category meets the other's mask"},
      "",
@@ -120,7 +145,8 @@ const BK block_rows[] = {
      [](ojson& o, const BlockSpec& b) {
        if (b.contact.rules.category != ContactRules{}.category) o["category"] = b.contact.rules.category;
      },
-     nullptr, true},
+     nullptr, true,
+     [](const Components& k, EntityId e, const SceneSpec&, BlockSpec& b) { b.contact.rules.category = k.rules(e).category; }},
     {{".mask", "integer", "[0, 2^32 - 1]", "4294967295", "bits: the categories it meets"},
      "",
      [](const Reader& r, const json& v, const Path& p, BlockSpec& b) {
@@ -129,21 +155,24 @@ const BK block_rows[] = {
      [](ojson& o, const BlockSpec& b) {
        if (b.contact.rules.mask != ContactRules{}.mask) o["mask"] = b.contact.rules.mask;
      },
-     nullptr, true},
+     nullptr, true,
+     [](const Components& k, EntityId e, const SceneSpec&, BlockSpec& b) { b.contact.rules.mask = k.rules(e).mask; }},
     {{".sensor", "boolean", "", "false", "overlaps give contact events, never a correction or an impulse"},
      "",
      [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.contact.rules.sensor = r.boolean(v, p); },
      [](ojson& o, const BlockSpec& b) {
        if (b.contact.rules.sensor) o["sensor"] = true;
      },
-     nullptr, true},
+     nullptr, true,
+     [](const Components& k, EntityId e, const SceneSpec&, BlockSpec& b) { b.contact.rules.sensor = k.rules(e).sensor; }},
     {{".one_way", "string", "`\"up\"`, `\"down\"`, `\"left\"`, `\"right\"`", "–", "stops bodies on that face only"},
      "",
      [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.contact.rules.one_way = face_named(r, v, p); },
      [](ojson& o, const BlockSpec& b) {
        if (b.contact.rules.one_way != Face::none) o["one_way"] = faces[static_cast<int>(b.contact.rules.one_way)];
      },
-     nullptr, true},
+     nullptr, true,
+     [](const Components& k, EntityId e, const SceneSpec&, BlockSpec& b) { b.contact.rules.one_way = k.rules(e).one_way; }},
     {{".tag", "string", "a-z, 0-9, `_`, `-`; at most 32", "\"\"",
       "what the block is in a game (`player`, `coin`, `goal`, `platform`, `sling`, `target`, `crate`, ...); the "
       "physics ignores it, the sprite style draws by it"},
@@ -155,14 +184,20 @@ const BK block_rows[] = {
      [](const Checker& k, const BlockSpec& b, const std::string& at) {
        if (!tag_ok(b.tag))
          k.fail(At{at, ".tag"}, "must be at most 32 characters of a-z, 0-9, '_' and '-' (got \"" + b.tag + "\")");
-     }},
+     },
+     false, nullptr, [](const BlockSpec& b, const Body&, BlockRole& role) { role.tag = b.tag; },
+     [](const BlockRole& role, BlockSpec& b) { b.tag = role.tag; }},
     {{".strength", "number", "> 0, finite", "–", "the normal impulse in one step that breaks a target ([games.md](games.md))"},
      "",
      [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.strength = r.number(v, p); },
      [](ojson& o, const BlockSpec& b) {
        if (b.strength) o["strength"] = *b.strength;
      },
-     [](const Checker& k, const BlockSpec& b, const std::string& at) { positive(k, b.strength, At{at, ".strength"}); }},
+     [](const Checker& k, const BlockSpec& b, const std::string& at) { positive(k, b.strength, At{at, ".strength"}); },
+     false, nullptr, [](const BlockSpec& b, const Body&, BlockRole& role) { role.strength = b.strength.value_or(infinity); },
+     [](const BlockRole& role, BlockSpec& b) {
+       if (std::isfinite(role.strength)) b.strength = role.strength;
+     }},
     {{".travel", "number", "> 0, finite", "–",
       "px: how far a block tagged `platform` goes along its velocity before turning back (only on such a block; a "
       "platform needs both)"},
@@ -175,6 +210,10 @@ const BK block_rows[] = {
        positive(k, b.travel, At{at, ".travel"});
        if (b.travel && b.tag != "platform")
          k.fail(At{at, ".travel"}, "only a block with \"tag\": \"platform\" travels (got the tag \"" + b.tag + "\")");
+     },
+     false, nullptr, [](const BlockSpec& b, const Body&, BlockRole& role) { role.travel = b.travel.value_or(infinity); },
+     [](const BlockRole& role, BlockSpec& b) {
+       if (std::isfinite(role.travel)) b.travel = role.travel;
      }},
     {{".travel_from", "[x, y]", "finite", "`pos`",
       "where the platform's travel starts (`--save` writes it for a platform on its way)"},
@@ -186,6 +225,14 @@ const BK block_rows[] = {
      [](const Checker& k, const BlockSpec& b, const std::string& at) {
        if (b.travel_from) k.finite(*b.travel_from, At{at, ".travel_from"});
        with_travel(k, b, b.travel_from.has_value(), At{at, ".travel_from"});
+     },
+     false, nullptr,
+     [](const BlockSpec& b, const Body& body, BlockRole& role) {
+       if (b.travel) role.travel_from = b.travel_from.value_or(body.pos);
+     },
+     // Written only where the default would not give it back: a platform on its way.
+     [](const BlockRole& role, BlockSpec& b) {
+       if (std::isfinite(role.travel) && !(role.travel_from == b.pos)) b.travel_from = role.travel_from;
      }},
     {{".travel_dir", "[x, y]", "a unit vector", "the velocity's direction",
       "the direction of the travel (`--save` writes it for a platform on its way back)"},
@@ -199,6 +246,14 @@ const BK block_rows[] = {
          k.fail(At{at, ".travel_dir"},
                 "must be a unit vector (got [" + num(b.travel_dir->x) + ", " + num(b.travel_dir->y) + "])");
        with_travel(k, b, b.travel_dir.has_value(), At{at, ".travel_dir"});
+     },
+     false, nullptr,
+     [](const BlockSpec& b, const Body& body, BlockRole& role) {
+       if (b.travel) role.travel_dir = b.travel_dir.value_or(unit(body.velocity));
+     },
+     // Written only where the default would not give it back: a platform on its way back.
+     [](const BlockRole& role, BlockSpec& b) {
+       if (std::isfinite(role.travel) && !(role.travel_dir == unit(b.velocity))) b.travel_dir = role.travel_dir;
      }},
 };
 
@@ -435,6 +490,22 @@ namespace physics {
 void check_block_keys(const scene_check::Checker& k, const BlockSpec& b, const std::string& path) {
   for (const auto& key : scene_io::block_keys())
     if (key.check) key.check(k, b, path);
+}
+
+BlockRole role_of(const BlockSpec& b, const Body& body) {
+  BlockRole role;
+  for (const auto& key : scene_io::block_keys())
+    if (key.to_role) key.to_role(b, body, role);
+  return role;
+}
+
+BlockSpec block_from_world(const Components& k, EntityId e, const SceneSpec& from, const BlockRole& role) {
+  BlockSpec b;
+  for (const auto& key : scene_io::block_keys())
+    if (key.from_world) key.from_world(k, e, from, b);
+  for (const auto& key : scene_io::block_keys())  // after: a platform's compare with its position and velocity
+    if (key.from_role) key.from_role(role, b);
+  return b;
 }
 
 void check_contact_keys(const scene_check::Checker& k, const ContactSpec& c, const std::string& path) {

@@ -3,9 +3,11 @@
 // is read, checked and written. The reader (scene_json.cpp), the validator
 // (scene.cpp), the writer (--print-scene, --save) and the key tables of
 // docs/scenes.md (generated: key_tables_markdown; tests/test_keys.cpp fails
-// when the doc differs) all go through these rows. Adding a block key: its
-// field in BlockSpec (scene.hpp) and its row in keys.cpp; a key the physics
-// reads also goes into Body and populate (scene.cpp) and Save (save.cpp).
+// when the doc differs) and Save (from the world, or from a body's role in a
+// game) all go through these rows. Adding a block key: its field in
+// BlockSpec (scene.hpp; and in BlockRole for a key the games read) and its
+// row in keys.cpp; a key the physics reads also goes from the block to the
+// world, in Body and populate (scene.cpp).
 #pragma once
 
 #include <span>
@@ -39,6 +41,14 @@ struct Key {
   // The key's meaning (range, cross-key rules); at: the key's path; null: nothing to check.
   void (*check)(const scene_check::Checker& k, const Spec& s, const std::string& base) = nullptr;
   bool contact = false;  // a contact key: a random entry's too (for all its bodies)
+  // Save: the key's value in a block saved from body e of a world made from
+  // `from` (null: a key for the games, saved from the body's role below).
+  void (*from_world)(const Components& k, EntityId e, const SceneSpec& from, Spec& out) = nullptr;
+  // A key for the games: its part in the body's role (roles_by_entity; `body`
+  // the body the block made), and back into a block saved from the world (Save;
+  // `out` holds the body as it is now).
+  void (*to_role)(const Spec& s, const Body& body, BlockRole& role) = nullptr;
+  void (*from_role)(const BlockRole& role, Spec& out) = nullptr;
 };
 
 std::span<const Key<BlockSpec>> block_keys();  // a block's and a grid's
@@ -72,6 +82,12 @@ namespace physics {
 // The validator's part for a block's keys, in the table's order (scene.cpp).
 void check_block_keys(const scene_check::Checker& k, const BlockSpec& b, const std::string& path);
 void check_contact_keys(const scene_check::Checker& k, const ContactSpec& c, const std::string& path);
+
+// A body's role from its block's keys (walls aside).
+BlockRole role_of(const BlockSpec& b, const Body& body);
+// Body e of a world made from `from`, with its role, as a block (Save): every
+// key from the world or the role, so that a saved world runs on.
+BlockSpec block_from_world(const Components& k, EntityId e, const SceneSpec& from, const BlockRole& role);
 
 // docs/scenes.md's key tables, as markdown.
 std::string key_tables_markdown();

@@ -1,40 +1,11 @@
 #include "scene/save.hpp"
 
-#include <cmath>
+#include "scene/keys.hpp"
+
 #include <filesystem>
 #include <string>
 
 namespace physics::Save {
-namespace {
-
-// A body as a block entry; restitution and friction only where they differ
-// from the world's (which the walls and unset blocks take).
-BlockSpec block_of(const Components& k, EntityId e, const SceneSpec& from, const BlockRole& role) {
-  BlockSpec b;
-  b.pos = k.position[e];
-  b.width = k.box[e].width;
-  b.height = k.box[e].height;
-  b.mass = k.mass[e];
-  b.velocity = k.velocity[e];
-  b.force = k.sum_forces[e];
-  b.color = k.color[e];
-  if (k.restitution[e] != from.restitution) b.restitution = k.restitution[e];
-  if (k.friction[e] != from.friction) b.contact.friction = k.friction[e];
-  b.contact.rules = k.rules(e);
-  b.tag = role.tag;
-  if (std::isfinite(role.strength)) b.strength = role.strength;
-  if (std::isfinite(role.travel)) {
-    // Written only where the defaults (pos, the velocity's direction) would
-    // not give them back, bit for bit: a platform on its way, or on its way back.
-    b.travel = role.travel;
-    if (!(role.travel_from == b.pos)) b.travel_from = role.travel_from;
-    const double speed = Vector::norm(b.velocity);
-    if (!(role.travel_dir == (1.0 / speed) * b.velocity)) b.travel_dir = role.travel_dir;
-  }
-  return b;
-}
-
-}  // namespace
 
 std::string next_from(const GameSpec& from, const std::string& file) {
   namespace fs = std::filesystem;
@@ -62,7 +33,7 @@ SceneSpec scene_of(const World& w, const SceneSpec& from, std::span<const BlockR
       new_id[e] = e;
     } else if (w.alive(e)) {
       new_id[e] = next++;
-      s.blocks.push_back(block_of(k, e, from, e < roles.size() ? roles[e] : BlockRole{}));
+      s.blocks.push_back(block_from_world(k, e, from, e < roles.size() ? roles[e] : BlockRole{}));
     }
   }
   SavedState state;

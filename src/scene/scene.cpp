@@ -374,18 +374,7 @@ std::vector<BlockRole> roles_by_entity(const SceneSpec& s, const std::vector<Bod
     const BlockEntry& e = s.blocks[b.entry];
     const BlockSpec* spec = std::get_if<BlockSpec>(&e);
     if (const auto* g = std::get_if<GridSpec>(&e)) spec = &g->first;
-    if (!spec) {
-      roles.emplace_back();
-      continue;
-    }
-    BlockRole role{spec->tag, spec->strength.value_or(infinity), spec->travel.value_or(infinity)};
-    if (spec->travel) {
-      // The platformer's rule (games/platformer.cpp): from where it starts, along its first velocity.
-      const double speed = Vector::norm(b.velocity);
-      role.travel_from = spec->travel_from.value_or(b.pos);
-      role.travel_dir = spec->travel_dir.value_or((1.0 / speed) * b.velocity);
-    }
-    roles.push_back(std::move(role));
+    roles.push_back(spec ? role_of(*spec, b) : BlockRole{});
   }
   return roles;
 }
