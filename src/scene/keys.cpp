@@ -393,11 +393,35 @@ const KeyDoc entry_docs[] = {
     {".random", "object", "", "–", "seeded random blocks: the keys below and the contact keys"},
     {".seed", "integer", "[0, 2^64 - 1]", "42", "beside `random`: its generator's seed (SplitMix64)"},
 };
-const KeyDoc game_docs[] = {
-    {".kind", "string", "`\"platformer\"`, `\"targets\"`", "required", "which game"},
-    {".shots", "integer", "[1, 99]", "5", "targets: launches allowed"},
-    {".next", "string", "", "\"\"",
-     "the next level's scene file, relative to this file's folder (`--save` rewrites it from the saved file's)"},
+using GK = Key<GameSpec>;
+
+const GK game_rows[] = {
+    {{".kind", "string", "`\"platformer\"`, `\"targets\"`", "required", "which game"},
+     "(\"platformer\" or \"targets\")",
+     [](const Reader& r, const json& v, const Path& p, GameSpec& g) { g.kind = r.text(v, p); },
+     [](ojson& o, const GameSpec& g) { o["kind"] = g.kind; },
+     [](const Checker& k, const GameSpec& g, const std::string& at) {
+       if (g.kind != "platformer" && g.kind != "targets")
+         k.fail(At{at, ".kind"}, "must be \"platformer\" or \"targets\" (got \"" + g.kind + "\")");
+     }},
+    {{".shots", "integer", "[1, 99]", "5", "targets: launches allowed"},
+     "",
+     [](const Reader& r, const json& v, const Path& p, GameSpec& g) {
+       g.shots = static_cast<int>(r.integer(v, p, std::numeric_limits<int>::min(), std::numeric_limits<int>::max()));
+     },
+     [](ojson& o, const GameSpec& g) {
+       if (g.kind == "targets") o["shots"] = g.shots;
+     },
+     [](const Checker& k, const GameSpec& g, const std::string& at) {
+       if (g.shots < 1 || g.shots > 99) k.fail(At{at, ".shots"}, "must be in [1, 99] (got " + std::to_string(g.shots) + ")");
+     }},
+    {{".next", "string", "", "\"\"",
+      "the next level's scene file, relative to this file's folder (`--save` rewrites it from the saved file's)"},
+     "",
+     [](const Reader& r, const json& v, const Path& p, GameSpec& g) { g.next = r.text(v, p); },
+     [](ojson& o, const GameSpec& g) {
+       if (!g.next.empty()) o["next"] = g.next;
+     }},
 };
 const KeyDoc state_docs[] = {
     {".frame", "integer", ">= 0", "0", "the frame it was saved after"},
@@ -405,11 +429,6 @@ const KeyDoc state_docs[] = {
     {".auto", "`{hold, pressed: [[c, b, substeps], ...]}`", "", "–", "with solver `\"auto\"`: its choice's state"},
 };
 
-std::vector<std::string_view> names_of(auto rows) {
-  std::vector<std::string_view> out;
-  for (const auto& k : rows) out.emplace_back(k.doc.name());
-  return out;
-}
 
 }  // namespace
 
@@ -419,7 +438,7 @@ std::span<const KeyDoc> scene_keys() { return scene_docs; }
 std::span<const KeyDoc> grid_keys() { return grid_docs; }
 std::span<const KeyDoc> random_keys() { return random_docs; }
 std::span<const KeyDoc> entry_keys() { return entry_docs; }
-std::span<const KeyDoc> game_keys() { return game_docs; }
+std::span<const Key<GameSpec>> game_keys() { return game_rows; }
 std::span<const KeyDoc> state_keys() { return state_docs; }
 
 std::vector<std::string_view> names(std::span<const KeyDoc> docs) {
@@ -429,7 +448,7 @@ std::vector<std::string_view> names(std::span<const KeyDoc> docs) {
 }
 
 const std::vector<std::string_view>& block_names() {
-  static const std::vector<std::string_view> out = names_of(block_keys());
+  static const std::vector<std::string_view> out = names(block_keys());
   return out;
 }
 const std::vector<std::string_view>& grid_names() {
@@ -450,7 +469,7 @@ const std::vector<std::string_view>& random_names() {
   return out;
 }
 const std::vector<std::string_view>& world_names() {
-  static const std::vector<std::string_view> out = names_of(world_keys());
+  static const std::vector<std::string_view> out = names(world_keys());
   return out;
 }
 
@@ -549,7 +568,7 @@ std::string key_tables_markdown() {
   table(out, "**`grid`**: a block's keys, and", "grid.", scene_io::grid_keys());
   table(out, "**`random`**: the contact keys (the same for all its bodies, never drawn), and", "random.",
         scene_io::random_keys());
-  table(out, "**`game`**", "game.", scene_io::game_keys());
+  table(out, "**`game`**", "game.", docs_of(scene_io::game_keys()));
   table(out, "**`state`**", "state.", scene_io::state_keys());
   out.pop_back();  // one newline at the end
   return out;

@@ -53,12 +53,12 @@ struct Key {
 
 std::span<const Key<BlockSpec>> block_keys();  // a block's and a grid's
 std::span<const Key<SceneSpec>> world_keys();  // "world": {...}
+std::span<const Key<GameSpec>> game_keys();    // "game": {...}
 // Keys with their own readers (scene_json.cpp), here for their names and docs.
 std::span<const KeyDoc> scene_keys();   // the top level
 std::span<const KeyDoc> entry_keys();   // an entry of "blocks" that is a generator: grid, random, seed
 std::span<const KeyDoc> grid_keys();    // a grid's, beyond a block's
 std::span<const KeyDoc> random_keys();  // a random entry's, beyond the contact keys
-std::span<const KeyDoc> game_keys();    // "game": {...}
 std::span<const KeyDoc> state_keys();   // "state": {...}
 
 // The names the reader accepts in each object, in the tables' order.
@@ -67,6 +67,12 @@ const std::vector<std::string_view>& grid_names();    // block_names, then grid_
 const std::vector<std::string_view>& random_names();  // random_keys, then the contact keys
 const std::vector<std::string_view>& world_names();
 std::vector<std::string_view> names(std::span<const KeyDoc> docs);
+template <class Spec>
+std::vector<std::string_view> names(std::span<const Key<Spec>> rows) {
+  std::vector<std::string_view> out;
+  for (const auto& k : rows) out.emplace_back(k.doc.name());
+  return out;
+}
 
 // Reading a block's keys (a grid's too): the required ones first, then each
 // given one, in the table's order. Unknown keys are the caller's (Reader::keys).

@@ -36,11 +36,11 @@ double largest(const VecSpec& v) {
 // A block's keys: their rows (keys.cpp), in the table's order.
 void check_block(const Checker& k, const BlockSpec& b, const std::string& p) { check_block_keys(k, b, p); }
 
+// The game's keys: their rows (keys.cpp).
 void check_game(const Checker& k, const GameSpec& g) {
   if (g.kind.empty()) return;
-  if (g.kind != "platformer" && g.kind != "targets")
-    k.fail("game.kind", "must be \"platformer\" or \"targets\" (got \"" + g.kind + "\")");
-  if (g.shots < 1 || g.shots > 99) k.fail("game.shots", "must be in [1, 99] (got " + std::to_string(g.shots) + ")");
+  for (const auto& key : scene_io::game_keys())
+    if (key.check) key.check(k, g, "game");
 }
 
 // A saved world's state: the warm-start impulses name bodies of the scene

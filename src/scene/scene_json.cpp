@@ -33,13 +33,13 @@ void read_world(const Reader& r, const json& w, SceneSpec& s) {
 GameSpec read_game(const Reader& r, const json& g) {
   if (!g.is_object()) r.fail("game", "must be an object {\"kind\": ...} (got " + r.got(g) + ")");
   r.keys(g, "game", names(game_keys()));
+  const Path game = "game";
   GameSpec out;
-  const json* kind = find(g, "kind");
-  if (!kind) r.fail("game", "missing key \"kind\" (\"platformer\" or \"targets\")");
-  out.kind = r.text(*kind, "game.kind");  // one of the games: validate()
-  if (const json* v = find(g, "shots"))  // in [1, 99]: validate()
-    out.shots = static_cast<int>(r.integer(*v, "game.shots", std::numeric_limits<int>::min(), std::numeric_limits<int>::max()));
-  if (const json* v = find(g, "next")) out.next = r.text(*v, "game.next");
+  for (const auto& k : game_keys())
+    if (!k.missing.empty() && !find(g, k.doc.name()))
+      r.fail(game, "missing key \"" + std::string(k.doc.name()) + "\" " + std::string(k.missing));
+  for (const auto& k : game_keys())
+    if (const json* v = find(g, k.doc.name())) k.read(r, *v, Path(game, k.doc.key), out);
   return out;
 }
 

@@ -96,9 +96,9 @@ std::string to_json(const SceneSpec& s) {
   for (const BlockEntry& e : s.blocks) blocks.push_back(entry(e));
   o["blocks"] = blocks;
   if (!s.game.kind.empty()) {
-    o["game"] = {{"kind", s.game.kind}};
-    if (s.game.kind == "targets") o["game"]["shots"] = s.game.shots;
-    if (!s.game.next.empty()) o["game"]["next"] = s.game.next;
+    ojson game = ojson::object();
+    for (const auto& k : game_keys()) k.write(game, s.game);
+    o["game"] = game;
   }
   if (s.style != Style::plain) o["style"] = std::string(name(s.style));  // plain: today's files unchanged
   if (s.state) {
