@@ -119,11 +119,17 @@ BOOST_AUTO_TEST_CASE(every_world_key_is_written_and_read_back) {
   BOOST_TEST(!back.systems.draw);
 }
 
-// --save lost keys when it spelled them itself: every block key now comes
-// back from the world or from the body's role, through its row.
+// --save lost keys when it spelled them itself: every block key now goes
+// into the world or the body's role and comes back from it, through its row.
 BOOST_AUTO_TEST_CASE(every_block_key_is_saved_from_the_world_or_the_role) {
-  for (const auto& k : scene_io::block_keys())
-    BOOST_TEST((k.from_world != nullptr) != (k.from_role != nullptr), k.doc.name());
+  // A key of the physics goes into the body and comes back from the world;
+  // a key of the games goes into the body's role and comes back from it.
+  for (const auto& k : scene_io::block_keys()) {
+    const bool physics = k.to_body && k.from_world, game = k.to_role && k.from_role;
+    BOOST_TEST(physics != game, k.doc.name());
+    BOOST_TEST(!(physics && (k.to_role || k.from_role)), k.doc.name());
+    BOOST_TEST(!(game && (k.to_body || k.from_world || k.to_world)), k.doc.name());
+  }
   // A body made from the block with every key, saved before any step, is that block again
   // (its impulse folded into the pending force).
   SceneSpec s;

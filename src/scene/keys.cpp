@@ -41,220 +41,260 @@ void with_travel(const Checker& k, const BlockSpec& b, bool given, At at) {
 Vector unit(Vector v) { return (1.0 / Vector::norm(v)) * v; }
 
 using BK = Key<BlockSpec>;
+using W = const Components&;  // the world a block is saved from
 
-// In the order of the writer (--print-scene's output) and the doc.
+// In the order of the writer (--print-scene's output) and the doc. pos, size,
+// mass, colour and restitution go into the world through the sheet's
+// Block::make (populate, scene.cpp), the others through their to_world.
 const BK block_rows[] = {
-    {{".pos", "[x, y]", "finite", "required", "the top-left corner, px (y grows downwards)"},
-     "(the top-left corner [x, y], px)",
-     [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.pos = r.vec(v, p); },
-     [](ojson& o, const BlockSpec& b) { o["pos"] = vec(b.pos); },
-     [](const Checker& k, const BlockSpec& b, const std::string& at) { k.finite(b.pos, At{at, ".pos"}); },
-     false,
-     [](const Components& k, EntityId e, const SceneSpec&, BlockSpec& b) { b.pos = k.position[e]; }},
-    {{".size", "[width, height]", "integers in [1, 2^20]", "required", "px"},
-     "([width, height], px)",
-     [](const Reader& r, const json& v, const Path& p, BlockSpec& b) {
-       r.pair(v, p, "an array of two integers [width, height]");
-       b.width = r.size_value(v[0], p + "[0]");
-       b.height = r.size_value(v[1], p + "[1]");
-     },
-     [](ojson& o, const BlockSpec& b) { o["size"] = ojson::array({b.width, b.height}); },
-     [](const Checker& k, const BlockSpec& b, const std::string& at) {
-       k.size(b.width, At{at, ".size"});
-       k.size(b.height, At{at, ".size"});
-     },
-     false,
-     [](const Components& k, EntityId e, const SceneSpec&, BlockSpec& b) { b.width = k.box[e].width, b.height = k.box[e].height; }},
-    {{".mass", "number or `\"inf\"`", "> 0", "required", "`\"inf\"` for a fixed body"},
-     "(a number > 0, or \"inf\" for a fixed body)",
-     [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.mass = r.mass(v, p); },
-     [](ojson& o, const BlockSpec& b) { o["mass"] = mass_json(b.mass); },
-     [](const Checker& k, const BlockSpec& b, const std::string& at) { k.mass(b.mass, At{at, ".mass"}); },
-     false,
-     [](const Components& k, EntityId e, const SceneSpec&, BlockSpec& b) { b.mass = k.mass[e]; }},
-    {{".velocity", "[x, y]", "±10^6 per axis", "[0, 0]", "px/ms at start"},
-     "",
-     [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.velocity = r.vec(v, p); },
-     [](ojson& o, const BlockSpec& b) {
-       if (!Vector::is_zero(b.velocity)) o["velocity"] = vec(b.velocity);
-     },
-     [](const Checker& k, const BlockSpec& b, const std::string& at) { k.motion(b.velocity, At{at, ".velocity"}); },
-     false,
-     [](const Components& k, EntityId e, const SceneSpec&, BlockSpec& b) { b.velocity = k.velocity[e]; }},
-    {{".force", "[x, y]", "±10^6 per axis", "[0, 0]",
-      "initial Σf (Q5), turned into a velocity change by Forces on frame 1"},
-     "",
-     [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.force = r.vec(v, p); },
-     [](ojson& o, const BlockSpec& b) {
-       if (!Vector::is_zero(b.force)) o["force"] = vec(b.force);
-     },
-     [](const Checker& k, const BlockSpec& b, const std::string& at) { k.motion(b.force, At{at, ".force"}); },
+    {.doc = {".pos", "[x, y]", "finite", "required", "the top-left corner, px (y grows downwards)"},
+     .missing = "(the top-left corner [x, y], px)",
+     .read = [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.pos = r.vec(v, p); },
+     .write = [](ojson& o, const BlockSpec& b) { o["pos"] = vec(b.pos); },
+     .check = [](const Checker& k, const BlockSpec& b, const std::string& at) { k.finite(b.pos, At{at, ".pos"}); },
+     .from_world = [](W k, EntityId e, const SceneSpec&, BlockSpec& b) { b.pos = k.position[e]; },
+     .to_body = [](const BlockSpec& b, const SceneSpec&, Body& out) { out.pos = b.pos; }},
+    {.doc = {".size", "[width, height]", "integers in [1, 2^20]", "required", "px"},
+     .missing = "([width, height], px)",
+     .read =
+         [](const Reader& r, const json& v, const Path& p, BlockSpec& b) {
+           r.pair(v, p, "an array of two integers [width, height]");
+           b.width = r.size_value(v[0], p + "[0]");
+           b.height = r.size_value(v[1], p + "[1]");
+         },
+     .write = [](ojson& o, const BlockSpec& b) { o["size"] = ojson::array({b.width, b.height}); },
+     .check =
+         [](const Checker& k, const BlockSpec& b, const std::string& at) {
+           k.size(b.width, At{at, ".size"});
+           k.size(b.height, At{at, ".size"});
+         },
+     .from_world = [](W k, EntityId e, const SceneSpec&, BlockSpec& b) { b.width = k.box[e].width, b.height = k.box[e].height; },
+     .to_body = [](const BlockSpec& b, const SceneSpec&, Body& out) { out.width = b.width, out.height = b.height; }},
+    {.doc = {".mass", "number or `\"inf\"`", "> 0", "required", "`\"inf\"` for a fixed body"},
+     .missing = "(a number > 0, or \"inf\" for a fixed body)",
+     .read = [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.mass = r.mass(v, p); },
+     .write = [](ojson& o, const BlockSpec& b) { o["mass"] = mass_json(b.mass); },
+     .check = [](const Checker& k, const BlockSpec& b, const std::string& at) { k.mass(b.mass, At{at, ".mass"}); },
+     .from_world = [](W k, EntityId e, const SceneSpec&, BlockSpec& b) { b.mass = k.mass[e]; },
+     .to_body = [](const BlockSpec& b, const SceneSpec&, Body& out) { out.mass = b.mass; }},
+    {.doc = {".velocity", "[x, y]", "±10^6 per axis", "[0, 0]", "px/ms at start"},
+     .read = [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.velocity = r.vec(v, p); },
+     .write =
+         [](ojson& o, const BlockSpec& b) {
+           if (!Vector::is_zero(b.velocity)) o["velocity"] = vec(b.velocity);
+         },
+     .check = [](const Checker& k, const BlockSpec& b, const std::string& at) { k.motion(b.velocity, At{at, ".velocity"}); },
+     .from_world = [](W k, EntityId e, const SceneSpec&, BlockSpec& b) { b.velocity = k.velocity[e]; },
+     .to_body = [](const BlockSpec& b, const SceneSpec&, Body& out) { out.velocity = b.velocity; },
+     .to_world = [](const Body& b, World& w, EntityId e) { w.components.velocity[e] = b.velocity; }},
+    {.doc = {".force", "[x, y]", "±10^6 per axis", "[0, 0]",
+             "initial Σf (Q5), turned into a velocity change by Forces on frame 1"},
+     .read = [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.force = r.vec(v, p); },
+     .write =
+         [](ojson& o, const BlockSpec& b) {
+           if (!Vector::is_zero(b.force)) o["force"] = vec(b.force);
+         },
+     .check = [](const Checker& k, const BlockSpec& b, const std::string& at) { k.motion(b.force, At{at, ".force"}); },
      // The pending force: an impulse not yet applied is in it.
-     false,
-     [](const Components& k, EntityId e, const SceneSpec&, BlockSpec& b) { b.force = k.sum_forces[e]; }},
-    {{".impulse", "[x, y]", "±10^6 per axis", "[0, 0]",
-      "velocity change × mass on frame 1 (given to Forces as the force impulse/dt)"},
-     "",
-     [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.impulse = r.vec(v, p); },
-     [](ojson& o, const BlockSpec& b) {
-       if (!Vector::is_zero(b.impulse)) o["impulse"] = vec(b.impulse);
-     },
-     [](const Checker& k, const BlockSpec& b, const std::string& at) { k.motion(b.impulse, At{at, ".impulse"}); },
-     false, [](const Components&, EntityId, const SceneSpec&, BlockSpec&) {}},  // in the force (above)
-    {{".color", "`\"#rrggbb\"`", "", "`\"#808080\"`", "its colour"},
-     "",
-     [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.color = r.color(v, p); },
-     [](ojson& o, const BlockSpec& b) {
-       if (!(b.color == default_block_color)) o["color"] = hex(b.color);
-     },
-     nullptr, false,
-     [](const Components& k, EntityId e, const SceneSpec&, BlockSpec& b) { b.color = k.color[e]; }},
-    {{".restitution", "number", "[0, 1]", "the world's", "a pair uses the smaller of its two"},
-     "",
-     [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.restitution = r.restitution(v, p); },
-     [](ojson& o, const BlockSpec& b) {
-       if (b.restitution) o["restitution"] = *b.restitution;
-     },
-     [](const Checker& k, const BlockSpec& b, const std::string& at) {
-       if (b.restitution) k.restitution(*b.restitution, At{at, ".restitution"});
-     },
-     false,  // only where it differs from the world's (which the walls and unset blocks take)
-     [](const Components& k, EntityId e, const SceneSpec& from, BlockSpec& b) {
-       if (k.restitution[e] != from.restitution) b.restitution = k.restitution[e];
-     }},
-    {{".friction", "number", "[0, 1000]", "the world's",
-      "Coulomb's coefficient; a pair uses sqrt(mu_a mu_b) ([game-physics.md](game-physics.md))"},
-     "",
-     [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.contact.friction = r.number(v, p); },
-     [](ojson& o, const BlockSpec& b) {
-       if (b.contact.friction) o["friction"] = *b.contact.friction;
-     },
-     [](const Checker& k, const BlockSpec& b, const std::string& at) {
-       if (b.contact.friction) k.friction(*b.contact.friction, At{at, ".friction"});
-     },
-     true,
-     [](const Components& k, EntityId e, const SceneSpec& from, BlockSpec& b) {
-       if (k.friction[e] != from.friction) b.contact.friction = k.friction[e];
-     }},
-    {{".category", "integer", "[0, 2^32 - 1]", "1",
-      "bits: a pair interacts only if each one's category meets the other's mask"},
-     "",
-     [](const Reader& r, const json& v, const Path& p, BlockSpec& b) {
-       b.contact.rules.category = static_cast<std::uint32_t>(r.integer(v, p, 0, bits));
-     },
-     [](ojson& o, const BlockSpec& b) {
-       if (b.contact.rules.category != ContactRules{}.category) o["category"] = b.contact.rules.category;
-     },
-     nullptr, true,
-     [](const Components& k, EntityId e, const SceneSpec&, BlockSpec& b) { b.contact.rules.category = k.rules(e).category; }},
-    {{".mask", "integer", "[0, 2^32 - 1]", "4294967295", "bits: the categories it meets"},
-     "",
-     [](const Reader& r, const json& v, const Path& p, BlockSpec& b) {
-       b.contact.rules.mask = static_cast<std::uint32_t>(r.integer(v, p, 0, bits));
-     },
-     [](ojson& o, const BlockSpec& b) {
-       if (b.contact.rules.mask != ContactRules{}.mask) o["mask"] = b.contact.rules.mask;
-     },
-     nullptr, true,
-     [](const Components& k, EntityId e, const SceneSpec&, BlockSpec& b) { b.contact.rules.mask = k.rules(e).mask; }},
-    {{".sensor", "boolean", "", "false", "overlaps give contact events, never a correction or an impulse"},
-     "",
-     [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.contact.rules.sensor = r.boolean(v, p); },
-     [](ojson& o, const BlockSpec& b) {
-       if (b.contact.rules.sensor) o["sensor"] = true;
-     },
-     nullptr, true,
-     [](const Components& k, EntityId e, const SceneSpec&, BlockSpec& b) { b.contact.rules.sensor = k.rules(e).sensor; }},
-    {{".one_way", "string", "`\"up\"`, `\"down\"`, `\"left\"`, `\"right\"`", "–", "stops bodies on that face only"},
-     "",
-     [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.contact.rules.one_way = face_named(r, v, p); },
-     [](ojson& o, const BlockSpec& b) {
-       if (b.contact.rules.one_way != Face::none) o["one_way"] = faces[static_cast<int>(b.contact.rules.one_way)];
-     },
-     nullptr, true,
-     [](const Components& k, EntityId e, const SceneSpec&, BlockSpec& b) { b.contact.rules.one_way = k.rules(e).one_way; }},
-    {{".tag", "string", "a-z, 0-9, `_`, `-`; at most 32", "\"\"",
-      "what the block is in a game (`player`, `coin`, `goal`, `platform`, `sling`, `target`, `crate`, ...); the "
-      "physics ignores it, the sprite style draws by it"},
-     "",
-     [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.tag = r.text(v, p); },
-     [](ojson& o, const BlockSpec& b) {
-       if (!b.tag.empty()) o["tag"] = b.tag;
-     },
-     [](const Checker& k, const BlockSpec& b, const std::string& at) {
-       if (!tag_ok(b.tag))
-         k.fail(At{at, ".tag"}, "must be at most 32 characters of a-z, 0-9, '_' and '-' (got \"" + b.tag + "\")");
-     },
-     false, nullptr, [](const BlockSpec& b, const Body&, BlockRole& role) { role.tag = b.tag; },
-     [](const BlockRole& role, BlockSpec& b) { b.tag = role.tag; }},
-    {{".strength", "number", "> 0, finite", "–", "the normal impulse in one step that breaks a target ([games.md](games.md))"},
-     "",
-     [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.strength = r.number(v, p); },
-     [](ojson& o, const BlockSpec& b) {
-       if (b.strength) o["strength"] = *b.strength;
-     },
-     [](const Checker& k, const BlockSpec& b, const std::string& at) { positive(k, b.strength, At{at, ".strength"}); },
-     false, nullptr, [](const BlockSpec& b, const Body&, BlockRole& role) { role.strength = b.strength.value_or(infinity); },
-     [](const BlockRole& role, BlockSpec& b) {
-       if (std::isfinite(role.strength)) b.strength = role.strength;
-     }},
-    {{".travel", "number", "> 0, finite", "–",
-      "px: how far a block tagged `platform` goes along its velocity before turning back (only on such a block; a "
-      "platform needs both)"},
-     "",
-     [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.travel = r.number(v, p); },
-     [](ojson& o, const BlockSpec& b) {
-       if (b.travel) o["travel"] = *b.travel;
-     },
-     [](const Checker& k, const BlockSpec& b, const std::string& at) {
-       positive(k, b.travel, At{at, ".travel"});
-       if (b.travel && b.tag != "platform")
-         k.fail(At{at, ".travel"}, "only a block with \"tag\": \"platform\" travels (got the tag \"" + b.tag + "\")");
-     },
-     false, nullptr, [](const BlockSpec& b, const Body&, BlockRole& role) { role.travel = b.travel.value_or(infinity); },
-     [](const BlockRole& role, BlockSpec& b) {
-       if (std::isfinite(role.travel)) b.travel = role.travel;
-     }},
-    {{".travel_from", "[x, y]", "finite", "`pos`",
-      "where the platform's travel starts (`--save` writes it for a platform on its way)"},
-     "",
-     [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.travel_from = r.vec(v, p); },
-     [](ojson& o, const BlockSpec& b) {
-       if (b.travel_from) o["travel_from"] = vec(*b.travel_from);
-     },
-     [](const Checker& k, const BlockSpec& b, const std::string& at) {
-       if (b.travel_from) k.finite(*b.travel_from, At{at, ".travel_from"});
-       with_travel(k, b, b.travel_from.has_value(), At{at, ".travel_from"});
-     },
-     false, nullptr,
-     [](const BlockSpec& b, const Body& body, BlockRole& role) {
-       if (b.travel) role.travel_from = b.travel_from.value_or(body.pos);
-     },
+     .from_world = [](W k, EntityId e, const SceneSpec&, BlockSpec& b) { b.force = k.sum_forces[e]; },
+     .to_body = [](const BlockSpec& b, const SceneSpec&, Body& out) { out.force = b.force; },
+     // An impulse J changes the velocity by J/m. Forces applies Σf·dt/m on the
+     // first frame, so the initial force J/dt is exactly that impulse.
+     .to_world =
+         [](const Body& b, World& w, EntityId e) {
+           w.components.sum_forces[e] = b.force + Vector::mult(1.0 / w.params.dt, b.impulse);
+         }},
+    {.doc = {".impulse", "[x, y]", "±10^6 per axis", "[0, 0]",
+             "velocity change × mass on frame 1 (given to Forces as the force impulse/dt)"},
+     .read = [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.impulse = r.vec(v, p); },
+     .write =
+         [](ojson& o, const BlockSpec& b) {
+           if (!Vector::is_zero(b.impulse)) o["impulse"] = vec(b.impulse);
+         },
+     .check = [](const Checker& k, const BlockSpec& b, const std::string& at) { k.motion(b.impulse, At{at, ".impulse"}); },
+     .from_world = [](W, EntityId, const SceneSpec&, BlockSpec&) {},  // in the force (above), as to_world
+     .to_body = [](const BlockSpec& b, const SceneSpec&, Body& out) { out.impulse = b.impulse; }},
+    {.doc = {".color", "`\"#rrggbb\"`", "", "`\"#808080\"`", "its colour"},
+     .read = [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.color = r.color(v, p); },
+     .write =
+         [](ojson& o, const BlockSpec& b) {
+           if (!(b.color == default_block_color)) o["color"] = hex(b.color);
+         },
+     .from_world = [](W k, EntityId e, const SceneSpec&, BlockSpec& b) { b.color = k.color[e]; },
+     .to_body = [](const BlockSpec& b, const SceneSpec&, Body& out) { out.color = b.color; }},
+    {.doc = {".restitution", "number", "[0, 1]", "the world's", "a pair uses the smaller of its two"},
+     .read = [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.restitution = r.restitution(v, p); },
+     .write =
+         [](ojson& o, const BlockSpec& b) {
+           if (b.restitution) o["restitution"] = *b.restitution;
+         },
+     .check =
+         [](const Checker& k, const BlockSpec& b, const std::string& at) {
+           if (b.restitution) k.restitution(*b.restitution, At{at, ".restitution"});
+         },
+     // Only where it differs from the world's (which the walls and unset blocks take).
+     .from_world =
+         [](W k, EntityId e, const SceneSpec& from, BlockSpec& b) {
+           if (k.restitution[e] != from.restitution) b.restitution = k.restitution[e];
+         },
+     .to_body = [](const BlockSpec& b, const SceneSpec& s, Body& out) { out.restitution = b.restitution.value_or(s.restitution); }},
+    {.doc = {".friction", "number", "[0, 1000]", "the world's",
+             "Coulomb's coefficient; a pair uses sqrt(mu_a mu_b) ([game-physics.md](game-physics.md))"},
+     .read = [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.contact.friction = r.number(v, p); },
+     .write =
+         [](ojson& o, const BlockSpec& b) {
+           if (b.contact.friction) o["friction"] = *b.contact.friction;
+         },
+     .check =
+         [](const Checker& k, const BlockSpec& b, const std::string& at) {
+           if (b.contact.friction) k.friction(*b.contact.friction, At{at, ".friction"});
+         },
+     .contact = true,
+     .from_world =
+         [](W k, EntityId e, const SceneSpec& from, BlockSpec& b) {
+           if (k.friction[e] != from.friction) b.contact.friction = k.friction[e];
+         },
+     .to_body = [](const BlockSpec& b, const SceneSpec& s, Body& out) { out.friction = b.contact.friction.value_or(s.friction); },
+     .to_world = [](const Body& b, World& w, EntityId e) { w.components.friction[e] = b.friction; }},
+    {.doc = {".category", "integer", "[0, 2^32 - 1]", "1",
+             "bits: a pair interacts only if each one's category meets the other's mask"},
+     .read =
+         [](const Reader& r, const json& v, const Path& p, BlockSpec& b) {
+           b.contact.rules.category = static_cast<std::uint32_t>(r.integer(v, p, 0, bits));
+         },
+     .write =
+         [](ojson& o, const BlockSpec& b) {
+           if (b.contact.rules.category != ContactRules{}.category) o["category"] = b.contact.rules.category;
+         },
+     .contact = true,
+     .from_world = [](W k, EntityId e, const SceneSpec&, BlockSpec& b) { b.contact.rules.category = k.rules(e).category; },
+     .to_body = [](const BlockSpec& b, const SceneSpec&, Body& out) { out.rules.category = b.contact.rules.category; },
+     // The four keys of the contact rules at once (the world keeps them only for a body that has some).
+     .to_world =
+         [](const Body& b, World& w, EntityId e) {
+           if (!b.rules.plain()) w.components.set_rules(e, b.rules);
+         }},
+    {.doc = {".mask", "integer", "[0, 2^32 - 1]", "4294967295", "bits: the categories it meets"},
+     .read =
+         [](const Reader& r, const json& v, const Path& p, BlockSpec& b) {
+           b.contact.rules.mask = static_cast<std::uint32_t>(r.integer(v, p, 0, bits));
+         },
+     .write =
+         [](ojson& o, const BlockSpec& b) {
+           if (b.contact.rules.mask != ContactRules{}.mask) o["mask"] = b.contact.rules.mask;
+         },
+     .contact = true,
+     .from_world = [](W k, EntityId e, const SceneSpec&, BlockSpec& b) { b.contact.rules.mask = k.rules(e).mask; },
+     .to_body = [](const BlockSpec& b, const SceneSpec&, Body& out) { out.rules.mask = b.contact.rules.mask; }},
+    {.doc = {".sensor", "boolean", "", "false", "overlaps give contact events, never a correction or an impulse"},
+     .read = [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.contact.rules.sensor = r.boolean(v, p); },
+     .write =
+         [](ojson& o, const BlockSpec& b) {
+           if (b.contact.rules.sensor) o["sensor"] = true;
+         },
+     .contact = true,
+     .from_world = [](W k, EntityId e, const SceneSpec&, BlockSpec& b) { b.contact.rules.sensor = k.rules(e).sensor; },
+     .to_body = [](const BlockSpec& b, const SceneSpec&, Body& out) { out.rules.sensor = b.contact.rules.sensor; }},
+    {.doc = {".one_way", "string", "`\"up\"`, `\"down\"`, `\"left\"`, `\"right\"`", "–", "stops bodies on that face only"},
+     .read = [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.contact.rules.one_way = face_named(r, v, p); },
+     .write =
+         [](ojson& o, const BlockSpec& b) {
+           if (b.contact.rules.one_way != Face::none) o["one_way"] = faces[static_cast<int>(b.contact.rules.one_way)];
+         },
+     .contact = true,
+     .from_world = [](W k, EntityId e, const SceneSpec&, BlockSpec& b) { b.contact.rules.one_way = k.rules(e).one_way; },
+     .to_body = [](const BlockSpec& b, const SceneSpec&, Body& out) { out.rules.one_way = b.contact.rules.one_way; }},
+    {.doc = {".tag", "string", "a-z, 0-9, `_`, `-`; at most 32", "\"\"",
+             "what the block is in a game (`player`, `coin`, `goal`, `platform`, `sling`, `target`, `crate`, ...); "
+             "the physics ignores it, the sprite style draws by it"},
+     .read = [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.tag = r.text(v, p); },
+     .write =
+         [](ojson& o, const BlockSpec& b) {
+           if (!b.tag.empty()) o["tag"] = b.tag;
+         },
+     .check =
+         [](const Checker& k, const BlockSpec& b, const std::string& at) {
+           if (!tag_ok(b.tag))
+             k.fail(At{at, ".tag"}, "must be at most 32 characters of a-z, 0-9, '_' and '-' (got \"" + b.tag + "\")");
+         },
+     .to_role = [](const BlockSpec& b, const Body&, BlockRole& role) { role.tag = b.tag; },
+     .from_role = [](const BlockRole& role, BlockSpec& b) { b.tag = role.tag; }},
+    {.doc = {".strength", "number", "> 0, finite", "–",
+             "the normal impulse in one step that breaks a target ([games.md](games.md))"},
+     .read = [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.strength = r.number(v, p); },
+     .write =
+         [](ojson& o, const BlockSpec& b) {
+           if (b.strength) o["strength"] = *b.strength;
+         },
+     .check = [](const Checker& k, const BlockSpec& b, const std::string& at) { positive(k, b.strength, At{at, ".strength"}); },
+     .to_role = [](const BlockSpec& b, const Body&, BlockRole& role) { role.strength = b.strength.value_or(infinity); },
+     .from_role =
+         [](const BlockRole& role, BlockSpec& b) {
+           if (std::isfinite(role.strength)) b.strength = role.strength;
+         }},
+    {.doc = {".travel", "number", "> 0, finite", "–",
+             "px: how far a block tagged `platform` goes along its velocity before turning back (only on such a "
+             "block; a platform needs both)"},
+     .read = [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.travel = r.number(v, p); },
+     .write =
+         [](ojson& o, const BlockSpec& b) {
+           if (b.travel) o["travel"] = *b.travel;
+         },
+     .check =
+         [](const Checker& k, const BlockSpec& b, const std::string& at) {
+           positive(k, b.travel, At{at, ".travel"});
+           if (b.travel && b.tag != "platform")
+             k.fail(At{at, ".travel"}, "only a block with \"tag\": \"platform\" travels (got the tag \"" + b.tag + "\")");
+         },
+     .to_role = [](const BlockSpec& b, const Body&, BlockRole& role) { role.travel = b.travel.value_or(infinity); },
+     .from_role =
+         [](const BlockRole& role, BlockSpec& b) {
+           if (std::isfinite(role.travel)) b.travel = role.travel;
+         }},
+    {.doc = {".travel_from", "[x, y]", "finite", "`pos`",
+             "where the platform's travel starts (`--save` writes it for a platform on its way)"},
+     .read = [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.travel_from = r.vec(v, p); },
+     .write =
+         [](ojson& o, const BlockSpec& b) {
+           if (b.travel_from) o["travel_from"] = vec(*b.travel_from);
+         },
+     .check =
+         [](const Checker& k, const BlockSpec& b, const std::string& at) {
+           if (b.travel_from) k.finite(*b.travel_from, At{at, ".travel_from"});
+           with_travel(k, b, b.travel_from.has_value(), At{at, ".travel_from"});
+         },
+     .to_role =
+         [](const BlockSpec& b, const Body& body, BlockRole& role) {
+           if (b.travel) role.travel_from = b.travel_from.value_or(body.pos);
+         },
      // Written only where the default would not give it back: a platform on its way.
-     [](const BlockRole& role, BlockSpec& b) {
-       if (std::isfinite(role.travel) && !(role.travel_from == b.pos)) b.travel_from = role.travel_from;
-     }},
-    {{".travel_dir", "[x, y]", "a unit vector", "the velocity's direction",
-      "the direction of the travel (`--save` writes it for a platform on its way back)"},
-     "",
-     [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.travel_dir = r.vec(v, p); },
-     [](ojson& o, const BlockSpec& b) {
-       if (b.travel_dir) o["travel_dir"] = vec(*b.travel_dir);
-     },
-     [](const Checker& k, const BlockSpec& b, const std::string& at) {
-       if (b.travel_dir && !(std::abs(Vector::norm(*b.travel_dir) - 1.0) <= 1e-9))
-         k.fail(At{at, ".travel_dir"},
-                "must be a unit vector (got [" + num(b.travel_dir->x) + ", " + num(b.travel_dir->y) + "])");
-       with_travel(k, b, b.travel_dir.has_value(), At{at, ".travel_dir"});
-     },
-     false, nullptr,
-     [](const BlockSpec& b, const Body& body, BlockRole& role) {
-       if (b.travel) role.travel_dir = b.travel_dir.value_or(unit(body.velocity));
-     },
+     .from_role =
+         [](const BlockRole& role, BlockSpec& b) {
+           if (std::isfinite(role.travel) && !(role.travel_from == b.pos)) b.travel_from = role.travel_from;
+         }},
+    {.doc = {".travel_dir", "[x, y]", "a unit vector", "the velocity's direction",
+             "the direction of the travel (`--save` writes it for a platform on its way back)"},
+     .read = [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.travel_dir = r.vec(v, p); },
+     .write =
+         [](ojson& o, const BlockSpec& b) {
+           if (b.travel_dir) o["travel_dir"] = vec(*b.travel_dir);
+         },
+     .check =
+         [](const Checker& k, const BlockSpec& b, const std::string& at) {
+           if (b.travel_dir && !(std::abs(Vector::norm(*b.travel_dir) - 1.0) <= 1e-9))
+             k.fail(At{at, ".travel_dir"},
+                    "must be a unit vector (got [" + num(b.travel_dir->x) + ", " + num(b.travel_dir->y) + "])");
+           with_travel(k, b, b.travel_dir.has_value(), At{at, ".travel_dir"});
+         },
+     .to_role =
+         [](const BlockSpec& b, const Body& body, BlockRole& role) {
+           if (b.travel) role.travel_dir = b.travel_dir.value_or(unit(body.velocity));
+         },
      // Written only where the default would not give it back: a platform on its way back.
-     [](const BlockRole& role, BlockSpec& b) {
-       if (std::isfinite(role.travel) && !(role.travel_dir == unit(b.velocity))) b.travel_dir = role.travel_dir;
-     }},
+     .from_role =
+         [](const BlockRole& role, BlockSpec& b) {
+           if (std::isfinite(role.travel) && !(role.travel_dir == unit(b.velocity))) b.travel_dir = role.travel_dir;
+         }},
 };
 
 using WK = Key<SceneSpec>;
@@ -525,6 +565,20 @@ BlockSpec block_from_world(const Components& k, EntityId e, const SceneSpec& fro
   for (const auto& key : scene_io::block_keys())  // after: a platform's compare with its position and velocity
     if (key.from_role) key.from_role(role, b);
   return b;
+}
+
+Body body_of(const BlockSpec& b, const SceneSpec& s, std::size_t entry, std::int64_t index) {
+  Body out;
+  out.entry = entry;
+  out.index = index;
+  for (const auto& key : scene_io::block_keys())
+    if (key.to_body) key.to_body(b, s, out);
+  return out;
+}
+
+void to_world(const Body& b, World& w, EntityId e) {
+  for (const auto& key : scene_io::block_keys())
+    if (key.to_world) key.to_world(b, w, e);
 }
 
 void check_contact_keys(const scene_check::Checker& k, const ContactSpec& c, const std::string& path) {

@@ -5,9 +5,8 @@
 // docs/scenes.md (generated: key_tables_markdown; tests/test_keys.cpp fails
 // when the doc differs) and Save (from the world, or from a body's role in a
 // game) all go through these rows. Adding a block key: its field in
-// BlockSpec (scene.hpp; and in BlockRole for a key the games read) and its
-// row in keys.cpp; a key the physics reads also goes from the block to the
-// world, in Body and populate (scene.cpp).
+// BlockSpec (scene.hpp; and in Body for a key the physics reads, in
+// BlockRole for one the games read) and its row in keys.cpp.
 #pragma once
 
 #include <span>
@@ -33,17 +32,22 @@ template <class Spec>
 struct Key {
   KeyDoc doc;
   // A required key: what its absence's message adds, e.g. "([width, height], px)"; "" if optional.
-  std::string_view missing;
+  std::string_view missing = {};
   // v: the key's value; path: the key's path (".name" included).
-  void (*read)(const Reader& r, const json& v, const Path& path, Spec& out);
+  void (*read)(const Reader& r, const json& v, const Path& path, Spec& out) = nullptr;
   // Writes the key into o where it is not its default (or always, if the writer always did).
-  void (*write)(ojson& o, const Spec& s);
+  void (*write)(ojson& o, const Spec& s) = nullptr;
   // The key's meaning (range, cross-key rules); at: the key's path; null: nothing to check.
   void (*check)(const scene_check::Checker& k, const Spec& s, const std::string& base) = nullptr;
   bool contact = false;  // a contact key: a random entry's too (for all its bodies)
   // Save: the key's value in a block saved from body e of a world made from
   // `from` (null: a key for the games, saved from the body's role below).
   void (*from_world)(const Components& k, EntityId e, const SceneSpec& from, Spec& out) = nullptr;
+  // Building: the key's value in the body a block makes (`s` its scene: the
+  // world's defaults), and from the body into the world's entity e beyond
+  // what the sheet's Block::make takes (null: nothing to do, or Block::make's).
+  void (*to_body)(const Spec& b, const SceneSpec& s, Body& out) = nullptr;
+  void (*to_world)(const Body& b, World& w, EntityId e) = nullptr;
   // A key for the games: its part in the body's role (roles_by_entity; `body`
   // the body the block made), and back into a block saved from the world (Save;
   // `out` holds the body as it is now).
@@ -88,6 +92,11 @@ namespace physics {
 // The validator's part for a block's keys, in the table's order (scene.cpp).
 void check_block_keys(const scene_check::Checker& k, const BlockSpec& b, const std::string& path);
 void check_contact_keys(const scene_check::Checker& k, const ContactSpec& c, const std::string& path);
+
+// The body block b makes (entry and index: where it came from), and what its
+// keys put into entity e of w beyond Block::make (populate, scene.cpp).
+Body body_of(const BlockSpec& b, const SceneSpec& s, std::size_t entry, std::int64_t index);
+void to_world(const Body& b, World& w, EntityId e);
 
 // A body's role from its block's keys (walls aside).
 BlockRole role_of(const BlockSpec& b, const Body& body);

@@ -147,21 +147,6 @@ void check_placement(const Checker& k, const SceneSpec& s, const std::vector<Bod
   }
 }
 
-Body body_of(const BlockSpec& b, const SceneSpec& s, std::size_t entry, std::int64_t index) {
-  return Body{b.pos,
-              b.width,
-              b.height,
-              b.mass,
-              b.velocity,
-              b.force,
-              b.impulse,
-              b.color,
-              b.restitution.value_or(s.restitution),
-              b.contact.friction.value_or(s.friction),
-              b.contact.rules,
-              entry,
-              index};
-}
 
 void expand_random(const RandomSpec& r, const SceneSpec& s, std::size_t entry, std::vector<Body>& out) {
   const double world_e = s.restitution;
@@ -353,12 +338,13 @@ std::vector<Body> expand(const SceneSpec& s, const std::string& source) {
     const BlockEntry& e = s.blocks[i];
     if (const auto* b = std::get_if<BlockSpec>(&e)) out.push_back(body_of(*b, s, i, 0));
     if (const auto* g = std::get_if<GridSpec>(&e)) {
-      std::int64_t n = 0;
+      // Equal bodies but for their position: the first one's, moved.
+      Body body = body_of(g->first, s, i, 0);
       for (int r = 0; r < g->rows; ++r)
         for (int c = 0; c < g->columns; ++c) {
-          BlockSpec b = g->first;
-          b.pos = Vector{g->first.pos.x + g->step.x * c, g->first.pos.y + g->step.y * r};
-          out.push_back(body_of(b, s, i, n++));
+          body.pos = Vector{g->first.pos.x + g->step.x * c, g->first.pos.y + g->step.y * r};
+          out.push_back(body);
+          ++body.index;
         }
     }
     if (const auto* r = std::get_if<RandomSpec>(&e)) expand_random(*r, s, i, out);
@@ -390,12 +376,7 @@ void populate(World& w, const SceneSpec& s, const std::vector<Body>& bodies) {
   w.health.watch(t, t, s.width - t, s.height - t, static_cast<EntityId>(w.components.size()));
   for (const Body& b : bodies) {
     const auto e = Block::make(w, b.pos.x, b.pos.y, b.width, b.height, b.color, b.mass, b.restitution);
-    w.components.velocity[e.id] = b.velocity;
-    // An impulse J changes the velocity by J/m. Forces applies Σf·dt/m on the
-    // first frame, so the initial force J/dt is exactly that impulse.
-    w.components.sum_forces[e.id] = b.force + Vector::mult(1.0 / w.params.dt, b.impulse);
-    w.components.friction[e.id] = b.friction;
-    if (!b.rules.plain()) w.components.set_rules(e.id, b.rules);
+    to_world(b, w, e.id);  // the other keys (keys.cpp: velocity, force and impulse, friction, contact rules)
   }
   if (s.state) {
     w.frame = s.state->frame;
