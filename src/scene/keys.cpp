@@ -21,6 +21,11 @@ Face face_named(const Reader& r, const json& v, const Path& path) {
   r.fail(path, "must be \"up\", \"down\", \"left\" or \"right\" (got " + r.got(v) + ")");
 }
 
+void in_range(const Checker& k, int v, int lo, int hi, At at) {
+  if (v < lo || v > hi)
+    k.fail(at, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] (got " + std::to_string(v) + ")");
+}
+
 bool tag_ok(const std::string& tag) {
   return tag.size() <= 32 && std::all_of(tag.begin(), tag.end(), [](char c) {
            return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
@@ -299,42 +304,62 @@ const BK block_rows[] = {
 
 using WK = Key<SceneSpec>;
 
-// In the writer's order; the validator (scene.cpp, validate) judges the values.
+// In the writer's order.
 const WK world_rows[] = {
     {{".width", "integer", "[1, 2^20]", "800", "px"},
      "",
      [](const Reader& r, const json& v, const Path& p, SceneSpec& s) {
        s.width = static_cast<int>(r.integer(v, p, 1, max_world_size));
      },
-     [](ojson& o, const SceneSpec& s) { o["width"] = s.width; }},
+     [](ojson& o, const SceneSpec& s) { o["width"] = s.width; },
+     [](const Checker& k, const SceneSpec& s, const std::string& at) { in_range(k, s.width, 1, max_world_size, At{at, ".width"}); }},
     {{".height", "integer", "[1, 2^20]", "600", "px"},
      "",
      [](const Reader& r, const json& v, const Path& p, SceneSpec& s) {
        s.height = static_cast<int>(r.integer(v, p, 1, max_world_size));
      },
-     [](ojson& o, const SceneSpec& s) { o["height"] = s.height; }},
+     [](ojson& o, const SceneSpec& s) { o["height"] = s.height; },
+     [](const Checker& k, const SceneSpec& s, const std::string& at) { in_range(k, s.height, 1, max_world_size, At{at, ".height"}); }},
     {{".dt", "number", "[10^-6, 10^6]", "16.666666666666668", "ms, the time of a frame"},
      "",
      [](const Reader& r, const json& v, const Path& p, SceneSpec& s) { s.params.dt = r.number(v, p); },
-     [](ojson& o, const SceneSpec& s) { o["dt"] = s.params.dt; }},
+     [](ojson& o, const SceneSpec& s) { o["dt"] = s.params.dt; },
+     [](const Checker& k, const SceneSpec& s, const std::string& at) {
+       const double dt = s.params.dt;
+       const At a{at, ".dt"};
+       if (!std::isfinite(dt)) k.fail(a, "must be a finite number (got " + num(dt) + ")");
+       if (dt <= 0.0) k.fail(a, "must be > 0 (got " + num(dt) + ")");
+       if (dt < min_dt) k.fail(a, "must be >= " + num(min_dt) + " ms (got " + num(dt) + ")");
+       if (dt > max_dt) k.fail(a, "must be <= " + num(max_dt) + " ms (got " + num(dt) + ")");
+     }},
     {{".substeps", "integer", "[1, 1000]", "1", "Forces, Move and Collision run that many times a frame with dt/substeps"},
      "",
      [](const Reader& r, const json& v, const Path& p, SceneSpec& s) {
        s.params.substeps = static_cast<int>(r.integer(v, p, 1, max_substeps));
      },
-     [](ojson& o, const SceneSpec& s) { o["substeps"] = s.params.substeps; }},
+     [](ojson& o, const SceneSpec& s) { o["substeps"] = s.params.substeps; },
+     [](const Checker& k, const SceneSpec& s, const std::string& at) {
+       in_range(k, s.params.substeps, 1, max_substeps, At{at, ".substeps"});
+     }},
     {{".gravity", "[x, y]", "±10^6 per axis", "[0, 0]", "px/ms², applied by Forces to finite masses"},
      "",
      [](const Reader& r, const json& v, const Path& p, SceneSpec& s) { s.params.gravity = r.vec(v, p); },
-     [](ojson& o, const SceneSpec& s) { o["gravity"] = vec(s.params.gravity); }},
+     [](ojson& o, const SceneSpec& s) { o["gravity"] = vec(s.params.gravity); },
+     [](const Checker& k, const SceneSpec& s, const std::string& at) { k.motion(s.params.gravity, At{at, ".gravity"}); }},
     {{".restitution", "number", "[0, 1]", "1.0", "the walls', and the blocks' that give none (a pair uses the smaller)"},
      "",
      [](const Reader& r, const json& v, const Path& p, SceneSpec& s) { s.restitution = r.restitution(v, p); },
-     [](ojson& o, const SceneSpec& s) { o["restitution"] = s.restitution; }},
+     [](ojson& o, const SceneSpec& s) { o["restitution"] = s.restitution; },
+     [](const Checker& k, const SceneSpec& s, const std::string& at) { k.restitution(s.restitution, At{at, ".restitution"}); }},
     {{".walls", "boolean", "", "true", "the four walls of Q1 around width × height (the world must then exceed 80×80)"},
      "",
      [](const Reader& r, const json& v, const Path& p, SceneSpec& s) { s.walls = r.boolean(v, p); },
-     [](ojson& o, const SceneSpec& s) { o["walls"] = s.walls; }},
+     [](ojson& o, const SceneSpec& s) { o["walls"] = s.walls; },
+     [](const Checker& k, const SceneSpec& s, const std::string& at) {
+       if (s.walls && (s.width <= 2 * wall_thickness || s.height <= 2 * wall_thickness))
+         k.fail(At{at, ".walls"}, "the world must be larger than " + std::to_string(2 * wall_thickness) + "x" +
+                                      std::to_string(2 * wall_thickness) + " px to hold its walls");
+     }},
     {{".systems", "array of strings", "`\"draw\"`, `\"move\"`, `\"forces\"`, `\"collision\"`", "all four",
       "the systems created and updated each frame, only those"},
      "",
@@ -376,14 +401,18 @@ const WK world_rows[] = {
      [](const Reader& r, const json& v, const Path& p, SceneSpec& s) {
        s.params.iterations = static_cast<int>(r.integer(v, p, 1, max_iterations));
      },
-     [](ojson& o, const SceneSpec& s) { o["iterations"] = s.params.iterations; }},
+     [](ojson& o, const SceneSpec& s) { o["iterations"] = s.params.iterations; },
+     [](const Checker& k, const SceneSpec& s, const std::string& at) {
+       in_range(k, s.params.iterations, 1, max_iterations, At{at, ".iterations"});
+     }},
     {{".friction", "number", "[0, 1000]", "0",
       "the walls', and the blocks' that give none (a pair uses sqrt(mu_a mu_b)); written only when used"},
      "",
      [](const Reader& r, const json& v, const Path& p, SceneSpec& s) { s.friction = r.number(v, p); },
      [](ojson& o, const SceneSpec& s) {
        if (s.friction != 0.0) o["friction"] = s.friction;  // beyond the sheet: only when used
-     }},
+     },
+     [](const Checker& k, const SceneSpec& s, const std::string& at) { k.friction(s.friction, At{at, ".friction"}); }},
     {{".integrator", "string", "`\"course\"`, `\"exact\"`", "`\"course\"`",
       "the sheet's symplectic Euler, or x += v h + a h²/2 in a substep (free flight exact, "
       "[numerics.md](numerics.md)); written only when `\"exact\"`"},

@@ -256,28 +256,9 @@ std::int64_t validation_count() { return validations.load(std::memory_order_rela
 void validate(const SceneSpec& s, const std::string& source) {
   validations.fetch_add(1, std::memory_order_relaxed);
   const Checker k{source};
-  if (s.width < 1 || s.width > max_world_size)
-    k.fail("world.width", "must be in [1, " + std::to_string(max_world_size) + "] (got " + std::to_string(s.width) + ")");
-  if (s.height < 1 || s.height > max_world_size)
-    k.fail("world.height",
-           "must be in [1, " + std::to_string(max_world_size) + "] (got " + std::to_string(s.height) + ")");
-  if (s.walls && (s.width <= 2 * wall_thickness || s.height <= 2 * wall_thickness))
-    k.fail("world.walls", "the world must be larger than " + std::to_string(2 * wall_thickness) + "x" +
-                              std::to_string(2 * wall_thickness) + " px to hold its walls");
+  for (const auto& key : scene_io::world_keys())  // the world's keys: their rows (keys.cpp)
+    if (key.check) key.check(k, s, "world");
   const Params& p = s.params;
-  if (!std::isfinite(p.dt)) k.fail("world.dt", "must be a finite number (got " + num(p.dt) + ")");
-  if (p.dt <= 0.0) k.fail("world.dt", "must be > 0 (got " + num(p.dt) + ")");
-  if (p.dt < min_dt) k.fail("world.dt", "must be >= " + num(min_dt) + " ms (got " + num(p.dt) + ")");
-  if (p.substeps < 1 || p.substeps > max_substeps)
-    k.fail("world.substeps",
-           "must be in [1, " + std::to_string(max_substeps) + "] (got " + std::to_string(p.substeps) + ")");
-  if (p.iterations < 1 || p.iterations > max_iterations)
-    k.fail("world.iterations",
-           "must be in [1, " + std::to_string(max_iterations) + "] (got " + std::to_string(p.iterations) + ")");
-  k.motion(p.gravity, At{std::string("world.gravity")});
-  if (p.dt > max_dt) k.fail("world.dt", "must be <= " + num(max_dt) + " ms (got " + num(p.dt) + ")");
-  k.restitution(s.restitution, At{std::string("world.restitution")});
-  k.friction(s.friction, At{std::string("world.friction")});
   if (body_count(s) > max_bodies)
     k.fail("blocks", "too many bodies (more than " + std::to_string(max_bodies) + ")");
   if (s.state) check_state(k, s);
