@@ -1,12 +1,14 @@
 // The keys of a scene file, one row each: its name, type, range, default and
-// doc line, and for the keys of a block (and a grid) and of the world how it
-// is read, checked and written. The reader (scene_json.cpp), the validator
-// (scene.cpp), the writer (--print-scene, --save) and the key tables of
-// docs/scenes.md (generated: key_tables_markdown; tests/test_keys.cpp fails
-// when the doc differs) and Save (from the world, or from a body's role in a
-// game) all go through these rows. Adding a block key: its field in
-// BlockSpec (scene.hpp; and in Body for a key the physics reads, in
-// BlockRole for one the games read) and its row in keys.cpp.
+// doc line; for a block's (and a grid's), the world's and the game's keys also
+// how it is read, checked and written, and for a block's how it goes into the
+// body and the world (or a game's role) and comes back from them. So one row
+// drives the reader (scene_json.cpp), the validator (scene.cpp), the writer
+// (--print-scene, scene_write.cpp), the building of a world (scene.cpp),
+// --save (save.cpp) and the key tables of docs/scenes.md (key_tables_markdown,
+// written by tools/scene_keys.sh; tests/test_keys.cpp fails when they differ).
+// Adding a block key: its field in BlockSpec (scene.hpp; and in Body for a key
+// the physics reads, or in BlockRole for one the games read, each with a
+// default member initializer) and its row in keys.cpp; then tools/scene_keys.sh.
 #pragma once
 
 #include <span>
@@ -37,7 +39,8 @@ struct Key {
   void (*read)(const Reader& r, const json& v, const Path& path, Spec& out) = nullptr;
   // Writes the key into o where it is not its default (or always, if the writer always did).
   void (*write)(ojson& o, const Spec& s) = nullptr;
-  // The key's meaning (range, cross-key rules); at: the key's path; null: nothing to check.
+  // The key's meaning (range, cross-key rules); base: the object's path ("world",
+  // "blocks[3]"), the key's is base + doc.key; null: nothing to check.
   void (*check)(const scene_check::Checker& k, const Spec& s, const std::string& base) = nullptr;
   bool contact = false;  // a contact key: a random entry's too (for all its bodies)
   // Save: the key's value in a block saved from body e of a world made from
