@@ -263,7 +263,7 @@ bool stopped_non_finite(const World& w, Recorder& rec, std::ostream& err) {
 // --screenshot in the scene's style. Returns the exit code.
 int finish_files(const World& w, const SceneSpec& scene, std::span<const BlockRole> roles, const Options& o,
                  Recorder& rec, std::ostream& err) {
-  rec.finish(w, scene);
+  rec.finish(w, scene, roles);
   if (strict_failure(w, o, err)) return 3;
   if (!o.screenshot.empty() &&
       !Offscreen::screenshot(w, scene.width, scene.height, o.screenshot, scene.style, roles)) {
@@ -527,9 +527,9 @@ void Recorder::abandon() {
   }
 }
 
-void Recorder::finish(const World& w, const SceneSpec& scene) {
+void Recorder::finish(const World& w, const SceneSpec& scene, std::span<const BlockRole> roles) {
   if (dump_.is_open()) Dump::write_state(dump_, w);
-  if (save_.is_open()) save_ << to_json(Save::scene_of(w, scene));
+  if (save_.is_open()) save_ << to_json(Save::scene_of(w, scene, roles, save_path_));
   for (auto [file, path] : {std::pair{&dump_, &dump_path_}, {&trace_, &trace_path_}, {&events_, &events_path_},
                             {&save_, &save_path_}}) {
     if (!file->is_open()) continue;

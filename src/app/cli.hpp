@@ -66,7 +66,7 @@ class Recorder {
   void restart(World& w);           // a new world (testbed reset): its frame 0, its events
   // dump: the final state; save: the world as the scene `scene` (it was made
   // from, after overrides) continued. Throws std::runtime_error on I/O error.
-  void finish(const World& w, const SceneSpec& scene);
+  void finish(const World& w, const SceneSpec& scene, std::span<const BlockRole> roles);
   void abandon();                   // dump and save: removed, the run ended on a non-finite state
 
  private:

@@ -80,7 +80,7 @@ int run_window(Cli::Session& s) {
   }
   SceneSpec scene = tb.scene();
   apply(scene, o.overrides);
-  rec.finish(tb.world(), scene);
+  rec.finish(tb.world(), scene, tb.roles());
   return 0;
 }
 

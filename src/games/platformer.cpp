@@ -22,7 +22,10 @@ Platformer::Platformer(const SceneSpec& s, WorldId w, std::span<const BlockRole>
     if (!(speed > 0.0 && std::isfinite(p.role->travel)))
       throw SceneError(s.name + ": a block tagged \"platform\" needs a \"velocity\" and a \"travel\" (body " +
                        std::to_string(p.index) + ")");
-    movers_.push_back({p.body, position(p.body), (1.0 / speed) * v, p.role->travel});
+    // Where it starts and its direction: the scene's (scene.cpp resolves them; a saved level's platform on its
+    // way keeps its own).
+    const auto from = p.role->travel_from, dir = p.role->travel_dir;
+    movers_.push_back({p.body, {from.x, from.y}, {dir.x, dir.y}, p.role->travel});
   }
 }
 

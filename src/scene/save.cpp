@@ -1,34 +1,27 @@
 #include "scene/save.hpp"
 
+#include "scene/keys.hpp"
+
+#include <filesystem>
 #include <string>
 
 namespace physics::Save {
-namespace {
 
-// A body as a block entry; restitution and friction only where they differ
-// from the world's (which the walls and unset blocks take).
-BlockSpec block_of(const Components& k, EntityId e, const SceneSpec& from) {
-  BlockSpec b;
-  b.pos = k.position[e];
-  b.width = k.box[e].width;
-  b.height = k.box[e].height;
-  b.mass = k.mass[e];
-  b.velocity = k.velocity[e];
-  b.force = k.sum_forces[e];
-  b.color = k.color[e];
-  if (k.restitution[e] != from.restitution) b.restitution = k.restitution[e];
-  if (k.friction[e] != from.friction) b.contact.friction = k.friction[e];
-  b.contact.rules = k.rules(e);
-  return b;
+std::string next_from(const GameSpec& from, const std::string& file) {
+  namespace fs = std::filesystem;
+  if (from.next.empty() || file.empty()) return from.next;
+  const fs::path target = from.next_path.empty() ? fs::path(from.next) : fs::path(from.next_path);
+  const fs::path folder = fs::absolute(fs::path(file)).parent_path().lexically_normal();
+  const fs::path rel = fs::absolute(target).lexically_normal().lexically_proximate(folder);
+  return rel.generic_string();
 }
 
-}  // namespace
-
-SceneSpec scene_of(const World& w, const SceneSpec& from) {
+SceneSpec scene_of(const World& w, const SceneSpec& from, std::span<const BlockRole> roles, const std::string& file) {
   SceneSpec s = from;
   s.params = w.params;
   s.blocks.clear();
   s.description = "saved after frame " + std::to_string(w.frame) + " of " + from.name;
+  s.game.next = next_from(from.game, file);
   const Components& k = w.components;
   // The walls are the first bodies (populate makes them first) and are
   // made again by the "walls" key; the other alive bodies get new ids in order.
@@ -40,7 +33,7 @@ SceneSpec scene_of(const World& w, const SceneSpec& from) {
       new_id[e] = e;
     } else if (w.alive(e)) {
       new_id[e] = next++;
-      s.blocks.push_back(block_of(k, e, from));
+      s.blocks.push_back(block_from_world(k, e, from, e < roles.size() ? roles[e] : BlockRole{}));
     }
   }
   SavedState state;
@@ -58,6 +51,10 @@ SceneSpec scene_of(const World& w, const SceneSpec& from) {
   }
   s.state = state;
   return s;
+}
+
+SceneSpec scene_of(const World& w, const SceneSpec& from) {
+  return scene_of(w, from, roles_by_entity(from, expand(from, from.name)));
 }
 
 }  // namespace physics::Save

@@ -10,84 +10,13 @@
 
 #include "engine/broadphase.hpp"
 #include "course/entities/block.hpp"
+#include "scene/checker.hpp"
+#include "scene/keys.hpp"
 
 namespace physics {
 namespace {
 
-// "%g"-like text for messages: short, and exact enough to find the value.
-std::string num(double v) {
-  std::ostringstream o;
-  o.precision(10);
-  o << v;
-  return o.str();
-}
-
-std::string entry_path(std::size_t i) { return "blocks[" + std::to_string(i) + "]"; }
-
-// A key path, built only when a check fails: `base` + `key`
-// ("blocks[3]" + ".mass"). Checks run for every body of a large scene, so
-// the strings of messages are never built on the way to a pass.
-struct At {
-  const std::string& base;
-  const char* key = "";
-  std::string str() const { return base + key; }
-};
-
-// Raises the error for one scene; every message starts with "source: path: ".
-struct Checker {
-  const std::string& source;
-  [[noreturn]] void fail(const std::string& path, const std::string& problem) const {
-    throw SceneError(source + ": " + path + ": " + problem);
-  }
-  [[noreturn]] void fail(At at, const std::string& problem) const { fail(at.str(), problem); }
-  void finite(double v, At at) const {
-    if (!std::isfinite(v)) fail(at, "must be a finite number (got " + num(v) + ")");
-  }
-  void finite(Vector v, At at) const {
-    if (!std::isfinite(v.x) || !std::isfinite(v.y)) fail(at, "must be finite (got [" + num(v.x) + ", " + num(v.y) + "])");
-  }
-  // Velocities, forces, impulses and gravity: finite is not enough, since a
-  // finite 1e308 px/ms overflows to infinity on the first Move. 1e6 px/ms
-  // (a world crossed in one microsecond) is far beyond any sensible scene.
-  void motion(Vector v, At at) const {
-    finite(v, at);
-    if (std::abs(v.x) > max_motion || std::abs(v.y) > max_motion)
-      fail(at, "must be within ±" + num(max_motion) + " (got [" + num(v.x) + ", " + num(v.y) + "])");
-  }
-  void motion(const VecSpec& v, At at) const {
-    range(v, at);
-    motion(Vector{v.x.lo, v.y.lo}, at);
-    motion(Vector{v.x.hi, v.y.hi}, at);
-  }
-  void size(int v, At at) const {
-    if (v <= 0) fail(at, "must be > 0 (got " + std::to_string(v) + ")");
-    if (v > max_block_size) fail(at, "must be <= " + std::to_string(max_block_size) + " (got " + std::to_string(v) + ")");
-  }
-  void mass(double m, At at) const {
-    if (std::isnan(m) || m <= 0.0 || m == -infinity) fail(at, "must be > 0 or \"inf\" (got " + num(m) + ")");
-  }
-  void friction(double mu, At at) const {
-    if (!(mu >= 0.0 && mu <= max_friction)) fail(at, "must be in [0, " + num(max_friction) + "] (got " + num(mu) + ")");
-  }
-  void restitution(double e, At at) const {
-    if (!(e >= 0.0 && e <= 1.0)) fail(at, "must be in [0, 1] (got " + num(e) + ")");
-  }
-  void range(const RealSpec& r, At at) const {
-    finite(r.lo, at);
-    finite(r.hi, at);
-    if (r.drawn && r.lo > r.hi) fail(at, "range [" + num(r.lo) + ", " + num(r.hi) + "] is empty (min > max)");
-  }
-  void range(const VecSpec& v, At at) const {
-    range(v.x, at);
-    range(v.y, at);
-  }
-  void size_range(const IntSpec& r, At at) const {
-    size(r.lo, at);
-    size(r.hi, at);
-    if (r.drawn && r.lo > r.hi)
-      fail(at, "range [" + std::to_string(r.lo) + ", " + std::to_string(r.hi) + "] is empty (min > max)");
-  }
-};
+using namespace scene_check;
 
 // The velocity change of the first frame, force·dt/m + impulse/m, within
 // the motion limit (a mass of 1e-300 turned a force of 1e6 into inf).
@@ -104,33 +33,14 @@ double largest(const VecSpec& v) {
   return std::max({std::abs(v.x.lo), std::abs(v.x.hi), std::abs(v.y.lo), std::abs(v.y.hi)});
 }
 
-void check_block(const Checker& k, const BlockSpec& b, const std::string& p) {
-  k.finite(b.pos, At{p, ".pos"});
-  k.size(b.width, At{p, ".size"});
-  k.size(b.height, At{p, ".size"});
-  k.mass(b.mass, At{p, ".mass"});
-  k.motion(b.velocity, At{p, ".velocity"});
-  k.motion(b.force, At{p, ".force"});
-  k.motion(b.impulse, At{p, ".impulse"});
-  if (b.restitution) k.restitution(*b.restitution, At{p, ".restitution"});
-  if (b.contact.friction) k.friction(*b.contact.friction, At{p, ".friction"});
-  const bool tag_ok = b.tag.size() <= 32 && std::all_of(b.tag.begin(), b.tag.end(), [](char c) {
-    return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
-  });
-  if (!tag_ok) k.fail(At{p, ".tag"}, "must be at most 32 characters of a-z, 0-9, '_' and '-' (got \"" + b.tag + "\")");
-  if (b.strength && !(std::isfinite(*b.strength) && *b.strength > 0.0))
-    k.fail(At{p, ".strength"}, "must be a finite number > 0 (got " + num(*b.strength) + ")");
-  if (b.travel && !(std::isfinite(*b.travel) && *b.travel > 0.0))
-    k.fail(At{p, ".travel"}, "must be a finite number > 0 (got " + num(*b.travel) + ")");
-  if (b.travel && b.tag != "platform")
-    k.fail(At{p, ".travel"}, "only a block with \"tag\": \"platform\" travels (got the tag \"" + b.tag + "\")");
-}
+// A block's keys: their rows (keys.cpp), in the table's order.
+void check_block(const Checker& k, const BlockSpec& b, const std::string& p) { check_block_keys(k, b, p); }
 
+// The game's keys: their rows (keys.cpp).
 void check_game(const Checker& k, const GameSpec& g) {
   if (g.kind.empty()) return;
-  if (g.kind != "platformer" && g.kind != "targets")
-    k.fail("game.kind", "must be \"platformer\" or \"targets\" (got \"" + g.kind + "\")");
-  if (g.shots < 1 || g.shots > 99) k.fail("game.shots", "must be in [1, 99] (got " + std::to_string(g.shots) + ")");
+  for (const auto& key : scene_io::game_keys())
+    if (key.check) key.check(k, g, "game");
 }
 
 // A saved world's state: the warm-start impulses name bodies of the scene
@@ -184,7 +94,7 @@ void check_random(const Checker& k, const RandomSpec& r, const std::string& p) {
     k.restitution(r.restitution->lo, At{p, ".restitution"});
     k.restitution(r.restitution->hi, At{p, ".restitution"});
   }
-  if (r.contact.friction) k.friction(*r.contact.friction, At{p, ".friction"});
+  check_contact_keys(k, r.contact, p);
   k.finite(r.origin, At{p, (r.use_cells ? ".cells.pos" : ".area.pos")});
   const int max_w = r.side ? r.side->hi : r.width.hi, max_h = r.side ? r.side->hi : r.height.hi;
   if (r.use_cells) {
@@ -237,21 +147,6 @@ void check_placement(const Checker& k, const SceneSpec& s, const std::vector<Bod
   }
 }
 
-Body body_of(const BlockSpec& b, const SceneSpec& s, std::size_t entry, std::int64_t index) {
-  return Body{b.pos,
-              b.width,
-              b.height,
-              b.mass,
-              b.velocity,
-              b.force,
-              b.impulse,
-              b.color,
-              b.restitution.value_or(s.restitution),
-              b.contact.friction.value_or(s.friction),
-              b.contact.rules,
-              entry,
-              index};
-}
 
 void expand_random(const RandomSpec& r, const SceneSpec& s, std::size_t entry, std::vector<Body>& out) {
   const double world_e = s.restitution;
@@ -361,28 +256,9 @@ std::int64_t validation_count() { return validations.load(std::memory_order_rela
 void validate(const SceneSpec& s, const std::string& source) {
   validations.fetch_add(1, std::memory_order_relaxed);
   const Checker k{source};
-  if (s.width < 1 || s.width > max_world_size)
-    k.fail("world.width", "must be in [1, " + std::to_string(max_world_size) + "] (got " + std::to_string(s.width) + ")");
-  if (s.height < 1 || s.height > max_world_size)
-    k.fail("world.height",
-           "must be in [1, " + std::to_string(max_world_size) + "] (got " + std::to_string(s.height) + ")");
-  if (s.walls && (s.width <= 2 * wall_thickness || s.height <= 2 * wall_thickness))
-    k.fail("world.walls", "the world must be larger than " + std::to_string(2 * wall_thickness) + "x" +
-                              std::to_string(2 * wall_thickness) + " px to hold its walls");
+  for (const auto& key : scene_io::world_keys())  // the world's keys: their rows (keys.cpp)
+    if (key.check) key.check(k, s, "world");
   const Params& p = s.params;
-  if (!std::isfinite(p.dt)) k.fail("world.dt", "must be a finite number (got " + num(p.dt) + ")");
-  if (p.dt <= 0.0) k.fail("world.dt", "must be > 0 (got " + num(p.dt) + ")");
-  if (p.dt < min_dt) k.fail("world.dt", "must be >= " + num(min_dt) + " ms (got " + num(p.dt) + ")");
-  if (p.substeps < 1 || p.substeps > max_substeps)
-    k.fail("world.substeps",
-           "must be in [1, " + std::to_string(max_substeps) + "] (got " + std::to_string(p.substeps) + ")");
-  if (p.iterations < 1 || p.iterations > max_iterations)
-    k.fail("world.iterations",
-           "must be in [1, " + std::to_string(max_iterations) + "] (got " + std::to_string(p.iterations) + ")");
-  k.motion(p.gravity, At{std::string("world.gravity")});
-  if (p.dt > max_dt) k.fail("world.dt", "must be <= " + num(max_dt) + " ms (got " + num(p.dt) + ")");
-  k.restitution(s.restitution, At{std::string("world.restitution")});
-  k.friction(s.friction, At{std::string("world.friction")});
   if (body_count(s) > max_bodies)
     k.fail("blocks", "too many bodies (more than " + std::to_string(max_bodies) + ")");
   if (s.state) check_state(k, s);
@@ -443,12 +319,13 @@ std::vector<Body> expand(const SceneSpec& s, const std::string& source) {
     const BlockEntry& e = s.blocks[i];
     if (const auto* b = std::get_if<BlockSpec>(&e)) out.push_back(body_of(*b, s, i, 0));
     if (const auto* g = std::get_if<GridSpec>(&e)) {
-      std::int64_t n = 0;
+      // Equal bodies but for their position: the first one's, moved.
+      Body body = body_of(g->first, s, i, 0);
       for (int r = 0; r < g->rows; ++r)
         for (int c = 0; c < g->columns; ++c) {
-          BlockSpec b = g->first;
-          b.pos = Vector{g->first.pos.x + g->step.x * c, g->first.pos.y + g->step.y * r};
-          out.push_back(body_of(b, s, i, n++));
+          body.pos = Vector{g->first.pos.x + g->step.x * c, g->first.pos.y + g->step.y * r};
+          out.push_back(body);
+          ++body.index;
         }
     }
     if (const auto* r = std::get_if<RandomSpec>(&e)) expand_random(*r, s, i, out);
@@ -464,8 +341,7 @@ std::vector<BlockRole> roles_by_entity(const SceneSpec& s, const std::vector<Bod
     const BlockEntry& e = s.blocks[b.entry];
     const BlockSpec* spec = std::get_if<BlockSpec>(&e);
     if (const auto* g = std::get_if<GridSpec>(&e)) spec = &g->first;
-    roles.push_back(spec ? BlockRole{spec->tag, spec->strength.value_or(infinity), spec->travel.value_or(infinity)}
-                         : BlockRole{});
+    roles.push_back(spec ? role_of(*spec, b) : BlockRole{});
   }
   return roles;
 }
@@ -481,12 +357,7 @@ void populate(World& w, const SceneSpec& s, const std::vector<Body>& bodies) {
   w.health.watch(t, t, s.width - t, s.height - t, static_cast<EntityId>(w.components.size()));
   for (const Body& b : bodies) {
     const auto e = Block::make(w, b.pos.x, b.pos.y, b.width, b.height, b.color, b.mass, b.restitution);
-    w.components.velocity[e.id] = b.velocity;
-    // An impulse J changes the velocity by J/m. Forces applies Σf·dt/m on the
-    // first frame, so the initial force J/dt is exactly that impulse.
-    w.components.sum_forces[e.id] = b.force + Vector::mult(1.0 / w.params.dt, b.impulse);
-    w.components.friction[e.id] = b.friction;
-    if (!b.rules.plain()) w.components.set_rules(e.id, b.rules);
+    to_world(b, w, e.id);  // the other keys (keys.cpp: velocity, force and impulse, friction, contact rules)
   }
   if (s.state) {
     w.frame = s.state->frame;

@@ -93,6 +93,10 @@ struct BlockSpec {
   std::string tag;
   std::optional<double> strength;
   std::optional<double> travel;  // a moving platform: px from its start before it turns back (> 0)
+  // Where a moving platform's travel starts and its unit direction (unset:
+  // pos, and the velocity's direction). A platform saved on its way (--save)
+  // keeps them, so that it turns back where it did before.
+  std::optional<Vector> travel_from, travel_dir;
   friend bool operator==(const BlockSpec&, const BlockSpec&) = default;
 };
 
@@ -212,6 +216,8 @@ struct BlockRole {
   std::string tag;
   double strength = infinity;  // normal impulse that breaks it
   double travel = infinity;    // px a moving platform goes from its start before turning back
+  Vector travel_from{}, travel_dir{};  // where it starts, and its unit direction (BlockSpec's, resolved)
+  friend bool operator==(const BlockRole&, const BlockRole&) = default;
 };
 // The roles of a world made from `s` and `bodies` (expand), by entity id.
 std::vector<BlockRole> roles_by_entity(const SceneSpec& s, const std::vector<Body>& bodies);

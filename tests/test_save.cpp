@@ -1,0 +1,163 @@
+// --save on game levels: a saved level keeps every key of its scene (tags,
+// strengths, a platform's travel, the game, the style, the contact keys) and
+// its next level, loads again and plays on; with no input after the save,
+// the rest of the run is the one that never stopped, bit for bit.
+// (The physics-only saves: tests/test_game_physics.cpp, save_and_restore.)
+#include <filesystem>
+#include <map>
+#include <sstream>
+#include <string>
+
+#include "app/dump.hpp"
+#include "app/input_log.hpp"
+#include "app/testbed.hpp"
+#include "scene/save.hpp"
+#include "scene/scene_json.hpp"
+#include "cli_helpers.hpp"
+
+using namespace physics;
+using namespace physics::test;
+
+namespace {
+
+std::filesystem::path root() { return std::filesystem::absolute(__FILE__).parent_path().parent_path(); }
+std::string scene_path(const std::string& name) { return (root() / "scenes" / (name + ".json")).string(); }
+std::string replay_path(const std::string& name) { return (root() / "replays" / (name + ".log")).string(); }
+
+// The dump without its id column: a save closes up the ids of destroyed
+// bodies (a collected coin), the rows stay in the same order.
+std::string rows(const World& w) {
+  std::ostringstream o;
+  o.precision(17);
+  Dump::write_state(o, w);
+  std::istringstream in(o.str());
+  std::string out;
+  for (std::string line; std::getline(in, line);) out += line.substr(line.find(',') + 1) + "\n";
+  return out;
+}
+
+// The testbed on `spec`, fed the events of `log` before tick `until`, `ticks` steps.
+void play(Testbed& tb, const InputLog& log, std::int64_t until, std::int64_t ticks) {
+  std::size_t next = 0;
+  for (std::int64_t t = 0; t < ticks; ++t) {
+    for (; next < log.events.size() && log.events[next].tick == t && t < until; ++next) tb.handle(log.events[next].event);
+    tb.step();
+  }
+}
+
+// The testbed's world saved as a file in `dir` and read back (next level resolved from there).
+SceneSpec saved(const Testbed& tb, const TempDir& dir, const std::string& name = "saved.json") {
+  const std::string file = dir.file(name);
+  std::ofstream(file) << to_json(Save::scene_of(tb.world(), tb.scene(), tb.roles(), file));
+  return load_scene_file(file);
+}
+
+std::vector<BlockRole> roles_of(const SceneSpec& s) { return roles_by_entity(s, expand(s, s.name)); }
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(save_game_levels)
+
+// The report: "a platformer needs exactly one block with "tag": "player" (found 0)".
+BOOST_AUTO_TEST_CASE(a_saved_platformer_loads_and_plays_on_from_the_command_line) {
+  TempDir dir;
+  const std::string file = dir.file("p.json");
+  const Ran first = cli({"--replay", replay_path("platformer"), "--scene", scene_path("platformer"), "--headless",
+                         "--frames", "200", "--save", file});
+  BOOST_TEST_REQUIRE(first.code == 0, first.err);
+  const Ran again = cli({"--scene", file, "--headless", "--frames", "100"});
+  BOOST_TEST(again.code == 0, again.err);
+  BOOST_TEST(again.err.empty(), again.err);
+  BOOST_TEST(has(again.out, "game: playing"), again.out);
+}
+
+// Saved before any step, every game scene's bodies keep their parts (tag,
+// strength, travel and its start and direction), and the scene its other keys.
+BOOST_AUTO_TEST_CASE(every_key_of_a_game_scene_survives_a_save) {
+  TempDir dir;
+  for (const std::string name : {"platformer", "targets-1", "targets-2", "targets-3", "styles"}) {
+    const SceneSpec original = load_scene_file(scene_path(name));
+    const Testbed tb({original}, 0);
+    const SceneSpec back = saved(tb, dir, name + ".json");
+    BOOST_TEST((roles_of(back) == roles_of(original)), name);
+    BOOST_TEST(back.game.kind == original.game.kind, name);
+    BOOST_TEST(back.game.shots == original.game.shots, name);
+    BOOST_TEST((back.style == original.style), name);
+    for (const SystemId id : all_systems) BOOST_TEST(back.systems.has(id) == original.systems.has(id), name);
+    BOOST_TEST(back.name == original.name, name);
+    // The bodies as the world made them: the same contact keys and colours.
+    const World a = make_world(original, false), b = make_world(back, false);
+    BOOST_TEST_REQUIRE(a.components.size() == b.components.size());
+    for (EntityId e = 0; e < a.components.size(); ++e) {
+      BOOST_TEST((a.components.rules(e) == b.components.rules(e)), name << " body " << e);
+      BOOST_TEST(a.components.friction[e] == b.components.friction[e], name << " body " << e);
+      BOOST_TEST(a.components.restitution[e] == b.components.restitution[e], name << " body " << e);
+      BOOST_TEST((a.components.color[e] == b.components.color[e]), name << " body " << e);
+    }
+  }
+}
+
+// A relative game.next names the same file from the saved file's folder.
+BOOST_AUTO_TEST_CASE(the_next_level_resolves_from_the_saved_files_folder) {
+  TempDir dir;
+  std::filesystem::create_directories(dir.path / "deep" / "er");
+  const Testbed tb({load_scene_file(scene_path("targets-1"))}, 0);
+  const SceneSpec back = saved(tb, dir, "deep/er/t.json");  // load_scene_file: game.next must exist
+  BOOST_TEST(back.game.next != "targets-2.json");
+  BOOST_TEST(std::filesystem::equivalent(back.game.next_path, scene_path("targets-2")));
+  // Saved beside it, the name stays as it was.
+  const std::string beside = (root() / "scenes" / "targets-1.json").string();
+  BOOST_TEST(Save::next_from(tb.scene().game, beside) == "targets-2.json");
+  // Without a file (in memory), as it was.
+  BOOST_TEST(Save::next_from(tb.scene().game, "") == "targets-2.json");
+}
+
+// The platformer's replay to tick k (no key held then), saved; the saved
+// level run k' more ticks ends where the whole run of k + k' ticks does,
+// with the player on the moving platform and the platform turning back on
+// the way. Without the platform's start and direction it would not.
+BOOST_AUTO_TEST_CASE(a_saved_platformer_runs_on_bit_for_bit) {
+  TempDir dir;
+  const InputLog log = read_input_log(replay_path("platformer"));
+  const std::int64_t k = 300, rest = 250;
+  const SceneSpec spec = load_scene_file(scene_path("platformer"));
+  Testbed whole({spec}, 0), first({spec}, 0);
+  play(whole, log, k, k + rest);
+  play(first, log, k, k);
+  const std::string text = to_json(Save::scene_of(first.world(), first.scene(), first.roles(), dir.file("p.json")));
+  BOOST_TEST(has(text, "\"travel_from\""), text);  // the platform is on its way
+  const SceneSpec back = saved(first, dir);
+  Testbed on({back}, 0);
+  play(on, InputLog{}, 0, rest);
+  BOOST_TEST(on.world().frame == whole.world().frame);
+  BOOST_TEST(rows(on.world()) == rows(whole.world()));
+  // The control: the platform restarted from where it was saved turns elsewhere.
+  SceneSpec naive = back;
+  for (BlockEntry& e : naive.blocks)
+    if (auto* b = std::get_if<BlockSpec>(&e)) b->travel_from.reset(), b->travel_dir.reset();
+  Testbed wrong({naive}, 0);
+  play(wrong, InputLog{}, 0, rest);
+  BOOST_TEST(rows(wrong.world()) != rows(whole.world()));
+}
+
+// The targets: one shot, saved in flight (its tag "shot" kept), run on.
+BOOST_AUTO_TEST_CASE(a_saved_targets_level_runs_on_bit_for_bit) {
+  TempDir dir;
+  const SceneSpec spec = load_scene_file(scene_path("targets-1"));
+  const InputLog log = read_input_log(replay_path("targets-1"));
+  const std::int64_t k = log.events.empty() ? 0 : log.events.front().tick + 20, rest = 300;
+  Testbed whole({spec}, 0), first({spec}, 0);
+  play(whole, log, k, k + rest);
+  play(first, log, k, k);
+  const SceneSpec back = saved(first, dir);
+  std::size_t alive = 0;
+  for (EntityId e = 0; e < first.world().components.size(); ++e) alive += first.world().alive(e);
+  BOOST_TEST_REQUIRE(back.blocks.size() + (back.walls ? Game::wall_count : 0) == alive);
+  const std::vector<BlockRole> roles = roles_of(back);
+  BOOST_TEST(std::count_if(roles.begin(), roles.end(), [](const BlockRole& r) { return r.tag == "shot"; }) == 1);
+  Testbed on({back}, 0);
+  play(on, InputLog{}, 0, rest);
+  BOOST_TEST(rows(on.world()) == rows(whole.world()));
+}
+
+BOOST_AUTO_TEST_SUITE_END()
