@@ -47,7 +47,8 @@ ifeq ($(SANITIZE),1)
   # The long stability cases (label "slow") take minutes at -O2; under the
   # sanitizers, ten times that. Run them with TEST_ARGS= to override.
   TEST_ARGS ?= --run_test=!@slow
-  CXXFLAGS += -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+  SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+  CXXFLAGS += $(SAN_FLAGS)
   LDFLAGS  += -fsanitize=address,undefined
 endif
 
@@ -342,9 +343,10 @@ CHECK_PREFIX := $(abspath $(BUILD))/install-check
 install-check: $(BUILD)/libphysics.a
 	@rm -rf $(CHECK_PREFIX) && $(MAKE) --no-print-directory install PREFIX=$(CHECK_PREFIX)/prefix > /dev/null
 	@mkdir -p $(CHECK_PREFIX)/pc && cp examples/hello.cpp $(CHECK_PREFIX)/pc/
-	cd $(CHECK_PREFIX)/pc && $(CXX) -std=c++20 -Wall -Wextra -Werror hello.cpp -o hello \
+	cd $(CHECK_PREFIX)/pc && $(CXX) -std=c++20 -Wall -Wextra -Werror $(SAN_FLAGS) hello.cpp -o hello \
 	  $$(PKG_CONFIG_PATH=$(CHECK_PREFIX)/prefix/lib/pkgconfig pkg-config --cflags --libs physics)
-	cmake -S examples -B $(CHECK_PREFIX)/cmake -DCMAKE_PREFIX_PATH=$(CHECK_PREFIX)/prefix > /dev/null
+	cmake -S examples -B $(CHECK_PREFIX)/cmake -DCMAKE_PREFIX_PATH=$(CHECK_PREFIX)/prefix \
+	  $(if $(SAN_FLAGS),-DCMAKE_CXX_FLAGS="$(SAN_FLAGS)") > /dev/null
 	+cmake --build $(CHECK_PREFIX)/cmake > /dev/null
 	@for way in pc cmake; do out=$$($(CHECK_PREFIX)/$$way/hello); echo "install-check ($$way): $$out"; \
 	  case "$$out" in "the box rests at (380.0, 520.0)") ;; *) echo "install-check: unexpected answer"; exit 1;; esac; done
@@ -352,13 +354,13 @@ install-check: $(BUILD)/libphysics.a
 
 # The examples, built in the tree from the public headers alone (-Iinclude,
 # no -Isrc: they can use nothing else), and their headless runs.
-EXAMPLE_FLAGS := -std=c++20 $(OPT) -Wall -Wextra -Werror -Iinclude
+EXAMPLE_FLAGS := -std=c++20 $(OPT) -Wall -Wextra -Werror $(SAN_FLAGS) -Iinclude
 $(BUILD)/examples/hello: examples/hello.cpp include/physics/physics.hpp include/physics/math.hpp $(BUILD)/libphysics.a
 	@mkdir -p $(@D)
-	$(CXX) $(EXAMPLE_FLAGS) $< -o $@ $(BUILD)/libphysics.a
+	$(CXX) $(EXAMPLE_FLAGS) $< -o $@ $(BUILD)/libphysics.a $(LDFLAGS)
 $(BUILD)/examples/crates: examples/crates.cpp include/physics/physics.hpp include/physics/math.hpp $(BUILD)/libphysics.a
 	@mkdir -p $(@D)
-	$(CXX) $(EXAMPLE_FLAGS) $(SDL_CFLAGS) $< -o $@ $(BUILD)/libphysics.a $(SDL_LIBS)
+	$(CXX) $(EXAMPLE_FLAGS) $(SDL_CFLAGS) $< -o $@ $(BUILD)/libphysics.a $(SDL_LIBS) $(LDFLAGS)
 examples: $(BUILD)/examples/hello $(BUILD)/examples/crates
 	./$(BUILD)/examples/hello
 	./$(BUILD)/examples/crates --headless 600
