@@ -15,19 +15,19 @@ std::string show(double v) {
 }
 }  // namespace
 
-void require(bool ok, const std::string& what, const std::string& rule, double got) {
-  if (!ok) throw Error(what + " must be " + rule + " (got " + show(got) + ")");
+void require(bool ok, const char* what, const char* rule, double got) {
+  if (!ok) throw Error(std::string(what) + " must be " + rule + " (got " + show(got) + ")");
 }
 
-void require(bool ok, const std::string& what, const std::string& rule, Vec2 got) {
-  if (!ok) throw Error(what + " must be " + rule + " (got (" + show(got.x) + ", " + show(got.y) + "))");
+void require(bool ok, const char* what, const char* rule, Vec2 got) {
+  if (!ok) throw Error(std::string(what) + " must be " + rule + " (got (" + show(got.x) + ", " + show(got.y) + "))");
 }
 
-void check_finite(Vec2 v, const std::string& what) {
+void check_finite(Vec2 v, const char* what) {
   require(std::isfinite(v.x) && std::isfinite(v.y), what, "finite", v);
 }
 
-void check_motion(Vec2 v, const std::string& what) {
+void check_motion(Vec2 v, const char* what) {
   require(std::abs(v.x) <= max_motion && std::abs(v.y) <= max_motion, what, "finite, within 1e6 per axis", v);
 }
 

@@ -13,12 +13,12 @@ inline Vector to_engine(Vec2 v) { return {v.x, v.y}; }
 inline Vec2 to_public(Vector v) { return {v.x, v.y}; }
 
 // Throws Error(what + " must be " + rule + " (got ...)") unless ok.
-void require(bool ok, const std::string& what, const std::string& rule, double got);
-void require(bool ok, const std::string& what, const std::string& rule, Vec2 got);
+void require(bool ok, const char* what, const char* rule, double got);
+void require(bool ok, const char* what, const char* rule, Vec2 got);
 
 // Each value as a body's: throws Error naming `what` if out of range.
-void check_finite(Vec2 v, const std::string& what);
-void check_motion(Vec2 v, const std::string& what);  // finite, within 1e6 per axis
+void check_finite(Vec2 v, const char* what);
+void check_motion(Vec2 v, const char* what);  // finite, within 1e6 per axis
 void check_size(Vec2 size);
 void check_mass(double mass);
 void check_restitution(double e);

@@ -61,9 +61,11 @@ bool live(BodyId id) {
 
 Named body(BodyId id) {
   if (id.index1 == 0) throw Error("null body id");
-  Live& w = world(id.world);
-  if (!live(id)) throw Error(describe(id) + " is stale (the body was destroyed) or was never made");
-  return {w, id.index1 - 1};
+  Live& w = world(id.world);  // synced
+  const EntityId e = id.index1 - 1;
+  if (e >= w.table.generation.size() || w.table.generation[e] != id.generation || !w.world->alive(e))
+    throw Error(describe(id) + " is stale (the body was destroyed) or was never made");
+  return {w, e};
 }
 
 BodyId id_of(WorldId world, const Live& w, EntityId e) { return {e + 1, world, w.table.generation[e]}; }
