@@ -147,8 +147,9 @@ BOOST_AUTO_TEST_CASE(forces_and_move_agree_with_the_course_systems) {
   for (int world = 0; world < 50; ++world) {
     Components course = random_bodies(rng, 40);
     Components engine = course;
-    Forces forces;
-    Move move;
+    std::vector<EntityId> forces_list, move_list;  // a world's lists, without the world
+    Forces forces(forces_list);
+    Move move(move_list);
     for (EntityId e = 0; e < course.size(); ++e) {
       forces.register_entity(Entity<component::sum_forces, component::mass, component::velocity>{e});
       move.register_entity(Entity<component::position, component::velocity>{e});
@@ -194,7 +195,9 @@ BOOST_AUTO_TEST_CASE(the_pass_over_the_broad_phase_agrees_with_the_course_collis
     Components course = random_bodies(rng, 60);
     Components engine = course;
     const Components before = course;
-    Collision collision;
+    std::vector<EntityId> list;
+    PassContacts pass;
+    Collision collision(list, pass);
     collision.record_contacts = true;
     for (EntityId e = 0; e < course.size(); ++e)
       collision.register_entity(Entity<component::position, component::box, component::mass, component::velocity,
