@@ -1,6 +1,8 @@
 // A world: the component arrays, the body lists of the stages a scene
-// declared, and the parameters of the step. It replaces the OCaml code's global tables, so that
-// tests and the testbed can hold several worlds at once.
+// declared, and the parameters of the step. It replaces the OCaml code's
+// global tables, so that tests and the testbed can hold several worlds at
+// once. It holds no course code: the course's systems are views of its lists
+// (course/system_defs.hpp).
 #pragma once
 
 #include <cstdint>
@@ -117,11 +119,11 @@ struct World {
   bool alive(EntityId e) const { return e >= destroyed_.size() || destroyed_[e] == 0; }
 
   // The engine's stages around Forces and Move in a substep of h ms
-  // (run_frame calls them, engine/step.hpp; they do nothing in the course mode): before
-  // Forces, the exact integrator's look at the velocities; before Move, the
-  // stable solver's velocities, CCD's impacts and the exact integrator's
-  // shift; after it, the stable solver's position projection, which replaces
-  // the course's Collision pass.
+  // (run_frame calls them, engine/step.hpp; they do nothing in the course
+  // mode): before Forces, the exact integrator's look at the velocities;
+  // before Move, the stable solver's velocities, CCD's impacts and the exact
+  // integrator's shift; after it, the stable solver's position projection,
+  // which replaces the course's Collision pass.
   void before_forces();
   void before_move(double h);
   void after_move();

@@ -33,9 +33,10 @@ t make(World& w, double x, double y, int width, int height, Color color, double 
   c.restitution[e.id] = restitution;
   // velocity and sum_forces keep their defaults: zero (Q2).
 
-  // Registered with each system the world declared, bound to its list in the
-  // world (course/system_defs.hpp), which checks at compile time that a
-  // block has the components it needs.
+  // Registered with each system the world declared, each bound to its list
+  // in the world as Systems(w) binds them (course/system_defs.hpp, which an
+  // entity does not include: it sits above the entities); each checks at
+  // compile time that a block has the components it needs.
   if (auto* l = w.stage(SystemId::draw)) Draw(*l).register_entity(e);
   if (auto* l = w.stage(SystemId::move)) Move(*l).register_entity(e);
   if (auto* l = w.stage(SystemId::forces)) Forces(*l).register_entity(e);
