@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "course/game.hpp"
+#include "course/system_defs.hpp"
 
 namespace physics::test {
 
@@ -22,7 +23,7 @@ inline bool overlaps(const Components& c, EntityId a, EntityId b) {
 }
 
 // The Collision system's pass, on the pairs of the world's broad phase.
-inline void collide(World& w) { w.systems.collision->update(w.components, w.course_pairs()); }
+inline void collide(World& w) { Systems(w).collision->update(w.components, w.course_pairs()); }
 
 // The pairs the broad phase hands the course's pass, with boxes grown by
 // `margin` (nothing resolved, so nothing moves and no pair is added).
@@ -41,7 +42,7 @@ struct AllPairs {
 };
 inline AllPairs update_all_pairs(World& w) {
   AllPairs out;
-  const auto ids = w.systems.collision->entities();
+  const auto ids = w.bodies(SystemId::collision);
   for (std::size_t i = 0; i < ids.size(); ++i)
     for (std::size_t j = i + 1; j < ids.size(); ++j) {
       if (!solvable(w.components, ids[i], ids[j], w.params.substep())) continue;

@@ -139,7 +139,8 @@ BOOST_AUTO_TEST_CASE(bad_values_throw_naming_the_value_and_change_nothing) {
 }
 
 // The API's world and a scene's world of the same bodies step the same bits:
-// physics::step(WorldId) and Game::step run the one engine step.
+// physics::step(WorldId) runs the engine's stages, Game::step the course's
+// systems, in the one frame (engine/step.hpp, run_frame).
 BOOST_AUTO_TEST_CASE(the_api_steps_the_built_in_scene_many_bit_for_bit_in_every_solver) {
   for (const SolverKind kind : {SolverKind::course, SolverKind::stable, SolverKind::automatic}) {
     SceneSpec spec = *find_builtin("many");

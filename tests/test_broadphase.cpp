@@ -59,7 +59,8 @@ World make_scene(const Spec& s) {
     w.components.velocity[b.id] = {rng.uniform(-s.speed, s.speed), rng.uniform(-s.speed, s.speed)};
   }
   if (s.shuffle) {
-    Collision& c = *w.systems.collision;
+    Systems systems(w);
+    Collision& c = *systems.collision;
     for (EntityId e = 0; e < w.components.size(); ++e)
       if (rng.uniform(0, 1) < 0.3) {
         c.unregister(e);
@@ -67,7 +68,7 @@ World make_scene(const Spec& s) {
       }
   }
   w.broadphase.course_margin = s.margin;
-  w.systems.collision->record_contacts = true;
+  w.pass.record_contacts = true;
   return w;
 }
 
@@ -82,14 +83,14 @@ Outcome compare_with_oracle(const Spec& s, int frames) {
   Outcome out;
   for (int f = 0; f < frames; ++f) {
     for (World* w : {&fast, &oracle}) {
-      w->systems.forces->update(w->components, w->params.dt, w->params.gravity);
-      w->systems.move->update(w->components, w->params.dt);
+      Systems(*w).forces->update(w->components, w->params.dt, w->params.gravity);
+      Systems(*w).move->update(w->components, w->params.dt);
     }
     test::collide(fast);
     const test::AllPairs all = test::update_all_pairs(oracle);
-    const auto& a = fast.systems.collision->contacts();
+    const auto& a = fast.pass.contacts;
     const auto& b = all.contacts;
-    bool same = a.size() == b.size() && fast.systems.collision->contact_count() == all.count;
+    bool same = a.size() == b.size() && fast.pass.contact_count == all.count;
     for (std::size_t i = 0; same && i < a.size(); ++i)
       same = a[i].c == b[i].c && a[i].b == b[i].b && same_bits(a[i].penetration, b[i].penetration) &&
              same_bits(a[i].normal, b[i].normal) && a[i].approaching == b[i].approaching;
@@ -205,7 +206,7 @@ BOOST_AUTO_TEST_CASE(many_large_bodies_find_the_same_pairs_as_all_pairs) {
   for (int i = 0; i < 100; ++i) Block::make(w, rng.uniform(40, 700), rng.uniform(40, 500), 60, 60, test::grey, 1.0);
   const auto pairs = test::course_candidates(w, 1.0);
   std::vector<Pair> expected;
-  const auto ids = w.systems.collision->entities();
+  const auto ids = w.bodies(SystemId::collision);
   const Components& k = w.components;
   for (std::size_t i = 0; i < ids.size(); ++i)
     for (std::size_t j = i + 1; j < ids.size(); ++j) {
@@ -221,7 +222,8 @@ BOOST_AUTO_TEST_CASE(many_large_bodies_find_the_same_pairs_as_all_pairs) {
 BOOST_AUTO_TEST_CASE(candidate_pairs_are_the_overlapping_grown_boxes_never_two_infinite_masses) {
   for (const double margin : {0.0, 1.0, 7.5}) {
     World w = make_scene(Spec{.bodies = 300, .fixed_fraction = 0.2, .big_fraction = 0.05, .shuffle = true});
-    const Collision& c = *w.systems.collision;
+    Systems systems(w);
+    const Collision& c = *systems.collision;
     const auto pairs = test::course_candidates(w, margin);
     // Brute force over the registration order, with the same boxes.
     std::vector<Pair> expected;
@@ -297,19 +299,19 @@ BOOST_AUTO_TEST_CASE(changes_between_passes_are_seen) {
   const auto a = Block::make(w, 100, 100, 20, 20, test::grey, 1.0);
   const auto b = Block::make(w, 500, 500, 20, 20, test::grey, 1.0);
   test::collide(w);
-  BOOST_TEST(w.systems.collision->contact_count() == 0u);
+  BOOST_TEST(w.pass.contact_count == 0u);
   w.components.position[b.id] = {110, 110};
   test::collide(w);
-  BOOST_TEST(w.systems.collision->contact_count() == 1u);
+  BOOST_TEST(w.pass.contact_count == 1u);
   w.components.position[b.id] = {125, 100};
   w.components.box[a.id] = {30, 20};
   test::collide(w);
-  BOOST_TEST(w.systems.collision->contact_count() == 1u);
+  BOOST_TEST(w.pass.contact_count == 1u);
   w.components.mass[a.id] = w.components.mass[b.id] = infinity;
   w.components.position[b.id] = {110, 100};
   BOOST_TEST(test::course_candidates(w, 0.0).empty());
   test::collide(w);
-  BOOST_TEST(w.systems.collision->contact_count() == 0u);
+  BOOST_TEST(w.pass.contact_count == 0u);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -110,7 +110,7 @@ BOOST_AUTO_TEST_CASE(a_block_pressed_between_two_others_gets_both_impulses_once)
   w.components.velocity[a.id] = {1.0, 0};
   w.components.velocity[c.id] = {-1.0, 0};
   test::collide(w);
-  BOOST_TEST(w.systems.collision->contact_count() == 2u);
+  BOOST_TEST(w.pass.contact_count == 2u);
   BOOST_TEST(w.components.velocity[a.id].x == 0.0);
   BOOST_TEST(w.components.velocity[b.id].x == -1.0);
   BOOST_TEST(w.components.velocity[c.id].x == 1.0);

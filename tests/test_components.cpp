@@ -52,10 +52,10 @@ BOOST_AUTO_TEST_CASE(walls_have_an_infinite_mass) {
 BOOST_AUTO_TEST_CASE(block_make_registers_only_with_declared_systems) {
   World w(SystemSet{true, false, true, false});
   Block::make(w, 0, 0, 10, 10, test::grey, 1.0);
-  BOOST_TEST(w.systems.draw->size() == 1u);
-  BOOST_TEST(w.systems.move->size() == 1u);
-  BOOST_TEST(!w.systems.forces.has_value());
-  BOOST_TEST(!w.systems.collision.has_value());
+  BOOST_TEST(w.bodies(SystemId::draw).size() == 1u);
+  BOOST_TEST(w.bodies(SystemId::move).size() == 1u);
+  BOOST_TEST(!w.declares(SystemId::forces));
+  BOOST_TEST(!w.declares(SystemId::collision));
 }
 
 // Block::make asserts its input (a programming error); bad input from a
@@ -80,7 +80,8 @@ BOOST_AUTO_TEST_CASE(world_rejects_bad_parameters) {
 }
 
 BOOST_AUTO_TEST_CASE(unregister_keeps_order) {
-  Move m;
+  std::vector<EntityId> list;  // a world's Move list (World::stage)
+  Move m(list);
   m.register_entity(Block::t{3});
   m.register_entity(Block::t{5});
   m.register_entity(Block::t{7});
@@ -88,6 +89,7 @@ BOOST_AUTO_TEST_CASE(unregister_keeps_order) {
   BOOST_TEST_REQUIRE(m.size() == 2u);
   BOOST_TEST(m.entities()[0] == 3u);
   BOOST_TEST(m.entities()[1] == 7u);
+  BOOST_TEST((list == std::vector<EntityId>{3, 7}));  // the system registers into the list it views
 }
 
 BOOST_AUTO_TEST_SUITE_END()

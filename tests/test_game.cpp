@@ -80,7 +80,7 @@ BOOST_AUTO_TEST_CASE(ten_thousand_frames_stay_inside_the_walls_without_nan) {
   std::size_t contacts = 0;
   for (int i = 0; i < 10000; ++i) {
     Game::step(w);
-    contacts += w.systems.collision->contact_count();
+    contacts += w.pass.contact_count;
     check_inside_walls(w);
   }
   BOOST_TEST(contacts > 100u);  // it really collides

@@ -283,9 +283,9 @@ BOOST_AUTO_TEST_CASE(filtered_pairs_never_enter_a_pair_list) {
   World w = make_world(s, false);
   BOOST_TEST(test::course_candidates(w, 1.0).empty());
   std::vector<Pair> pairs;
-  w.broadphase.find(w.components, w.systems.collision->entities(), course_dt, 1.0, pairs);
+  w.broadphase.find(w.components, w.bodies(SystemId::collision), course_dt, 1.0, pairs);
   BOOST_TEST(pairs.empty());
-  brute_force_pairs(w.components, w.systems.collision->entities(), course_dt, 1.0, pairs);
+  brute_force_pairs(w.components, w.bodies(SystemId::collision), course_dt, 1.0, pairs);
   BOOST_TEST(pairs.empty());
 }
 
@@ -395,8 +395,8 @@ BOOST_AUTO_TEST_CASE(a_destroyed_body_leaves_every_system_and_its_id_is_not_reus
   w.destroy(5);
   BOOST_TEST(!w.alive(5));
   BOOST_TEST(w.alive(4));
-  for (const auto ids : {w.systems.draw->entities(), w.systems.move->entities(), w.systems.forces->entities(),
-                         w.systems.collision->entities()})
+  for (const auto ids : {w.bodies(SystemId::draw), w.bodies(SystemId::move), w.bodies(SystemId::forces),
+                         w.bodies(SystemId::collision)})
     BOOST_TEST((std::find(ids.begin(), ids.end(), 5u) == ids.end()));
   const Vector before = w.components.position[5];
   run(w, 60);

@@ -13,7 +13,10 @@
 
 #include "engine/geometry.hpp"
 #include "engine/stages.hpp"
+#include "engine/step.hpp"
 #include "helpers.hpp"
+#include "scene/builtin_scenes.hpp"
+#include "scene/scene.hpp"
 
 using namespace physics;
 
@@ -147,8 +150,9 @@ BOOST_AUTO_TEST_CASE(forces_and_move_agree_with_the_course_systems) {
   for (int world = 0; world < 50; ++world) {
     Components course = random_bodies(rng, 40);
     Components engine = course;
-    Forces forces;
-    Move move;
+    std::vector<EntityId> forces_list, move_list;  // a world's lists, without the world
+    Forces forces(forces_list);
+    Move move(move_list);
     for (EntityId e = 0; e < course.size(); ++e) {
       forces.register_entity(Entity<component::sum_forces, component::mass, component::velocity>{e});
       move.register_entity(Entity<component::position, component::velocity>{e});
@@ -194,7 +198,9 @@ BOOST_AUTO_TEST_CASE(the_pass_over_the_broad_phase_agrees_with_the_course_collis
     Components course = random_bodies(rng, 60);
     Components engine = course;
     const Components before = course;
-    Collision collision;
+    std::vector<EntityId> list;
+    PassContacts pass;
+    Collision collision(list, pass);
     collision.record_contacts = true;
     for (EntityId e = 0; e < course.size(); ++e)
       collision.register_entity(Entity<component::position, component::box, component::mass, component::velocity,
@@ -215,6 +221,49 @@ BOOST_AUTO_TEST_CASE(the_pass_over_the_broad_phase_agrees_with_the_course_collis
     BOOST_TEST(resolve_pairs(again, for_again.course_pairs(again, ids, course_dt)) == count);
     BOOST_TEST(same(again, engine));
   }
+}
+
+// The one frame (engine/step.hpp, run_frame) with either set of stages: the
+// engine's step (the public API's) and the course's Game::step give the same
+// bits on every built-in scene, in every solver, with and without CCD, the
+// exact integrator and substeps, contact events and the pass's contacts too.
+BOOST_AUTO_TEST_CASE(the_engine_step_and_the_course_step_agree_on_every_built_in_scene) {
+  struct Mode {
+    Solver solver;
+    bool ccd;
+    Integrator integrator;
+    int substeps;
+  };
+  const Mode modes[] = {{Solver::course, false, Integrator::course, 1}, {Solver::stable, false, Integrator::course, 1},
+                        {Solver::automatic, false, Integrator::course, 1}, {Solver::course, true, Integrator::exact, 3},
+                        {Solver::stable, true, Integrator::exact, 2}};
+  int scenes = 0, contacts = 0;
+  for (const SceneSpec& builtin : builtin_scenes())
+    for (const Mode& m : modes) {
+      SceneSpec spec = builtin;
+      spec.params.solver = m.solver;
+      spec.params.ccd = m.ccd;
+      spec.params.integrator = m.integrator;
+      spec.params.substeps = m.substeps;
+      World engine = make_world(spec, false), course = make_world(spec, false);
+      engine.enable_events();
+      course.enable_events();
+      bool events_agree = true;
+      for (int frame = 0; frame < 120; ++frame) {
+        physics::step(engine);
+        Game::step(course);
+        const auto a = engine.events.events(), b = course.events.events();
+        events_agree = events_agree && a.size() == b.size() && engine.pass.contact_count == course.pass.contact_count;
+        for (std::size_t i = 0; events_agree && i < a.size(); ++i)
+          events_agree = a[i].a == b[i].a && a[i].b == b[i].b && a[i].kind == b[i].kind && same(a[i].jn, b[i].jn);
+        contacts += static_cast<int>(engine.pass.contact_count);
+      }
+      BOOST_TEST_REQUIRE(same(engine.components, course.components), spec.name << " solver " << name(m.solver));
+      BOOST_TEST_REQUIRE(events_agree, spec.name << " solver " << name(m.solver));
+      ++scenes;
+    }
+  BOOST_TEST(scenes >= 40);
+  BOOST_TEST(contacts > 1000);  // the course passes resolved contacts: the comparison covers them
 }
 
 BOOST_AUTO_TEST_SUITE_END()

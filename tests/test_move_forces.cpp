@@ -9,7 +9,7 @@ BOOST_AUTO_TEST_CASE(move_adds_dt_times_velocity) {
   World w = test::physics_world();
   const auto b = Block::make(w, 100, 100, 40, 40, test::grey, 10.0);
   w.components.velocity[b.id] = {0.25, -0.5};
-  w.systems.move->update(w.components, course_dt);
+  Systems(w).move->update(w.components, course_dt);
   BOOST_TEST(w.components.position[b.id].x == 100 + course_dt * 0.25);
   BOOST_TEST(w.components.position[b.id].y == 100 + course_dt * -0.5);
 }
@@ -27,7 +27,7 @@ BOOST_AUTO_TEST_CASE(the_red_block_drifts_through_the_walls_without_collision) {
   BOOST_TEST(w.components.mass[red.id] == 10.0);
   BOOST_TEST((w.components.color[red.id] == Game::red));
   BOOST_TEST((w.components.velocity[red.id] == Vector{0.25, 0.25}));
-  BOOST_TEST(w.systems.move->size() == 5u);  // Block::make registers it with Move
+  BOOST_TEST(w.bodies(SystemId::move).size() == 5u);  // Block::make registers it with Move
   for (int i = 0; i < 600; ++i) Game::step(w);  // 10 s: 2500 px
   BOOST_TEST(w.components.position[red.id].x > 800.0);
   BOOST_TEST(w.components.position[red.id].y > 600.0);
@@ -42,13 +42,13 @@ BOOST_AUTO_TEST_CASE(forces_adds_dt_times_force_over_mass_then_resets) {
   const auto b = Block::make(w, 100, 100, 40, 40, test::grey, 10.0);
   w.components.velocity[b.id] = {1.0, 2.0};
   w.components.sum_forces[b.id] = {0.25, -0.75};
-  w.systems.forces->update(w.components, course_dt);
+  Systems(w).forces->update(w.components, course_dt);
   BOOST_TEST(w.components.velocity[b.id].x == 1.0 + course_dt * (0.25 / 10.0));
   BOOST_TEST(w.components.velocity[b.id].y == 2.0 + course_dt * (-0.75 / 10.0));
   BOOST_TEST((w.components.sum_forces[b.id] == Vector::zero()));
   // Reset: a second update changes nothing.
   const Vector v = w.components.velocity[b.id];
-  w.systems.forces->update(w.components, course_dt);
+  Systems(w).forces->update(w.components, course_dt);
   BOOST_TEST((w.components.velocity[b.id] == v));
 }
 
@@ -56,7 +56,7 @@ BOOST_AUTO_TEST_CASE(infinite_mass_is_untouched) {
   World w = test::physics_world();
   const auto wall = Block::make(w, 0, 0, 40, 40, test::grey, infinity);
   w.components.sum_forces[wall.id] = {3.0, 4.0};
-  w.systems.forces->update(w.components, course_dt, Vector{0, 0.01});
+  Systems(w).forces->update(w.components, course_dt, Vector{0, 0.01});
   BOOST_TEST((w.components.velocity[wall.id] == Vector::zero()));
 }
 

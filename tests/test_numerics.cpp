@@ -27,8 +27,8 @@ BOOST_AUTO_TEST_CASE(candidate_pairs_are_the_all_pairs_ones_in_registration_orde
   for (const double h : {0.0, 16.0})
     for (const double reach : {0.0, 0.5}) {
       std::vector<Pair> fast, slow;
-      candidate_pairs(w.components, w.systems.collision->entities(), h, reach, fast);
-      brute_force_pairs(w.components, w.systems.collision->entities(), h, reach, slow);
+      candidate_pairs(w.components, w.bodies(SystemId::collision), h, reach, fast);
+      brute_force_pairs(w.components, w.bodies(SystemId::collision), h, reach, slow);
       BOOST_TEST_REQUIRE(fast.size() == slow.size());
       BOOST_TEST(fast.size() > 100u);
       for (std::size_t i = 0; i < fast.size(); ++i) {
@@ -181,7 +181,7 @@ BOOST_AUTO_TEST_CASE(the_course_mode_never_runs_the_numerics_code) {
   for (int f = 0; f < 600; ++f) Game::step(w);
   BOOST_TEST(w.ccd.stats.impacts == 0);
   BOOST_TEST(w.contact_solver.stats.contacts == 0);
-  BOOST_TEST(w.systems.collision->contact_count() + 1 > 0u);
+  BOOST_TEST(w.pass.contact_count + 1 > 0u);
 }
 
 BOOST_AUTO_TEST_CASE(the_course_error_shrinks_with_dt_as_first_order) {

@@ -81,7 +81,8 @@ World random_scene(std::uint64_t seed, int bodies, bool collision = true) {
     Block::make(w, x, y, bw, bh, test::grey, 1.0);
   }
   if (collision) {
-    Collision& c = *w.systems.collision;
+    Systems systems(w);
+    Collision& c = *systems.collision;
     for (EntityId e = 0; e < w.components.size(); ++e)
       if (rng.uniform(0, 1) < 0.3) c.unregister(e), c.register_entity(Block::t{e});
   }
@@ -207,7 +208,8 @@ BOOST_AUTO_TEST_CASE(a_ray_from_inside_a_body_ignores_it_and_from_its_face_enter
 BOOST_AUTO_TEST_CASE(ties_go_to_the_lowest_id) {
   // Two overlapping blocks with the same top, registered in the other order.
   World w = walled({{100, 100, 40, 40}, {110, 100, 20, 20}});
-  Collision& c = *w.systems.collision;
+  Systems systems(w);
+  Collision& c = *systems.collision;
   c.unregister(4);
   c.register_entity(Block::t{4});
   BOOST_TEST(c.entities().back() == 4u);

@@ -86,7 +86,7 @@ BOOST_AUTO_TEST_CASE(digits_and_tab_switch_scenes) {
   tb.handle(press('1'));
   BOOST_TEST(tb.scene().name == "walls");
   BOOST_TEST(tb.world().components.size() == 4u);
-  BOOST_TEST(!tb.world().systems.move.has_value());  // walls declares Draw only
+  BOOST_TEST(!tb.world().declares(SystemId::move));  // walls declares Draw only
   tb.handle(press('7'));
   BOOST_TEST(tb.scene().name == "gas");
   tb.handle(press('9'));  // there is no 9th scene: nothing changes
@@ -123,8 +123,8 @@ BOOST_AUTO_TEST_CASE(a_click_spawns_a_block_at_rest_centred_on_the_pointer) {
   BOOST_TEST((tb.world().components.velocity[e] == Vector::zero()));
   BOOST_TEST(tb.world().components.mass[e] == Testbed::spawn_mass);
   // It takes part in the physics: registered with every declared system.
-  BOOST_TEST(tb.world().systems.collision->size() == n + 1);
-  BOOST_TEST(tb.world().systems.draw->size() == n + 1);
+  BOOST_TEST(tb.world().bodies(SystemId::collision).size() == n + 1);
+  BOOST_TEST(tb.world().bodies(SystemId::draw).size() == n + 1);
 }
 
 BOOST_AUTO_TEST_CASE(a_drag_flings_the_block_opposite_to_the_drag) {
@@ -228,7 +228,7 @@ BOOST_AUTO_TEST_CASE(overlay_keys_toggle_and_contacts_are_recorded) {
   BOOST_TEST(tb.overlays().aabb);
   BOOST_TEST(tb.overlays().velocity);
   BOOST_TEST(tb.overlays().contacts);
-  BOOST_TEST(tb.world().systems.collision->record_contacts);
+  BOOST_TEST(tb.world().pass.record_contacts);
   // Run until the striker hits the row: the view carries those contacts.
   for (int i = 0; i < 60 && tb.view(60, 0).contacts.empty(); ++i) tb.step();
   const View v = tb.view(60, 0);

@@ -53,10 +53,10 @@ BOOST_AUTO_TEST_CASE(walls_do_not_overlap_and_close_the_screen) {
 BOOST_AUTO_TEST_CASE(walls_are_registered_with_every_declared_system) {
   World w;
   Game::init_walls(w);
-  BOOST_TEST(w.systems.draw->size() == 4u);
-  BOOST_TEST(w.systems.move->size() == 4u);
-  BOOST_TEST(w.systems.forces->size() == 4u);
-  BOOST_TEST(w.systems.collision->size() == 4u);
+  BOOST_TEST(w.bodies(SystemId::draw).size() == 4u);
+  BOOST_TEST(w.bodies(SystemId::move).size() == 4u);
+  BOOST_TEST(w.bodies(SystemId::forces).size() == 4u);
+  BOOST_TEST(w.bodies(SystemId::collision).size() == 4u);
 }
 
 BOOST_AUTO_TEST_CASE(walls_never_move_under_collision_or_forces) {

@@ -8,7 +8,7 @@
 namespace physics {
 
 namespace {
-// The components a body has: each system it joins checks its own at compile time.
+// The components a body has (a course Block's), each set below.
 using Body = Entity<component::position, component::box, component::color, component::mass,
                     component::velocity, component::sum_forces, component::restitution>;
 
@@ -59,11 +59,9 @@ BodyId create_body(WorldId world, const BodyDef& d) {
   c.friction[b.id] = d.friction;
   const ContactRules rules = api::rules_of(d.filter, d.sensor, d.one_way);
   if (!rules.plain()) c.set_rules(b.id, rules);
-  Systems& s = w.world->systems;
-  if (s.draw) s.draw->register_entity(b);  // a viewed world may draw (the testbed's)
-  if (s.move) s.move->register_entity(b);
-  if (s.forces) s.forces->register_entity(b);
-  if (s.collision) s.collision->register_entity(b);
+  // The stages the world runs; Draw too in a world that draws (the testbed's, through api::View).
+  for (const SystemId s : {SystemId::draw, SystemId::forces, SystemId::move, SystemId::collision})
+    if (w.world->declares(s)) w.world->add(s, b.id);
   w.table.generation.resize(c.size(), 0);
   w.table.user_data.resize(c.size(), 0);
   w.table.generation[b.id] = 1;

@@ -17,9 +17,9 @@ WorldDef def_of(const World& w) {
   d.iterations = w.params.iterations;
   d.ccd = w.params.ccd;
   d.integrator = w.params.integrator == Integrator::exact ? IntegratorKind::exact : IntegratorKind::course;
-  d.forces = w.systems.forces.has_value();
-  d.move = w.systems.move.has_value();
-  d.collision = w.systems.collision.has_value();
+  d.forces = w.declares(SystemId::forces);
+  d.move = w.declares(SystemId::move);
+  d.collision = w.declares(SystemId::collision);
   d.contact_events = w.events.enabled;
   return d;
 }

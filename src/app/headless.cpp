@@ -49,8 +49,9 @@ std::string stage_times(const World& w) {
     out << (first ? "" : ", ") << name(s) << ' ';
     first = false;
     // A system the scene left out has no time at all, not a time of zero.
-    const bool off = (s == Stage::forces && !w.systems.forces) || (s == Stage::move && !w.systems.move) ||
-                     (s == Stage::collision && !w.systems.collision);
+    const bool off = (s == Stage::forces && !w.declares(SystemId::forces)) ||
+                     (s == Stage::move && !w.declares(SystemId::move)) ||
+                     (s == Stage::collision && !w.declares(SystemId::collision));
     if (off) out << "off";
     else out << w.times.ms_per_step(s);
   }
@@ -67,7 +68,7 @@ void print_summary(std::ostream& out, const World& w, const Summary& s, const st
   std::ostringstream o;
   o << "ran headless: " << why << "\n";
   if (!scene.empty()) {
-    SystemSet physics_systems = w.systems.declared();
+    SystemSet physics_systems = w.declared();
     physics_systems.draw = false;
     const std::string names = physics_systems.to_string();
     o << "scene:           " << scene << " (systems: " << (names.empty() ? "none" : names) << ")\n";

@@ -188,12 +188,12 @@ bool draw_sprite(std::string_view tag, Vector p, Rect r, Color c, Canvas& canvas
 
 void draw_world(const World& w, Style style, std::span<const BlockRole> roles, Canvas& canvas) {
   // plain is the course's own Draw::update, untouched (the look of the sheet).
-  if (style == Style::plain || !w.systems.draw) {
+  if (style == Style::plain || !w.declares(SystemId::draw)) {
     Game::draw(w, canvas);
     return;
   }
   const Components& c = w.components;
-  for (const EntityId e : w.systems.draw->entities()) {
+  for (const EntityId e : w.bodies(SystemId::draw)) {
     if (!can_draw(c.position[e])) continue;  // as Draw: nothing undefined to the canvas
     if (style == Style::speed) {
       // Fixed bodies and sensors do not move: their own colour says more.

@@ -121,7 +121,7 @@ void Testbed::reset() { rebuild(); }
 // The Collision system records its contacts for the C overlay, or for the
 // contact events (--events): one flag, two users.
 void Testbed::record_contacts() {
-  if (world_->systems.collision) world_->systems.collision->record_contacts = overlays_.contacts || world_->events.enabled;
+  if (world_->declares(SystemId::collision)) world_->pass.record_contacts = overlays_.contacts || world_->events.enabled;
 }
 
 void Testbed::select(std::size_t i) {
@@ -135,9 +135,9 @@ void Testbed::after_step() {
   // bodies that have moved apart), placed where the bodies meet now.
   last_contacts_.clear();
   last_regions_.clear();
-  if (world_->systems.collision && overlays_.contacts) {
+  if (world_->declares(SystemId::collision) && overlays_.contacts) {
     const Components& c = world_->components;
-    last_contacts_ = world_->systems.collision->contacts();
+    last_contacts_ = world_->pass.contacts;
     for (const Contact& k : last_contacts_) {
       const Vector a = c.position[k.c], b = c.position[k.b];
       const Vector lo{std::max(a.x, b.x), std::max(a.y, b.y)};
@@ -352,7 +352,8 @@ void Testbed::add_measures(View& v, double fps, double draw_ms) const {
   char draw[64];
   std::snprintf(draw, sizeof draw, "  draw %.3f ms/frame", draw_ms);
   v.hud.push_back(options_line(world_->params, overlays_));
-  for (std::string& line : wrap("ms/step: " + Headless::stage_times(*world_) + (world_->systems.draw ? draw : "  draw off")))
+  const bool drawn = world_->declares(SystemId::draw);
+  for (std::string& line : wrap("ms/step: " + Headless::stage_times(*world_) + (drawn ? draw : "  draw off")))
     v.hud.push_back(std::move(line));
   if (v.ray && v.ray->hit) v.hud.push_back(ray_line(*v.ray->hit));
   if (const std::string note = Headless::advice(*world_); !note.empty())

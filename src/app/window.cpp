@@ -229,7 +229,7 @@ int speed_legend(SDL_Renderer* r, int x, int y, const Text& text) {
 }
 
 double render_bodies(const World& world, const View& view, SDL_Renderer* r) {
-  const Draw& draw = *world.systems.draw;
+  const auto draw = world.bodies(SystemId::draw);
   const Uint64 t0 = SDL_GetPerformanceCounter();
   SdlCanvas canvas(r);
   Styles::draw_world(world, view.style, view.roles, canvas);
@@ -240,7 +240,7 @@ double render_bodies(const World& world, const View& view, SDL_Renderer* r) {
   const Components& c = world.components;
   if (view.overlays.aabb) {
     set_colour(r, aabb_colour);
-    for (const EntityId e : draw.entities()) {
+    for (const EntityId e : draw) {
       if (!drawable(c.position[e])) continue;
       const SDL_FRect box{float(c.position[e].x), float(c.position[e].y), float(c.box[e].width),
                           float(c.box[e].height)};
@@ -249,7 +249,7 @@ double render_bodies(const World& world, const View& view, SDL_Renderer* r) {
   }
   if (view.overlays.velocity) {
     set_colour(r, velocity_colour);
-    for (const EntityId e : draw.entities())
+    for (const EntityId e : draw)
       if (!Vector::is_zero(c.velocity[e])) arrow(r, centre(c, e), centre(c, e) + velocity_scale * c.velocity[e]);
   }
   return draw_ms;
@@ -265,7 +265,7 @@ double Window::render(const World& world, const View& view) {
   // A scene without Draw shows no body, but the HUD, key list and contacts
   // still show (the HUD says "draw off").
   double draw_ms = 0.0;
-  if (world.systems.draw) draw_ms = render_bodies(world, view, r);
+  if (world.declares(SystemId::draw)) draw_ms = render_bodies(world, view, r);
   draw_contacts(r, view);
   if (view.sling) {
     const auto [from, to] = *view.sling;

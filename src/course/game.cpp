@@ -1,5 +1,6 @@
 #include "course/game.hpp"
 
+#include "course/system_defs.hpp"
 #include "course/utils/random.hpp"
 #include "engine/step.hpp"
 
@@ -73,12 +74,18 @@ void init_scene(World& w, std::uint64_t seed) {
   // Q9 end
 }
 
-// The frame itself is the engine's (engine/step.cpp): Forces, Move and
-// Collision, each substep, in the sheet's order.
-void step(World& w) { physics::step(w); }
+// The engine's frame (engine/step.hpp: the substeps, the numerics stages,
+// events, health) with the course's systems as its stages.
+void step(World& w) {
+  Systems s(w);
+  run_frame(
+      w, [&](double h) { s.forces->update(w.components, h, w.params.gravity); },
+      [&](double h) { s.move->update(w.components, h); },
+      [&] { s.collision->update(w.components, w.course_pairs()); });
+}
 
 void draw(const World& w, Canvas& canvas) {
-  if (w.systems.draw) w.systems.draw->update(w.components, canvas);
+  if (const auto* bodies = w.stage(SystemId::draw)) Draw(*bodies).update(w.components, canvas);
 }
 
 }  // namespace physics::Game

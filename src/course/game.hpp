@@ -8,6 +8,7 @@
 
 #include "engine/world.hpp"
 #include "course/entities/block.hpp"
+#include "course/systems/draw.hpp"
 
 namespace physics::Game {
 
@@ -55,8 +56,9 @@ Block::t red_block_with_force(World& w);
 void init_scene(World& w, std::uint64_t seed = 42);
 
 // One frame of physics (the sheet: "call update in the main program"):
-// Forces, Move, Collision, each `substeps` times with dt / substeps. The
-// engine runs it (engine/step.cpp), for scenes and the public API alike.
+// Forces, Move, Collision, each `substeps` times with dt / substeps: the
+// engine's frame (engine/step.hpp, run_frame) running the course's systems.
+// The public API's step runs the engine's copies of them instead, to the bit.
 void step(World& w);
 
 // Draw's part of the frame, on whatever canvas the front end gives.

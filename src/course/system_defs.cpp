@@ -2,15 +2,11 @@
 
 namespace physics {
 
-Systems::Systems(SystemSet set) {
-  if (set.draw) draw.emplace();
-  if (set.forces) forces.emplace();
-  if (set.move) move.emplace();
-  if (set.collision) collision.emplace();
-}
-
-SystemSet Systems::declared() const {
-  return {draw.has_value(), forces.has_value(), move.has_value(), collision.has_value()};
+Systems::Systems(World& w) {
+  if (auto* l = w.stage(SystemId::draw)) draw.emplace(*l);
+  if (auto* l = w.stage(SystemId::forces)) forces.emplace(*l);
+  if (auto* l = w.stage(SystemId::move)) move.emplace(*l);
+  if (auto* l = w.stage(SystemId::collision)) collision.emplace(*l, w.pass);
 }
 
 }  // namespace physics

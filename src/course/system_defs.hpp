@@ -2,6 +2,12 @@
 // Forces and Collision). A scene declares which ones it uses (SystemSet,
 // engine/system_set.hpp); the others are never created, so nothing registers
 // with them and nothing updates them.
+//
+// The world holds each declared system's bodies (World::stage) and the
+// Collision pass's contacts (World::pass); Systems(w) binds the course's
+// systems to them, so that registering with a system adds the body to the
+// world's list, which the engine's own stages read too. Bind them where they
+// are used (Systems s(w);): they are views of w and cannot outlive it.
 #pragma once
 
 #include <optional>
@@ -10,7 +16,7 @@
 #include "course/systems/draw.hpp"
 #include "course/systems/forces.hpp"
 #include "course/systems/move.hpp"
-#include "engine/system_set.hpp"
+#include "engine/world.hpp"
 
 namespace physics {
 
@@ -20,8 +26,7 @@ struct Systems {
   std::optional<Move> move;
   std::optional<Collision> collision;
 
-  explicit Systems(SystemSet set = {});
-  SystemSet declared() const;
+  explicit Systems(World& w);
 };
 
 }  // namespace physics

@@ -18,6 +18,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cassert>
 #include <cstdint>
 #include <span>
 #include <type_traits>
@@ -35,25 +36,40 @@ struct Entity {
 template <class C, class... Cs>
 inline constexpr bool has_component = (std::is_same_v<C, Cs> || ...);
 
+// A system is a view of one stage's body list, which the world holds
+// (World::stage, engine/world.hpp): registering with it adds the body to the
+// world's list, so that the engine's stages and the course's systems run over
+// the same bodies in the same order. Bound to a const list it only reads
+// (an update); registering then is a programming error (asserted).
 template <class... Required>
 class System {
  public:
+  explicit System(std::vector<EntityId>& bodies) : entities_(bodies), list_(&bodies) {}
+  explicit System(const std::vector<EntityId>& bodies) : entities_(bodies) {}
+
   // OCaml: `register`. Fails to compile if the entity lacks a required component.
   template <class... Has>
     requires(has_component<Required, Has...> && ...)
   void register_entity(Entity<Has...> e) {
-    entities_.push_back(e.id);
+    assert(list_);
+    list_->push_back(e.id);
   }
 
   // OCaml: `unregister`. Keeps the registration order, which fixes the order in
   // which pairs are resolved and therefore the result of a run.
-  void unregister(EntityId id) { std::erase(entities_, id); }
+  void unregister(EntityId id) {
+    assert(list_);
+    std::erase(*list_, id);
+  }
 
   std::span<const EntityId> entities() const { return entities_; }
   std::size_t size() const { return entities_.size(); }
 
  protected:
-  std::vector<EntityId> entities_;
+  const std::vector<EntityId>& entities_;  // the world's list for this stage
+
+ private:
+  std::vector<EntityId>* list_ = nullptr;  // the same list, to register with; null if bound read-only
 };
 
 }  // namespace physics

@@ -39,8 +39,8 @@ Interval clip(double o, double t, double lo, double hi) {
 }  // namespace
 
 std::vector<EntityId> query_bodies(const World& w) {
-  if (w.systems.collision) {
-    const auto e = w.systems.collision->entities();
+  if (w.declares(SystemId::collision)) {
+    const auto e = w.bodies(SystemId::collision);
     return {e.begin(), e.end()};
   }
   std::vector<EntityId> all(w.components.size());

@@ -3,8 +3,8 @@
 // registration order.
 //
 // The course's systems (course/systems/) are the student's answers, which
-// the exercise mode replaces by stubs; an engine that embeds no course code
-// (issue 21: the engine's step, the public API) runs these instead. They are
+// the exercise mode replaces by stubs; the engine's own step (engine/step.cpp:
+// the public API, the benchmark), which runs no course code, runs these. They are
 // the course's formulas, operation for operation and in the same order, so
 // a step through them gives the same bits as one through the course's
 // systems: tests/test_geometry.cpp checks it on random worlds.

@@ -1,7 +1,8 @@
 // Which of the four systems a world runs (a scene's "systems" key): Draw,
 // Forces, Move, Collision, by name and as a set. The engine's, so that a
-// world's stages are named without the course's systems; the systems
-// themselves are the course's (course/system_defs.hpp).
+// world's stages are named without the course's systems: the world holds
+// each declared stage's bodies (World::bodies), which the engine's stages
+// and the course's systems (course/system_defs.hpp) both run over.
 #pragma once
 
 #include <array>

@@ -58,14 +58,41 @@ double StageTimes::total_ms_per_step() const {
   return t;
 }
 
-World::World(SystemSet set, Params p) : systems(set), params(p) { validate(params); }
+World::World(SystemSet set, Params p) : params(p) {
+  validate(params);
+  for (const SystemId s : all_systems)
+    if (set.has(s)) stages_[index(s)].emplace();
+}
+
+SystemSet World::declared() const {
+  SystemSet set;
+  for (const SystemId s : all_systems) set.set(s, declares(s));
+  return set;
+}
+
+std::span<const EntityId> World::bodies(SystemId s) const {
+  const auto& list = stages_[index(s)];
+  return list ? std::span<const EntityId>(*list) : std::span<const EntityId>();
+}
+
+std::vector<EntityId>* World::stage(SystemId s) {
+  auto& list = stages_[index(s)];
+  return list ? &*list : nullptr;
+}
+
+const std::vector<EntityId>* World::stage(SystemId s) const {
+  const auto& list = stages_[index(s)];
+  return list ? &*list : nullptr;
+}
+
+void World::add(SystemId s, EntityId e) {
+  if (auto* list = stage(s)) list->push_back(e);
+}
 
 void World::destroy(EntityId e) {
   if (e >= components.size() || !alive(e)) return;
-  if (systems.draw) systems.draw->unregister(e);
-  if (systems.forces) systems.forces->unregister(e);
-  if (systems.move) systems.move->unregister(e);
-  if (systems.collision) systems.collision->unregister(e);
+  for (auto& list : stages_)
+    if (list) std::erase(*list, e);
   destroyed_.resize(components.size(), 0);
   destroyed_[e] = 1;
 }
@@ -80,36 +107,36 @@ SolverSettings solver_settings(const Params& p) {
 }  // namespace
 
 void World::before_forces() {
-  if (exact_motion() && systems.move) exact_.start(components, systems.move->entities());
+  if (exact_motion() && declares(SystemId::move)) exact_.start(components, bodies(SystemId::move));
 }
 
 void World::before_move(double h) {
-  const bool exact = exact_motion() && systems.move;
-  if (exact) exact_.after_forces(components, systems.move->entities());
-  if (systems.collision) {
-    const auto bodies = systems.collision->entities();
+  const bool exact = exact_motion() && declares(SystemId::move);
+  if (exact) exact_.after_forces(components, bodies(SystemId::move));
+  if (declares(SystemId::collision)) {
+    const auto colliding = bodies(SystemId::collision);
     if (params.solver == Solver::automatic) {
-      auto_before_move(bodies, h);
+      auto_before_move(colliding, h);
     } else {
       if (params.solver == Solver::stable) {
-        contact_solver.solve_velocities(components, bodies, h, params.gravity, solver_settings(params), broadphase,
+        contact_solver.solve_velocities(components, colliding, h, params.gravity, solver_settings(params), broadphase,
                                         times);
         record_solver_contacts();
       }
       if (params.ccd)
-        times.time(Stage::ccd, [&] { ccd.resolve(components, bodies, h, params.gravity, broadphase, events); });
+        times.time(Stage::ccd, [&] { ccd.resolve(components, colliding, h, params.gravity, broadphase, events); });
     }
   }
   // Last, so that it sees which velocities the solver and CCD changed, and
   // timed with Move, whose result it corrects.
-  if (exact) times.time(Stage::move, [&] { exact_.shift(components, systems.move->entities(), h); });
+  if (exact) times.time(Stage::move, [&] { exact_.shift(components, bodies(SystemId::move), h); });
 }
 
 // The auto mode's substep (engine/auto_mode.hpp): the solver's velocities
 // if it chose the solver (impacts included: CCD only sweeps what is still
 // fast after them), then CCD for the fast bodies.
 void World::auto_before_move(std::span<const EntityId> bodies, double h) {
-  systems.collision->record_contacts = true;  // the pass's contacts tell auto whether they persist
+  pass.record_contacts = true;  // the pass's contacts tell auto whether they persist
   // The choice is not timed: two clock reads would cost a tenth of a small
   // scene's step, more than the choice itself (an O(n) look at velocities).
   if (automatic.plan(components, bodies, h, params.gravity)) {
@@ -127,15 +154,15 @@ void World::auto_before_move(std::span<const EntityId> bodies, double h) {
 
 void World::enable_events() {
   events.enabled = true;
-  if (systems.collision) systems.collision->record_contacts = true;
+  if (declares(SystemId::collision)) pass.record_contacts = true;
 }
 
-// The course pass's contacts, recorded by Collision::update.
+// The course pass's contacts, recorded by the pass (engine/step.hpp).
 void World::record_contacts() {
-  if (!systems.collision) return;
-  if (params.solver == Solver::automatic) automatic.after_course_pass(components, systems.collision->contacts());
+  if (!declares(SystemId::collision)) return;
+  if (params.solver == Solver::automatic) automatic.after_course_pass(components, pass.contacts);
   if (!events.enabled) return;
-  for (const Contact& c : systems.collision->contacts()) events.touch(c.c, c.b, c.normal, c.jn, c.jt);
+  for (const Contact& c : pass.contacts) events.touch(c.c, c.b, c.normal, c.jn, c.jt);
 }
 
 // The stable solver's velocity contacts, with their accumulated impulses
@@ -153,19 +180,26 @@ void World::record_solver_contacts() {
 }
 
 void World::finish_events() {
-  if (events.enabled && systems.collision) events.finish(components, systems.collision->entities(), frame);
+  if (events.enabled && declares(SystemId::collision)) events.finish(components, bodies(SystemId::collision), frame);
+}
+
+void World::end_frame() {
+  ++times.steps;
+  ++frame;
+  finish_events();
+  times.time(Stage::health, [&] { check_health(); });
 }
 
 void World::after_move() {
-  if (!systems.collision || !solver_step()) return;
-  contact_solver.solve_positions(components, systems.collision->entities(), params.gravity, solver_settings(params),
+  if (!declares(SystemId::collision) || !solver_step()) return;
+  contact_solver.solve_positions(components, bodies(SystemId::collision), params.gravity, solver_settings(params),
                                  broadphase, times);
 }
 
 void World::check_health() {
   health.check_bodies(components, frame);
   if (!health.finite() || health.deep || frame % Health::overlap_period != 0) return;
-  if (!systems.collision || params.solver != Solver::course) return;
+  if (!declares(SystemId::collision) || params.solver != Solver::course) return;
   // The deepest overlap of the last look, if still deeper than 1 px, is a
   // persistent one; then look for the deepest overlap now.
   if (health.suspect) {
@@ -196,7 +230,7 @@ void World::check_health() {
 }
 
 BroadPhase::CoursePairs World::course_pairs() {
-  return broadphase.course_pairs(components, systems.collision->entities(), params.substep());
+  return broadphase.course_pairs(components, bodies(SystemId::collision), params.substep());
 }
 
 double World::kinetic_energy() const {

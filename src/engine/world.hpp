@@ -1,21 +1,26 @@
-// A world: the component arrays, the systems a scene declared, and the
-// parameters of the step. It replaces the OCaml code's global tables, so that
-// tests and the testbed can hold several worlds at once.
+// A world: the component arrays, the body lists of the stages a scene
+// declared, and the parameters of the step. It replaces the OCaml code's
+// global tables, so that tests and the testbed can hold several worlds at
+// once. It holds no course code: the course's systems are views of its lists
+// (course/system_defs.hpp).
 #pragma once
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string_view>
+#include <vector>
 
 #include "engine/components.hpp"
-#include "course/system_defs.hpp"
 #include "engine/auto_mode.hpp"
 #include "engine/ccd.hpp"
+#include "engine/contact.hpp"
 #include "engine/contact_solver.hpp"
 #include "engine/health.hpp"
 #include "engine/integrator.hpp"
 #include "engine/limits.hpp"
 #include "engine/pairs.hpp"
+#include "engine/system_set.hpp"
 #include "engine/timing.hpp"
 
 namespace physics {
@@ -61,13 +66,22 @@ struct Params {
 // bad parameter.
 void validate(const Params& p);
 
+// The contacts of the course pass (the Collision stage's one pass over the
+// pairs, engine/stages.hpp, or the course's Collision::update), for the
+// testbed's overlays, contact events, the auto mode and tests: how many
+// pairs the last pass resolved, and their contacts if record_contacts.
+struct PassContacts {
+  bool record_contacts = false;
+  std::vector<Contact> contacts;
+  std::size_t contact_count = 0;
+};
+
 struct World {
   Components components;
-  Systems systems;
   Params params;
   StageTimes times;
   std::int64_t frame = 0;
-  // The engine beside the course's systems: the one broad phase every stage
+  // The engine beside the sheet's stages: the one broad phase every stage
   // takes its pairs from, and the state of the numerics options (Params::ccd,
   // Params::solver): impact counters and the stable solver's warm-start
   // impulses. The course mode uses the broad phase alone.
@@ -79,21 +93,37 @@ struct World {
   Health health;
   // Contact events (engine/events.hpp), if enabled (enable_events).
   ContactEvents events;
+  // The last course pass's contacts (the Collision stage's).
+  PassContacts pass;
 
   explicit World(SystemSet set = {}, Params p = {});
 
-  // The archive's `unregister`, from every system: the body no longer
+  // The stages the world runs (the scene's "systems"), each with its bodies
+  // in registration order, the order that fixes the pairs' and so the bits
+  // of a run. A stage not declared has no list: nothing registers with it
+  // and nothing runs it. The engine's stages and the course's systems
+  // (course/system_defs.hpp, bound to these lists) read the same ones.
+  bool declares(SystemId s) const { return stages_[index(s)].has_value(); }
+  SystemSet declared() const;
+  std::span<const EntityId> bodies(SystemId s) const;  // empty if not declared
+  // The list itself, for registering (nullptr if not declared).
+  std::vector<EntityId>* stage(SystemId s);
+  const std::vector<EntityId>* stage(SystemId s) const;
+  // Registers e with stage s, if the world declares it.
+  void add(SystemId s, EntityId e);
+
+  // The archive's `unregister`, from every stage: the body no longer
   // moves, collides or is drawn, its id is not reused (its slot stays in the
   // component arrays), and dumps and diagnostics leave it out.
   void destroy(EntityId e);
   bool alive(EntityId e) const { return e >= destroyed_.size() || destroyed_[e] == 0; }
 
   // The engine's stages around Forces and Move in a substep of h ms
-  // (Game::step calls them; they do nothing in the course mode): before
-  // Forces, the exact integrator's look at the velocities; before Move, the
-  // stable solver's velocities, CCD's impacts and the exact integrator's
-  // shift; after it, the stable solver's position projection, which replaces
-  // the course's Collision pass.
+  // (run_frame calls them, engine/step.hpp; they do nothing in the course
+  // mode): before Forces, the exact integrator's look at the velocities;
+  // before Move, the stable solver's velocities, CCD's impacts and the exact
+  // integrator's shift; after it, the stable solver's position projection,
+  // which replaces the course's Collision pass.
   void before_forces();
   void before_move(double h);
   void after_move();
@@ -105,18 +135,21 @@ struct World {
   bool solver_step() const {
     return params.solver == Solver::stable || (params.solver == Solver::automatic && automatic.solver_path());
   }
-  // The checks after a step (Game::step runs them, timed as Stage::health):
+  // The checks after a step (run_frame runs them, timed as Stage::health):
   // non-finite values, escapes, persistent deep overlaps (course solver).
   void check_health();
   // Contact events (nothing unless enable_events() was called): the course
-  // pass's contacts of a substep (Game::step calls it after the pass; the
+  // pass's contacts of a substep (run_frame calls it after the pass; the
   // stable solver's and CCD's are recorded in before_move), and the events
   // of the step, after it.
   void enable_events();
   void record_contacts();
   void finish_events();
+  // The end of run_frame's frame: the frame counted, then, not part of the
+  // sheet, its contact events and the health checks of the state it left.
+  void end_frame();
 
-  // The pairs of the Collision system's bodies, for its pass.
+  // The pairs of the Collision stage's bodies, for its pass.
   BroadPhase::CoursePairs course_pairs();
 
   // Diagnostics over finite masses (fixed bodies carry no kinetic energy and
@@ -126,9 +159,11 @@ struct World {
   std::size_t finite_bodies() const;
 
  private:
+  static std::size_t index(SystemId s) { return static_cast<std::size_t>(s); }
   void record_solver_contacts();  // before_move's, after the stable solver's velocities
   void auto_before_move(std::span<const EntityId> bodies, double h);
   ExactIntegrator exact_;  // Params::integrator == Integrator::exact
+  std::array<std::optional<std::vector<EntityId>>, all_systems.size()> stages_;  // by SystemId
   std::vector<std::uint8_t> destroyed_;  // by id; shorter than the arrays until a body is destroyed
 };
 

@@ -56,7 +56,7 @@ bool all_finite(const World& w) {
 
 double max_overlap(const World& w) {
   const Components& k = w.components;
-  const auto ids = w.systems.collision->entities();
+  const auto ids = w.bodies(SystemId::collision);
   // Sort by left edge so that only pairs overlapping in x are looked at.
   std::vector<EntityId> order(ids.begin(), ids.end());
   std::sort(order.begin(), order.end(), [&](EntityId a, EntityId b) { return k.position[a].x < k.position[b].x; });

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "course/game.hpp"
+#include "course/system_defs.hpp"
 #include "course/utils/random.hpp"
 
 namespace physics::numerics {
@@ -536,11 +537,11 @@ std::string shock_ablation() {
         const double h = w.params.dt;
         double sink = 0;
         for (int f = 0; f < 600; ++f) {
-          w.systems.forces->update(w.components, h, w.params.gravity);
-          solver.solve_velocities(w.components, w.systems.collision->entities(), h, w.params.gravity, settings,
+          Systems(w).forces->update(w.components, h, w.params.gravity);
+          solver.solve_velocities(w.components, w.bodies(SystemId::collision), h, w.params.gravity, settings,
                                   broadphase, times);
-          w.systems.move->update(w.components, h);
-          solver.solve_positions(w.components, w.systems.collision->entities(), w.params.gravity, settings, broadphase,
+          Systems(w).move->update(w.components, h);
+          solver.solve_positions(w.components, w.bodies(SystemId::collision), w.params.gravity, settings, broadphase,
                                  times);
           sink = std::max(sink, max_overlap(w));
         }

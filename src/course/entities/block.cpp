@@ -1,5 +1,10 @@
 #include "course/entities/block.hpp"
 
+#include "course/systems/collision.hpp"
+#include "course/systems/draw.hpp"
+#include "course/systems/forces.hpp"
+#include "course/systems/move.hpp"
+
 #include <cassert>
 #include <cmath>
 
@@ -28,11 +33,14 @@ t make(World& w, double x, double y, int width, int height, Color color, double 
   c.restitution[e.id] = restitution;
   // velocity and sum_forces keep their defaults: zero (Q2).
 
-  Systems& s = w.systems;
-  if (s.draw) s.draw->register_entity(e);
-  if (s.move) s.move->register_entity(e);
-  if (s.forces) s.forces->register_entity(e);
-  if (s.collision) s.collision->register_entity(e);
+  // Registered with each system the world declared, each bound to its list
+  // in the world as Systems(w) binds them (course/system_defs.hpp, which an
+  // entity does not include: it sits above the entities); each checks at
+  // compile time that a block has the components it needs.
+  if (auto* l = w.stage(SystemId::draw)) Draw(*l).register_entity(e);
+  if (auto* l = w.stage(SystemId::move)) Move(*l).register_entity(e);
+  if (auto* l = w.stage(SystemId::forces)) Forces(*l).register_entity(e);
+  if (auto* l = w.stage(SystemId::collision)) Collision(*l, w.pass).register_entity(e);
   return e;
 }
 

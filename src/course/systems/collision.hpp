@@ -6,12 +6,18 @@
 #include "engine/components.hpp"
 #include "engine/contact.hpp"
 #include "engine/pairs.hpp"
+#include "engine/world.hpp"
 
 namespace physics {
 
 class Collision : public System<component::position, component::box, component::mass,
                                 component::velocity, component::restitution> {
  public:
+  // Bound to a world's Collision list and its pass's contacts (World::pass).
+  Collision(std::vector<EntityId>& bodies, PassContacts& pass)
+      : System(bodies), record_contacts(pass.record_contacts), contacts_(pass.contacts),
+        contact_count_(pass.contact_count) {}
+
   // Q8. The sheet's loop: for each pair (c, b) of registered bodies, resolve
   // it. The engine's broad phase hands the pairs over in the sheet's order
   // (c registered before b, then by b), leaving out only pairs whose boxes
@@ -28,14 +34,15 @@ class Collision : public System<component::position, component::box, component::
   // x before y, the negative side before the positive one.
   static Vector penetration(Vector s_pos, Rect s);
 
-  // The contacts of the last update(), for the testbed's overlays and tests.
-  bool record_contacts = false;
+  // The contacts of the last update(), for the testbed's overlays and tests:
+  // the world's (World::pass), which the engine's pass fills the same way.
+  bool& record_contacts;
   const std::vector<Contact>& contacts() const { return contacts_; }
   std::size_t contact_count() const { return contact_count_; }
 
  private:
-  std::vector<Contact> contacts_;
-  std::size_t contact_count_ = 0;
+  std::vector<Contact>& contacts_;
+  std::size_t& contact_count_;
 };
 
 }  // namespace physics

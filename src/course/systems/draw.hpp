@@ -41,6 +41,7 @@ inline bool can_draw(Vector p) { return std::abs(p.x) < 1e9 && std::abs(p.y) < 1
 
 class Draw : public System<component::position, component::box, component::color> {
  public:
+  using System::System;  // bound to a world's list (course/system_defs.hpp)
   void update(const Components& c, Canvas& canvas) const;
 };
 

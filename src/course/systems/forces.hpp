@@ -8,6 +8,7 @@ namespace physics {
 
 class Forces : public System<component::sum_forces, component::mass, component::velocity> {
  public:
+  using System::System;  // bound to a world's list (course/system_defs.hpp)
   // For each finite mass m: v += dt * (Σf / m + gravity); Σf = 0.
   // `gravity` is an acceleration (px/ms²) applied to every finite mass, the
   // "perpetual force" the sheet mentions; zero in the course's scenes.
