@@ -63,6 +63,11 @@ struct TempDir {
   }
 };
 
+// The repository's folders, absolute: tests may run elsewhere.
+inline std::filesystem::path repo_root() { return std::filesystem::absolute(__FILE__).parent_path().parent_path(); }
+inline std::string scene_path(const std::string& name) { return (repo_root() / "scenes" / (name + ".json")).string(); }
+inline std::string replay_path(const std::string& name) { return (repo_root() / "replays" / (name + ".log")).string(); }
+
 inline std::string read(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream s;

@@ -198,6 +198,41 @@ BOOST_AUTO_TEST_CASE(a_restored_state_steps_on_bit_for_bit) {
   destroy_world(w);
 }
 
+// After a restore, a body made since the save is gone: its id must not name
+// the next body made in its slot, nor may a state go into another world.
+BOOST_AUTO_TEST_CASE(ids_made_after_a_save_stay_stale_after_the_restore) {
+  Falling f;
+  const WorldState saved = save_state(f.world);
+  BodyDef d = default_body_def();
+  d.user_data = 7;
+  const BodyId made_since = create_body(f.world, d);
+  restore_state(f.world, saved);
+  BOOST_TEST(!is_valid(made_since));
+  d.user_data = 9;
+  const BodyId next = create_body(f.world, d);  // the same slot
+  BOOST_TEST(!(next == made_since));
+  BOOST_TEST(!is_valid(made_since));
+  BOOST_TEST(has(error_of([&] { user_data(made_since); }), "stale"));
+  BOOST_TEST(user_data(next) == 9u);
+  Falling other;
+  BOOST_TEST(has(error_of([&] { restore_state(other.world, saved); }), "goes back into its own world"));
+  BOOST_TEST(position(other.box).y == 100.0);
+}
+
+BOOST_AUTO_TEST_CASE(out_of_range_enums_and_runaway_impulses_are_refused) {
+  WorldDef w = default_world_def();
+  w.solver = static_cast<SolverKind>(7);
+  BOOST_TEST(has(error_of([&] { create_world(w); }), "solver or integrator"));
+  Falling f;
+  BodyDef d = default_body_def();
+  d.one_way = static_cast<OneWay>(9);
+  BOOST_TEST(has(error_of([&] { create_body(f.world, d); }), "one_way"));
+  BOOST_TEST(has(error_of([&] { set_one_way(f.box, static_cast<OneWay>(9)); }), "one_way"));
+  set_mass(f.box, 1e-320);
+  BOOST_TEST(has(error_of([&] { apply_impulse(f.box, {1.0, 0.0}); }), "the velocity an impulse gives"));
+  BOOST_TEST(velocity(f.box).x == 0.0);
+}
+
 BOOST_AUTO_TEST_CASE(queries_name_the_bodies_they_hit) {
   Falling f;
   const auto hit = ray_cast(f.world, {10, 0}, {0, 1}, 1000);

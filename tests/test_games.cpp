@@ -18,10 +18,6 @@ using namespace physics::test;
 
 namespace {
 
-// Absolute (the repository's scenes/ and replays/): tests may run elsewhere.
-std::filesystem::path root() { return std::filesystem::absolute(__FILE__).parent_path().parent_path(); }
-std::string scene_path(const std::string& name) { return (root() / "scenes" / (name + ".json")).string(); }
-std::string replay_path(const std::string& name) { return (root() / "replays" / (name + ".log")).string(); }
 
 // The command line, headless, on a committed replay of a game.
 std::string replay_headless(const std::string& game) {

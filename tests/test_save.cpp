@@ -20,9 +20,6 @@ using namespace physics::test;
 
 namespace {
 
-std::filesystem::path root() { return std::filesystem::absolute(__FILE__).parent_path().parent_path(); }
-std::string scene_path(const std::string& name) { return (root() / "scenes" / (name + ".json")).string(); }
-std::string replay_path(const std::string& name) { return (root() / "replays" / (name + ".log")).string(); }
 
 // The dump without its id column: a save closes up the ids of destroyed
 // bodies (a collected coin), the rows stay in the same order.
@@ -106,7 +103,7 @@ BOOST_AUTO_TEST_CASE(the_next_level_resolves_from_the_saved_files_folder) {
   BOOST_TEST(back.game.next != "targets-2.json");
   BOOST_TEST(std::filesystem::equivalent(back.game.next_path, scene_path("targets-2")));
   // Saved beside it, the name stays as it was.
-  const std::string beside = (root() / "scenes" / "targets-1.json").string();
+  const std::string beside = (repo_root() / "scenes" / "targets-1.json").string();
   BOOST_TEST(Save::next_from(tb.scene().game, beside) == "targets-2.json");
   // Without a file (in memory), as it was.
   BOOST_TEST(Save::next_from(tb.scene().game, "") == "targets-2.json");

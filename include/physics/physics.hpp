@@ -6,8 +6,8 @@
 // destroying a world or a body makes its ids stale. Every function given a
 // stale, null or foreign id, or a bad value (NaN, a size of 0, a negative
 // mass...), throws physics::Error naming the problem; nothing is changed
-// then. `is_valid` tells without throwing. Not thread-safe: use one thread
-// per set of worlds, or lock around every call.
+// then. `is_valid` tells without throwing. Not thread-safe (the table of
+// worlds is shared): call the API from one thread, or lock around every call.
 //
 // Links against libphysics.a (pkg-config physics, or CMake find_package
 // (physics) with target physics::physics). Includes only standard headers.
@@ -23,6 +23,8 @@
 #include <vector>
 
 #include "physics/math.hpp"
+
+static_assert(__cplusplus >= 202002L, "physics/physics.hpp needs C++20 (-std=c++20)");
 
 namespace physics {
 
@@ -206,12 +208,13 @@ class WorldState {
 
  private:
   std::unique_ptr<Data> data_;
-  friend WorldState save_state(WorldId world);  // a copy of everything the next steps read
+  friend WorldState save_state(WorldId world);
   friend void restore_state(WorldId world, const WorldState& state);
 };
 WorldState save_state(WorldId world);  // a copy of everything the next steps read
-// The world becomes the saved one: its bodies, frame and def; ids saved with it are valid again.
-void restore_state(WorldId world, const WorldState& state);  // throws Error if empty
+// The world becomes the saved one: its bodies, frame and def; ids of bodies alive at the save are valid
+// again, ids of bodies made since are stale. Throws Error if the state is empty or another world's.
+void restore_state(WorldId world, const WorldState& state);
 
 // ---- profile and health ----
 

@@ -23,6 +23,7 @@ void check(const BodyDef& d) {
   api::check_motion(d.force, "a body's force");
   api::check_restitution(d.restitution);
   api::check_friction(d.friction);
+  if (d.one_way > OneWay::right) throw Error("a body's one_way must be one of OneWay's values");
 }
 
 // The body's own components, for a getter or a setter.
@@ -64,7 +65,7 @@ BodyId create_body(WorldId world, const BodyDef& d) {
     if (w.world->declares(s)) w.world->add(s, b.id);
   w.table.generation.resize(c.size(), 0);
   w.table.user_data.resize(c.size(), 0);
-  w.table.generation[b.id] = 1;
+  w.table.generation[b.id] = w.issue(b.id);
   w.table.user_data[b.id] = d.user_data;
   return api::id_of(world, w, b.id);
 }
@@ -72,7 +73,7 @@ BodyId create_body(WorldId world, const BodyDef& d) {
 void destroy_body(BodyId id) {
   Own o = own(id);
   o.w.world->destroy(o.e);
-  ++o.w.table.generation[o.e];  // the id goes stale even if a restored state brings the body back
+  o.w.table.generation[o.e] = o.w.issue(o.e);  // a generation no id holds: the id goes stale
 }
 
 bool is_valid(BodyId id) { return api::live(id); }
@@ -110,7 +111,10 @@ void apply_impulse(BodyId id, Vec2 j) {
   Own o = own(id);
   api::check_motion(j, "an impulse");
   const double m = o.c().mass[o.e];
-  if (std::isfinite(m)) o.c().velocity[o.e] = o.c().velocity[o.e] + Vector::mult(1.0 / m, api::to_engine(j));
+  if (!std::isfinite(m)) return;
+  const Vector v = o.c().velocity[o.e] + Vector::mult(1.0 / m, api::to_engine(j));
+  api::check_motion(api::to_public(v), "the velocity an impulse gives");  // a tiny mass: refused, not inf
+  o.c().velocity[o.e] = v;
 }
 double mass(BodyId id) { Own o = own(id); return o.c().mass[o.e]; }
 void set_mass(BodyId id, double m) { Own o = own(id); api::check_mass(m); o.c().mass[o.e] = m; }
@@ -124,7 +128,10 @@ void set_filter(BodyId id, Filter f) { set_rules(id, f, is_sensor(id), one_way(i
 bool is_sensor(BodyId id) { Own o = own(id); return o.c().rules(o.e).sensor; }
 void set_sensor(BodyId id, bool sensor) { set_rules(id, filter(id), sensor, one_way(id)); }
 OneWay one_way(BodyId id) { Own o = own(id); return static_cast<OneWay>(o.c().rules(o.e).one_way); }
-void set_one_way(BodyId id, OneWay face) { set_rules(id, filter(id), is_sensor(id), face); }
+void set_one_way(BodyId id, OneWay face) {
+  if (face > OneWay::right) throw Error("a body's one_way must be one of OneWay's values");
+  set_rules(id, filter(id), is_sensor(id), face);
+}
 
 Color color(BodyId id) { Own o = own(id); return o.c().color[o.e]; }
 void set_color(BodyId id, Color c) { Own o = own(id); o.c().color[o.e] = c; }

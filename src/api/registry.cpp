@@ -38,6 +38,14 @@ void Live::sync() {
     table.generation.resize(n, 1);
     table.user_data.resize(n, 0);
   }
+  if (issued.size() < n) issued.resize(n, 1);
+}
+
+std::uint16_t Live::issue(EntityId e) {
+  if (issued.size() <= e) issued.resize(e + 1, 0);
+  // 65 535 generations a slot; then it wraps, skipping 0 (never a valid id's).
+  if (++issued[e] == 0) issued[e] = 1;
+  return issued[e];
 }
 
 bool live(WorldId id) { return find(id) != nullptr; }

@@ -25,6 +25,11 @@ struct Live {
   std::unique_ptr<World> owned;  // null for a view
   World* world = nullptr;        // owned.get(), or the viewed world
   Table table;
+  // By entity id, the last generation ever handed out: never rolled back by
+  // restore_state, so that a body made after a restore never gets the
+  // generation of one made, since the save, in the same slot.
+  std::vector<std::uint16_t> issued;
+  std::uint16_t issue(EntityId e);  // the next generation of slot e
   // Bodies made outside the API (a scene's, the testbed's) get generation 1
   // the first time the API looks: their ids are valid from then on.
   void sync();

@@ -7,6 +7,7 @@
 namespace physics {
 
 struct WorldState::Data {
+  WorldId from;  // a state goes back into its own world only: another's ids would name its bodies
   World world;
   api::Table table;
 };
@@ -24,13 +25,16 @@ WorldState& WorldState::operator=(WorldState&&) noexcept = default;
 WorldState save_state(WorldId world) {
   WorldState s;
   const api::Live& w = api::world(world);
-  s.data_ = std::make_unique<WorldState::Data>(WorldState::Data{*w.world, w.table});
+  s.data_ = std::make_unique<WorldState::Data>(WorldState::Data{world, *w.world, w.table});
   return s;
 }
 
 void restore_state(WorldId world, const WorldState& state) {
   api::Live& w = api::world(world);
   if (!state.data_) throw Error("restore_state: the state is empty (not made by save_state)");
+  if (!(state.data_->from == world))
+    throw Error("restore_state: the state was saved from " + api::describe(state.data_->from) + ", not from " +
+                api::describe(world) + " (a state goes back into its own world)");
   *w.world = state.data_->world;
   w.table = state.data_->table;
 }

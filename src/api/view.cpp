@@ -36,7 +36,17 @@ View::~View() {
   if (live(id_)) remove(id_);
 }
 
-void View::rebind(World& w) { world(id_).world = &w; }
+void View::rebind(World& w) {
+  Live& live = world(id_);
+  // The table knows how many bodies the world had (the old place may be
+  // moved from, and empty, by now).
+  const std::size_t known = live.table.generation.size();
+  if (known != 0 && w.components.size() != known)
+    throw Error("View::rebind: not the same world moved (" + std::to_string(w.components.size()) + " bodies, not " +
+                std::to_string(known) + ")");
+  live.world = &w;
+  live.table.def = def_of(w);
+}
 
 World& internal(WorldId id) { return *world(id).world; }
 

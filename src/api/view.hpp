@@ -19,8 +19,9 @@ class View {
   View(const View&) = delete;
   View& operator=(const View&) = delete;
   WorldId id() const { return id_; }
-  // The same id for `w` from now on: a world moved into its place (the
-  // testbed builds a level's world aside, then moves it in).
+  // The same id for `w` from now on: the viewed world moved into its place
+  // (the testbed builds a level's world aside, then moves it in); throws
+  // Error if `w` does not hold as many bodies.
   void rebind(World& w);
 
  private:

@@ -33,6 +33,8 @@ SystemSet systems_of(const WorldDef& d) {
 }
 
 api::Live make(const WorldDef& d) {
+  if (d.solver > SolverKind::automatic || d.integrator > IntegratorKind::exact)
+    throw Error("bad WorldDef: solver or integrator is not one of the enum's values");
   Params p;
   try {
     p = params_of(d);
