@@ -16,6 +16,36 @@ namespace {
 
 using namespace physics;
 
+// The window's loop, until the user quits or frame `frames`; the last frame
+// shown goes to `screenshot` if one is asked for.
+void loop(Testbed& tb, Window& win, std::optional<std::int64_t> frames, const std::string& screenshot,
+          std::ostream& err) {
+  double last = win.seconds(), fps = 0.0, draw_ms = 0.0;
+  for (bool running = true; running;) {
+    for (const InputEvent& ev : win.poll_events())
+      if (tb.live(ev) == Testbed::Action::quit) running = false;
+    const double now = win.seconds();
+    const double elapsed = now - last;
+    last = now;
+    if (elapsed > 0) fps = 0.9 * fps + 0.1 / elapsed;
+    // With --frames, stop at exactly that frame whatever the display's speed.
+    tb.advance(elapsed * 1000.0, frames.value_or(std::numeric_limits<std::int64_t>::max()));
+    const double ms = win.render(tb.world(), tb.view(fps, draw_ms));
+    draw_ms = draw_ms == 0.0 ? ms : 0.9 * draw_ms + 0.1 * ms;
+    if (frames && tb.world().frame >= *frames) running = false;
+    // The picture is taken before present(), which leaves the back buffer
+    // undefined; a window closed early (Esc, Q, the close button) saves the
+    // last frame shown rather than leaving the file empty.
+    if (!running && !screenshot.empty()) {
+      win.screenshot(screenshot);
+      if (tb.world().frame < *frames)
+        err << "game: --screenshot: the window was closed at frame " << tb.world().frame << ", before frame "
+            << *frames << ": " << screenshot << " shows frame " << tb.world().frame << "\n";
+    }
+    win.present();
+  }
+}
+
 // The testbed in a window. Fixed time step: the physics advances by dt
 // whatever the display's rate, so a run does not depend on the machine.
 int run_window(Cli::Session& s) {
@@ -41,30 +71,8 @@ int run_window(Cli::Session& s) {
   std::optional<std::int64_t> frames = o.frames;
   if (!o.screenshot.empty() && !frames) frames = Cli::screenshot_frames;
 
-  double last = win->seconds(), fps = 0.0, draw_ms = 0.0;
-  for (bool running = true; running;) {
-    for (const InputEvent& ev : win->poll_events())
-      if (tb.live(ev) == Testbed::Action::quit) running = false;
-    const double now = win->seconds();
-    const double elapsed = now - last;
-    last = now;
-    if (elapsed > 0) fps = 0.9 * fps + 0.1 / elapsed;
-    // With --frames, stop at exactly that frame whatever the display's speed.
-    tb.advance(elapsed * 1000.0, frames.value_or(std::numeric_limits<std::int64_t>::max()));
-    const double ms = win->render(tb.world(), tb.view(fps, draw_ms));
-    draw_ms = draw_ms == 0.0 ? ms : 0.9 * draw_ms + 0.1 * ms;
-    if (frames && tb.world().frame >= *frames) running = false;
-    // The picture is taken before present(), which leaves the back buffer
-    // undefined; a window closed early (Esc, Q, the close button) saves the
-    // last frame shown rather than leaving the file empty.
-    if (!running && !o.screenshot.empty()) {
-      win->screenshot(o.screenshot);
-      if (tb.world().frame < *frames)
-        *s.err << "game: --screenshot: the window was closed at frame " << tb.world().frame << ", before frame "
-               << *frames << ": " << o.screenshot << " shows frame " << tb.world().frame << "\n";
-    }
-    win->present();
-  }
+  loop(tb, *win, frames, o.screenshot, *s.err);
+
   // The log is written whatever the end: a session that broke the physics
   // is the one worth replaying.
   if (!o.record.empty()) {
