@@ -110,9 +110,22 @@ def check(md):
     return [f"{os.path.relpath(md, ROOT)}:{p}" for p in problems if p]
 
 
+def hello_snippet():
+    """The README's first C++ block must be examples/hello.cpp (from its first #include): the example built and
+    run by `make examples` is the one the reader copies."""
+    readme = open(os.path.join(ROOT, "README.md"), encoding="utf-8").read()
+    block = re.search(r"```cpp\n(.*?)```", readme, re.S)
+    hello = open(os.path.join(ROOT, "examples", "hello.cpp"), encoding="utf-8").read()
+    if not block or block.group(1) != hello[hello.find("#include"):]:
+        return ["README.md: its first ```cpp block is not examples/hello.cpp (from its first #include)"]
+    return []
+
+
 def main(argv):
     files = argv or [os.path.join(ROOT, "README.md")] + sorted(glob.glob(os.path.join(ROOT, "docs", "*.md")))
     problems = [p for md in files for p in check(os.path.abspath(md))]
+    if not argv:
+        problems += hello_snippet()
     for p in problems:
         print(p)
     if problems:
