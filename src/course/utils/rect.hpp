@@ -1,4 +1,4 @@
-// The course's `Rect` module (src/utils/rect.ml): a rectangle of integer size.
+// The course's `Rect` module (the archive's src/utils/rect.ml): a rectangle of integer size.
 // Its position lives in a separate `position` component, as in the course, so
 // the functions below take a position and a Rect side by side.
 #pragma once

@@ -1,4 +1,4 @@
-// The course's `Vector` module (src/utils/vect.ml): a 2D vector of doubles.
+// The course's `Vector` module (the archive's src/utils/vect.ml): a 2D vector of doubles.
 // Kept a plain value type; the OCaml functions are static members so the sheet's
 // `Vector.add a b` reads `Vector::add(a, b)` here. Operators are thin aliases.
 #pragma once
