@@ -26,6 +26,9 @@ namespace physics::scene_io {
 struct KeyDoc {
   const char* key;
   std::string_view type, range, fallback, doc;
+  // A world key that is also a command-line flag (--name): what its help adds
+  // to the doc ("" nothing); null: no flag. Its value's syntax comes from the type.
+  const char* flag = nullptr;
   const char* name() const { return key + 1; }
 };
 
