@@ -18,6 +18,7 @@
 #include "app/headless.hpp"
 #include "course/entities/block.hpp"
 #include "cli_helpers.hpp"
+#include "scene/keys.hpp"
 #include "scene/scene_json.hpp"
 
 // The PNG decoder, compiled here and private to this file.
@@ -99,6 +100,31 @@ BOOST_AUTO_TEST_CASE(help_documents_every_flag) {
     BOOST_TEST(has(r.out, flag), flag);
 }
 
+// The world keys' flags come from the key table: each marked row is an
+// option, with its range and default in the help, and reads as the row does.
+BOOST_AUTO_TEST_CASE(world_flags_are_the_key_tables_rows) {
+  std::string help;  // Boost wraps the help: one space for each run of blanks
+  for (const char c : cli({"--help"}).out)
+    if (!std::isspace(static_cast<unsigned char>(c)) || (!help.empty() && help.back() != ' '))
+      help += std::isspace(static_cast<unsigned char>(c)) ? ' ' : c;
+  std::vector<std::string> names;
+  for (const auto& k : scene_io::world_keys()) {
+    if (!k.doc.flag) continue;
+    names.emplace_back(k.doc.name());
+    BOOST_TEST(has(help, "--" + names.back() + " "), names.back());
+    const std::string range = k.doc.range.empty() ? "(" : "in " + std::string(k.doc.range) + ", ";
+    if (k.doc.type != "string") BOOST_TEST(has(help, range + "default " + std::string(k.doc.fallback)), names.back());
+  }
+  BOOST_TEST(has(help, "(in [0, 1], default 1.0); given here, it also replaces every block's own"), help);
+  BOOST_TEST(names == (std::vector<std::string>{"dt", "substeps", "gravity", "restitution", "ccd", "solver",
+                                                "iterations", "friction", "integrator"}),
+             boost::test_tools::per_element());
+  BOOST_TEST(has(help, "--ccd alone means on"));
+  BOOST_TEST(has(help, "--solver course|stable|auto"));
+  expect_bad({"--width", "100"}, "unrecognised option '--width'");  // a world key, but no flag
+  expect_bad({"--substeps", "1e3"}, "--substeps: must be an integer in [1, 1000] (got '1e3')");
+}
+
 BOOST_AUTO_TEST_CASE(list_scenes_names_every_builtin_and_every_scene_file) {
   const Ran r = cli({"--list-scenes"});
   BOOST_TEST(r.code == 0);
@@ -163,8 +189,8 @@ BOOST_AUTO_TEST_CASE(integrator_flag_sets_the_scenes_integrator) {
   BOOST_TEST(run.code == 0, run.err);
   BOOST_TEST(has(run.out, "1 substep(s), exact integrator)"), run.out);
   BOOST_TEST(!has(cli({"--scene", "bounce", "--headless", "--frames", "3"}).out, "integrator"));
-  expect_bad({"--integrator", "verlet"}, "--integrator: must be course or exact (got 'verlet')");
-  expect_bad({"--integrator", "Exact"}, "--integrator: must be course or exact (got 'Exact')");
+  expect_bad({"--integrator", "verlet"}, "--integrator: must be \"course\" or \"exact\" (got 'verlet')");
+  expect_bad({"--integrator", "Exact"}, "--integrator: must be \"course\" or \"exact\" (got 'Exact')");
 }
 
 // --frames 0 runs nothing: the summary says so instead of "after frame 1".
@@ -412,10 +438,10 @@ BOOST_AUTO_TEST_CASE(bad_values_on_the_command_line) {
   expect_bad({"--screenshot", "x.jpg"}, "--screenshot: only PNG is written: the name must end in .png (got 'x.jpg')");
   expect_bad({"--screenshot", "x"}, "--screenshot: only PNG is written");
   // Finite but beyond what a scene file accepts: the flag is named, not the scene.
-  expect_bad({"--gravity", "1e7,0"}, "--gravity: must be within ±1000000 per axis (got '1e7,0')");
+  expect_bad({"--gravity", "1e7,0"}, "--gravity: must be within ±1000000 (got '1e7,0')");
   expect_bad({"--dt", "1e7"}, "--dt: must be <= 1000000 ms (got '1e7')");
   expect_bad({"--seed=-3"}, "--seed");
-  expect_bad({"--solver", "fast"}, "--solver: must be course, stable or auto (got 'fast')");
+  expect_bad({"--solver", "fast"}, "--solver: must be \"course\", \"stable\" or \"auto\" (got 'fast')");
   expect_bad({"--ccd=maybe"}, "--ccd: must be on or off");
   expect_bad({"--overlays", "aabb,boxes"}, "--overlays");
   expect_bad({"--friction", "-1"}, "--friction: must be in [0, 1000] (got '-1')");

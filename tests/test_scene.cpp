@@ -289,13 +289,8 @@ BOOST_AUTO_TEST_CASE(random_draws_only_what_is_a_range_and_depends_on_the_seed) 
 BOOST_AUTO_TEST_CASE(overrides_replace_the_scenes_values) {
   SceneSpec s = builtin("bounce");
   Overrides o;
-  o.dt = 5.0;
-  o.substeps = 4;
-  o.gravity = Vector{0, 0.002};
-  o.restitution = 0.5;
-  o.ccd = true;
-  o.solver = Solver::stable;
-  o.iterations = 3;
+  o.world = {{"dt", "5"},     {"substeps", "4"},      {"gravity", "0,0.002"}, {"restitution", "0.5"},
+             {"ccd", "on"},   {"solver", "stable"},   {"iterations", "3"}};
   apply(s, o);
   BOOST_TEST(s.params.dt == 5.0);
   BOOST_TEST(s.params.substeps == 4);

@@ -105,7 +105,7 @@ BOOST_AUTO_TEST_CASE(digits_and_tab_switch_scenes) {
 
 BOOST_AUTO_TEST_CASE(overrides_apply_to_every_scene_switched_to) {
   Overrides o;
-  o.gravity = Vector{0, 0.002};
+  o.world = {{"gravity", "0,0.002"}};
   Testbed tb(all_scenes(), 0, o);
   tb.handle(press('7'));
   BOOST_TEST(tb.world().params.gravity.y == 0.002);
@@ -298,10 +298,7 @@ BOOST_AUTO_TEST_CASE(the_hud_shows_the_solver_substeps_ccd_and_overlays) {
   tb.handle(press('c'));
   BOOST_TEST(tb.view(60, 0).hud[2] == "solver course  substeps 1  CCD off  overlays: aabb (A), contacts (C)");
   Overrides o;
-  o.solver = Solver::stable;
-  o.iterations = 12;
-  o.substeps = 4;
-  o.ccd = true;
+  o.world = {{"solver", "stable"}, {"iterations", "12"}, {"substeps", "4"}, {"ccd", "on"}};
   Testbed st(all_scenes(), 0, o, Overlays{.velocity = true});
   BOOST_TEST(st.view(60, 0).hud[2] == "solver stable (12 it.)  substeps 4  CCD on  overlays: velocity (V)");
   // Every stage's time, on lines that fit the 800 px window.

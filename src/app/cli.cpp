@@ -29,26 +29,12 @@ constexpr std::int64_t max_screenshot_pixels = std::int64_t{1} << 26;
   throw UsageError(flag + ": " + problem + " (got '" + value + "')");
 }
 
-double real(const std::string& flag, const std::string& s) {
-  double v = 0;
-  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (ec != std::errc{} || end != s.data() + s.size()) bad(flag, "must be a number", s);
-  if (!std::isfinite(v)) bad(flag, "must be a finite number", s);
-  return v;
-}
-
 std::int64_t integer(const std::string& flag, const std::string& s, std::int64_t lo, std::int64_t hi) {
   std::int64_t v = 0;
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
   if (ec != std::errc{} || end != s.data() + s.size() || v < lo || v > hi)
     bad(flag, "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]", s);
   return v;
-}
-
-bool on_off(const std::string& flag, const std::string& s) {
-  if (s == "on" || s == "true" || s == "1" || s == "yes") return true;
-  if (s == "off" || s == "false" || s == "0" || s == "no") return false;
-  bad(flag, "must be on or off", s);
 }
 
 Overlays overlays(const std::string& s) {
@@ -66,23 +52,29 @@ Overlays overlays(const std::string& s) {
   return o;
 }
 
-// The numerics options (docs/numerics.md): substeps, iterations, CCD, solver, integrator.
-void numerics(const po::variables_map& vm, Overrides& ov) {
-  const auto has = [&](const char* k) { return vm.count(k) > 0; };
-  const auto get = [&](const char* k) { return vm[k].as<std::string>(); };
-  if (has("substeps")) ov.substeps = static_cast<int>(integer("--substeps", get("substeps"), 1, max_substeps));
-  if (has("iterations"))
-    ov.iterations = static_cast<int>(integer("--iterations", get("iterations"), 1, max_iterations));
-  if (has("ccd")) ov.ccd = on_off("--ccd", get("ccd"));
-  if (has("solver")) {
-    const std::string s = get("solver");
-    ov.solver = solver_from_name(s);
-    if (!ov.solver) bad("--solver", "must be course, stable or auto", s);
+// The world keys that are flags (--dt, --gravity...), each from its row of
+// the key table: its value's syntax and help.
+void world_options(po::options_description& d) {
+  for (const WorldFlag& f : world_flags()) {
+    auto* value = po::value<std::string>()->value_name(f.value);
+    if (f.boolean) value->implicit_value("on");
+    d.add_options()(f.name.c_str(), value, f.help.c_str());
   }
-  if (has("integrator")) {
-    const std::string s = get("integrator");
-    ov.integrator = integrator_from_name(s);
-    if (!ov.integrator) bad("--integrator", "must be course or exact", s);
+}
+
+// Each world flag given, read and checked through its row now (bad input
+// before anything runs), kept as given for apply().
+void world_values(const po::variables_map& vm, Overrides& ov) {
+  for (const WorldFlag& f : world_flags()) {
+    if (!vm.count(f.name)) continue;
+    const std::string& text = vm[f.name].as<std::string>();
+    SceneSpec scratch;
+    try {
+      read_world_flag(scratch, f.name, text);
+    } catch (const SceneError& e) {
+      throw UsageError(e.what());
+    }
+    ov.world.emplace_back(f.name, text);
   }
 }
 
@@ -97,26 +89,11 @@ po::options_description descriptions() {
        "or run flag with it)")
       ("headless", "run without a window and print a summary (also when there is no display)")
       ("frames", po::value<std::string>()->value_name("N"),
-       "frames to run: headless default 600; in a window, quit after N (default: when the user quits)")
-      ("dt", po::value<std::string>()->value_name("MS"), "time step, ms (> 0; the sheet's is 1000/60)")
-      ("substeps", po::value<std::string>()->value_name("K"), "physics substeps per frame, each of dt/K (1-1000)")
-      ("gravity", po::value<std::string>()->value_name("X,Y"), "gravity, px/ms^2 (y grows downwards), e.g. 0,0.001")
-      ("restitution", po::value<std::string>()->value_name("E"),
-       "restitution in [0, 1] of the walls and every block")
-      ("friction", po::value<std::string>()->value_name("MU"),
-       "friction coefficient (>= 0) of the walls and every block; a pair uses sqrt(mu_a mu_b)")
+       "frames to run: headless default 600; in a window, quit after N (default: when the user quits)");
+  world_options(d);
+  d.add_options()
       ("seed", po::value<std::string>()->value_name("S"),
        "seed of the random generators (the k-th generator gets S + k)")
-      ("ccd", po::value<std::string>()->value_name("on|off")->implicit_value("on"),
-       "swept collision (no tunnelling); --ccd alone means on")
-      ("solver", po::value<std::string>()->value_name("course|stable|auto"),
-       "contact solver: the sheet's one pass (course), the iterated one (stable), or auto: per substep what the "
-       "scene needs, the course's pass, the stable solver where contacts persist and CCD for fast bodies (it "
-       "decides CCD itself: --ccd is not read)")
-      ("iterations", po::value<std::string>()->value_name("N"), "iterations of the stable solver (1-1000)")
-      ("integrator", po::value<std::string>()->value_name("course|exact"),
-       "motion in a substep: the sheet's symplectic Euler (course) or exact constant-force motion "
-       "x += v h + a h^2/2 (exact)")
       ("dump", po::value<std::string>()->value_name("FILE.csv"),
        "write the final state as CSV: id,x,y,w,h,vx,vy,mass")
       ("events", po::value<std::string>()->value_name("FILE.csv"),
@@ -413,31 +390,7 @@ Options parse(std::span<const std::string> args) {
   }
   if (has("frames")) o.frames = integer("--frames", get("frames"), 0, max_frames);
   Overrides& ov = o.overrides;
-  if (has("dt")) {
-    ov.dt = real("--dt", get("dt"));
-    if (*ov.dt <= 0) bad("--dt", "must be > 0", get("dt"));
-    if (*ov.dt < min_dt) bad("--dt", "must be >= 1e-06 ms", get("dt"));
-    if (*ov.dt > max_dt) bad("--dt", "must be <= 1000000 ms", get("dt"));
-  }
-  numerics(vm, ov);
-  if (has("gravity")) {
-    const std::string g = get("gravity");
-    const auto comma = g.find(',');
-    if (comma == std::string::npos || g.find(',', comma + 1) != std::string::npos)
-      bad("--gravity", "must be two numbers X,Y", g);
-    ov.gravity = Vector{real("--gravity", g.substr(0, comma)), real("--gravity", g.substr(comma + 1))};
-    if (std::abs(ov.gravity->x) > max_motion || std::abs(ov.gravity->y) > max_motion)
-      bad("--gravity", "must be within ±1000000 per axis", g);
-  }
-  if (has("restitution")) {
-    ov.restitution = real("--restitution", get("restitution"));
-    if (*ov.restitution < 0 || *ov.restitution > 1) bad("--restitution", "must be in [0, 1]", get("restitution"));
-  }
-  if (has("friction")) {
-    ov.friction = real("--friction", get("friction"));
-    if (!(*ov.friction >= 0 && *ov.friction <= max_friction))
-      bad("--friction", "must be in [0, 1000]", get("friction"));
-  }
+  world_values(vm, ov);
   if (has("seed")) {
     const std::string s = get("seed");
     std::uint64_t v = 0;

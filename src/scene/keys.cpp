@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <limits>
 
 namespace physics::scene_io {
@@ -320,7 +321,7 @@ const WK world_rows[] = {
      },
      [](ojson& o, const SceneSpec& s) { o["height"] = s.height; },
      [](const Checker& k, const SceneSpec& s, const std::string& at) { in_range(k, s.height, 1, max_world_size, At{at, ".height"}); }},
-    {{".dt", "number", "[10^-6, 10^6]", "16.666666666666668", "ms, the time of a frame"},
+    {{".dt", "number", "[10^-6, 10^6]", "16.666666666666668", "ms, the time of a frame", "the sheet's: 1000/60"},
      "",
      [](const Reader& r, const json& v, const Path& p, SceneSpec& s) { s.params.dt = r.number(v, p); },
      [](ojson& o, const SceneSpec& s) { o["dt"] = s.params.dt; },
@@ -332,7 +333,8 @@ const WK world_rows[] = {
        if (dt < min_dt) k.fail(a, "must be >= " + num(min_dt) + " ms (got " + num(dt) + ")");
        if (dt > max_dt) k.fail(a, "must be <= " + num(max_dt) + " ms (got " + num(dt) + ")");
      }},
-    {{".substeps", "integer", "[1, 1000]", "1", "Forces, Move and Collision run that many times a frame with dt/substeps"},
+    {{".substeps", "integer", "[1, 1000]", "1", "Forces, Move and Collision run that many times a frame with dt/substeps",
+      ""},
      "",
      [](const Reader& r, const json& v, const Path& p, SceneSpec& s) {
        s.params.substeps = static_cast<int>(r.integer(v, p, 1, max_substeps));
@@ -341,12 +343,14 @@ const WK world_rows[] = {
      [](const Checker& k, const SceneSpec& s, const std::string& at) {
        in_range(k, s.params.substeps, 1, max_substeps, At{at, ".substeps"});
      }},
-    {{".gravity", "[x, y]", "±10^6 per axis", "[0, 0]", "px/ms², applied by Forces to finite masses"},
+    {{".gravity", "[x, y]", "±10^6 per axis", "[0, 0]", "px/ms², applied by Forces to finite masses",
+      "y grows downwards, e.g. 0,0.001"},
      "",
      [](const Reader& r, const json& v, const Path& p, SceneSpec& s) { s.params.gravity = r.vec(v, p); },
      [](ojson& o, const SceneSpec& s) { o["gravity"] = vec(s.params.gravity); },
      [](const Checker& k, const SceneSpec& s, const std::string& at) { k.motion(s.params.gravity, At{at, ".gravity"}); }},
-    {{".restitution", "number", "[0, 1]", "1.0", "the walls', and the blocks' that give none (a pair uses the smaller)"},
+    {{".restitution", "number", "[0, 1]", "1.0", "the walls', and the blocks' that give none (a pair uses the smaller)",
+      "given here, it also replaces every block's own"},
      "",
      [](const Reader& r, const json& v, const Path& p, SceneSpec& s) { s.restitution = r.restitution(v, p); },
      [](ojson& o, const SceneSpec& s) { o["restitution"] = s.restitution; },
@@ -382,13 +386,14 @@ const WK world_rows[] = {
          if (s.systems.has(id)) systems.push_back(std::string(name(id)));
        o["systems"] = systems;
      }},
-    {{".ccd", "boolean", "", "false", "swept collision ([numerics.md](numerics.md))"},
+    {{".ccd", "boolean", "", "false", "swept collision ([numerics.md](numerics.md))", ""},
      "",
      [](const Reader& r, const json& v, const Path& p, SceneSpec& s) { s.params.ccd = r.boolean(v, p); },
      [](ojson& o, const SceneSpec& s) { o["ccd"] = s.params.ccd; }},
     {{".solver", "string", "`\"course\"`, `\"stable\"`, `\"auto\"`", "`\"course\"`",
       "the sheet's one pass, the iterated contact solver, or per substep what the scene needs (auto decides CCD "
-      "itself and does not read `ccd`)"},
+      "itself and does not read `ccd`)",
+      ""},
      "",
      [](const Reader& r, const json& v, const Path& p, SceneSpec& s) {
        const auto solver = solver_from_name(r.text(v, p));
@@ -396,7 +401,7 @@ const WK world_rows[] = {
        s.params.solver = *solver;
      },
      [](ojson& o, const SceneSpec& s) { o["solver"] = std::string(name(s.params.solver)); }},
-    {{".iterations", "integer", "[1, 1000]", "8", "iterations of the stable solver"},
+    {{".iterations", "integer", "[1, 1000]", "8", "iterations of the stable solver", ""},
      "",
      [](const Reader& r, const json& v, const Path& p, SceneSpec& s) {
        s.params.iterations = static_cast<int>(r.integer(v, p, 1, max_iterations));
@@ -406,7 +411,8 @@ const WK world_rows[] = {
        in_range(k, s.params.iterations, 1, max_iterations, At{at, ".iterations"});
      }},
     {{".friction", "number", "[0, 1000]", "0",
-      "the walls', and the blocks' that give none (a pair uses sqrt(mu_a mu_b)); written only when used"},
+      "the walls', and the blocks' that give none (a pair uses sqrt(mu_a mu_b)); written only when used",
+      "given here, it also replaces every block's own"},
      "",
      [](const Reader& r, const json& v, const Path& p, SceneSpec& s) { s.friction = r.number(v, p); },
      [](ojson& o, const SceneSpec& s) {
@@ -415,7 +421,8 @@ const WK world_rows[] = {
      [](const Checker& k, const SceneSpec& s, const std::string& at) { k.friction(s.friction, At{at, ".friction"}); }},
     {{".integrator", "string", "`\"course\"`, `\"exact\"`", "`\"course\"`",
       "the sheet's symplectic Euler, or x += v h + a h²/2 in a substep (free flight exact, "
-      "[numerics.md](numerics.md)); written only when `\"exact\"`"},
+      "[numerics.md](numerics.md)); written only when `\"exact\"`",
+      ""},
      "",
      [](const Reader& r, const json& v, const Path& p, SceneSpec& s) {
        const auto i = integrator_from_name(r.text(v, p));
@@ -655,6 +662,124 @@ std::string key_tables_markdown() {
   table(out, "**`state`**", "state.", scene_io::state_keys());
   out.pop_back();  // one newline at the end
   return out;
+}
+
+}  // namespace physics
+
+// The command line's world flags: their options and values from the rows.
+namespace physics {
+namespace {
+
+using scene_io::json;
+using scene_io::Key;
+using scene_io::KeyDoc;
+
+// The doc's markdown as plain text: no backticks or quotes, a link as its file.
+std::string plain(std::string_view md) {
+  std::string out;
+  for (std::size_t i = 0; i < md.size(); ++i) {
+    const std::size_t mid = md[i] == '[' ? md.find("](", i) : std::string_view::npos;
+    const std::size_t end = mid == std::string_view::npos ? mid : md.find(')', mid);
+    if (end != std::string_view::npos) {
+      out += "docs/" + std::string(md.substr(mid + 2, end - mid - 2));
+      i = end;
+    } else if (md[i] != '`' && md[i] != '"') {
+      out += md[i];
+    }
+  }
+  return out;
+}
+
+WorldFlag flag_of(const KeyDoc& d) {
+  const bool boolean = d.type == "boolean", text = d.type == "string";
+  std::string value = d.type == "integer" ? "N" : d.type == "number" ? "X" : d.type == "[x, y]" ? "X,Y" : "on|off";
+  if (text) {
+    value = plain(d.range);
+    for (std::size_t at; (at = value.find(", ")) != std::string::npos;) value.replace(at, 2, "|");
+  }
+  // Without the writer's note ("; written only when used"): no file is written here.
+  std::string help = plain(d.doc.substr(0, d.doc.find("; written "))) + " (" + (d.range.empty() ? "" : (text ? "one of " : "in ") + plain(d.range) + ", ") +
+                     "default " + plain(d.fallback) + ")";
+  if (*d.flag) help += std::string("; ") + d.flag;
+  if (boolean) help += std::string("; --") + d.name() + " alone means on";
+  return {d.name(), value, help, boolean};
+}
+
+// A number's text as JSON: for an integer key an integer only (the row reads
+// its range), for any other the double from_chars reads (-0 stays -0).
+std::optional<json> number(std::string_view s, bool integer) {
+  const char* end = s.data() + s.size();
+  if (integer) {
+    std::int64_t i = 0;
+    const auto [at, ec] = std::from_chars(s.data(), end, i);
+    return ec == std::errc{} && at == end ? std::optional<json>(i) : std::nullopt;
+  }
+  double v = 0;
+  const auto [at, ec] = std::from_chars(s.data(), end, v);
+  return ec == std::errc{} && at == end ? std::optional<json>(v) : std::nullopt;
+}
+
+// The flag's text as the JSON value its row reads, by the row's type: a
+// number, [x, y] from "X,Y", a boolean from on/off, a string.
+json flag_value(const KeyDoc& d, const std::string& text) {
+  const auto fail = [&](const std::string& problem) {
+    throw SceneError("--" + std::string(d.name()) + ": " + problem + " (got '" + text + "')");
+  };
+  if (d.type == "boolean") {
+    for (const char* on : {"on", "true", "1", "yes"})
+      if (text == on) return true;
+    for (const char* off : {"off", "false", "0", "no"})
+      if (text == off) return false;
+    fail("must be on or off");
+  }
+  if (d.type == "[x, y]") {
+    const std::size_t comma = text.find(',');
+    const auto x = number(std::string_view(text).substr(0, comma), false);
+    const auto y = comma == std::string::npos ? x : number(std::string_view(text).substr(comma + 1), false);
+    if (comma == std::string::npos || !x || !y) fail("must be two numbers X,Y");
+    return json::array({*x, *y});
+  }
+  if (d.type == "integer" || d.type == "number") {
+    const auto v = number(text, d.type == "integer");
+    if (!v) fail(d.type == "integer" ? "must be an integer in " + std::string(d.range) : "must be a number");
+    return *v;
+  }
+  return text;
+}
+
+// The row's message without its path ("[0]: ", ".dt: ") and its value (the
+// flag's text is shown instead, as given).
+std::string problem_of(const std::string& message, const std::string& flag) {
+  std::string p = message.substr(std::min(message.size(), flag.size() + 2));
+  if (!p.empty() && (p[0] == '.' || p[0] == '[')) p = p.substr(std::min(p.size(), p.find(": ") + 2));
+  return p.substr(0, p.rfind(" (got "));
+}
+
+}  // namespace
+
+const std::vector<WorldFlag>& world_flags() {
+  static const std::vector<WorldFlag> out = [] {
+    std::vector<WorldFlag> v;
+    for (const auto& k : scene_io::world_keys())
+      if (k.doc.flag) v.push_back(flag_of(k.doc));
+    return v;
+  }();
+  return out;
+}
+
+void read_world_flag(SceneSpec& s, std::string_view name, const std::string& text) {
+  const auto rows = scene_io::world_keys();
+  const auto row = std::find_if(rows.begin(), rows.end(), [&](const auto& k) { return k.doc.flag && name == k.doc.name(); });
+  const std::string flag = "--" + std::string(name);
+  if (row == rows.end()) throw SceneError(flag + ": not a world key of the command line");
+  const json v = flag_value(row->doc, text);
+  try {
+    const scene_io::Reader r(flag);
+    row->read(r, v, "", s);
+    if (row->check) row->check(scene_check::Checker{flag}, s, "");
+  } catch (const SceneError& e) {
+    throw SceneError(flag + ": " + problem_of(e.what(), flag) + " (got '" + text + "')");
+  }
 }
 
 }  // namespace physics

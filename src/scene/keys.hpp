@@ -4,8 +4,10 @@
 // body and the world (or a game's role) and comes back from them. So one row
 // drives the reader (scene_json.cpp), the validator (scene.cpp), the writer
 // (--print-scene, scene_write.cpp), the building of a world (scene.cpp),
-// --save (save.cpp) and the key tables of docs/scenes.md (key_tables_markdown,
-// written by tools/scene_keys.sh; tests/test_keys.cpp fails when they differ).
+// --save (save.cpp), the command line's world flags (a world row with a
+// `flag`: world_flags, read_world_flag; app/cli.cpp) and the key tables of
+// docs/scenes.md (key_tables_markdown, written by tools/scene_keys.sh;
+// tests/test_keys.cpp fails when they differ).
 // Adding a block key: its field in BlockSpec (scene.hpp; and in Body for a key
 // the physics reads, or in BlockRole for one the games read, each with a
 // default member initializer) and its row in keys.cpp; then tools/scene_keys.sh.
@@ -26,6 +28,9 @@ namespace physics::scene_io {
 struct KeyDoc {
   const char* key;
   std::string_view type, range, fallback, doc;
+  // A world key that is also a command-line flag (--name): what its help adds
+  // to the doc ("" nothing); null: no flag. Its value's syntax comes from the type.
+  const char* flag = nullptr;
   const char* name() const { return key + 1; }
 };
 

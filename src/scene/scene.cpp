@@ -194,30 +194,28 @@ void expand_random(const RandomSpec& r, const SceneSpec& s, std::size_t entry, s
 }  // namespace
 
 void apply(SceneSpec& s, const Overrides& o) {
-  if (o.dt) s.params.dt = *o.dt;
-  if (o.substeps) s.params.substeps = *o.substeps;
-  if (o.gravity) s.params.gravity = *o.gravity;
-  if (o.ccd) s.params.ccd = *o.ccd;
-  if (o.solver) s.params.solver = *o.solver;
-  if (o.iterations) s.params.iterations = *o.iterations;
-  if (o.integrator) s.params.integrator = *o.integrator;
+  bool restitution = false, friction = false;
+  for (const auto& [key, text] : o.world) {
+    read_world_flag(s, key, text);
+    restitution |= key == "restitution";
+    friction |= key == "friction";
+  }
   if (o.style) s.style = *o.style;
   std::uint64_t k = 0;
+  // The world's value replaces the blocks' own too: the one given is the one that holds.
   for (BlockEntry& e : s.blocks) {
-    if (o.friction) {
+    if (friction) {
       if (auto* b = std::get_if<BlockSpec>(&e)) b->contact.friction.reset();
       if (auto* g = std::get_if<GridSpec>(&e)) g->first.contact.friction.reset();
       if (auto* r = std::get_if<RandomSpec>(&e)) r->contact.friction.reset();
     }
-    if (o.restitution) {
+    if (restitution) {
       if (auto* b = std::get_if<BlockSpec>(&e)) b->restitution.reset();
       if (auto* g = std::get_if<GridSpec>(&e)) g->first.restitution.reset();
       if (auto* r = std::get_if<RandomSpec>(&e)) r->restitution.reset();
     }
     if (auto* r = std::get_if<RandomSpec>(&e); r && o.seed) r->seed = *o.seed + k++;
   }
-  if (o.restitution) s.restitution = *o.restitution;
-  if (o.friction) s.friction = *o.friction;
 }
 
 std::string_view name(Style s) {

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -182,19 +183,27 @@ struct SceneSpec {
 
 // Command-line values; each set one replaces the scene's.
 struct Overrides {
-  std::optional<double> dt;
-  std::optional<int> substeps;
-  std::optional<Vector> gravity;
-  std::optional<double> restitution;  // also replaces every block's own
-  std::optional<double> friction;     // the same
+  // World keys, by name with the flag's text ({"gravity", "0,0.001"}), read
+  // through the key table's rows (read_world_flag); a restitution or a
+  // friction also replaces every block's own.
+  std::vector<std::pair<std::string, std::string>> world;
   std::optional<std::uint64_t> seed;  // random generator k gets seed + k
-  std::optional<bool> ccd;
-  std::optional<Solver> solver;
-  std::optional<int> iterations;
-  std::optional<Integrator> integrator;
   std::optional<Style> style;
 };
 void apply(SceneSpec& s, const Overrides& o);
+
+// The world keys that are command-line flags (--dt, --gravity...): the rows of
+// the key table (keys.cpp) with a `flag`, in its order.
+struct WorldFlag {
+  std::string name;   // the key's, and the flag's
+  std::string value;  // the value's syntax, from the row's type: N, X, X,Y, on|off, course|stable|auto
+  std::string help;   // from the row's doc, range, default and flag note
+  bool boolean;       // the flag alone means on
+};
+const std::vector<WorldFlag>& world_flags();
+// A flag's text as world key `name` of s, through its row's read and check.
+// Throws SceneError("--name: problem (got 'text')").
+void read_world_flag(SceneSpec& s, std::string_view name, const std::string& text);
 
 // One concrete body of a scene, after generators are expanded. `entry` and
 // `index` say where it came from, for error messages.
