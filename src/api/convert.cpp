@@ -44,6 +44,15 @@ void check_friction(double mu) {
   require(mu >= 0.0 && mu <= max_friction, "a body's friction", "in [0, 1000]", mu);
 }
 
+Solver to_engine(SolverKind s) {
+  return s == SolverKind::stable ? Solver::stable : s == SolverKind::automatic ? Solver::automatic : Solver::course;
+}
+SolverKind to_public(Solver s) {
+  return s == Solver::stable ? SolverKind::stable : s == Solver::automatic ? SolverKind::automatic : SolverKind::course;
+}
+Integrator to_engine(IntegratorKind i) { return i == IntegratorKind::exact ? Integrator::exact : Integrator::course; }
+IntegratorKind to_public(Integrator i) { return i == Integrator::exact ? IntegratorKind::exact : IntegratorKind::course; }
+
 Rect to_rect(Vec2 s) { return {static_cast<int>(s.x), static_cast<int>(s.y)}; }
 
 ContactRules rules_of(Filter f, bool sensor, OneWay one_way) {

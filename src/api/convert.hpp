@@ -5,12 +5,18 @@
 #include <string>
 
 #include "engine/components.hpp"
+#include "engine/world.hpp"
 #include "physics/physics.hpp"
 
 namespace physics::api {
 
 inline Vector to_engine(Vec2 v) { return {v.x, v.y}; }
 inline Vec2 to_public(Vector v) { return {v.x, v.y}; }
+// The solver and the integrator, both ways (WorldDef <-> Params).
+Solver to_engine(SolverKind s);
+SolverKind to_public(Solver s);
+Integrator to_engine(IntegratorKind i);
+IntegratorKind to_public(Integrator i);
 
 // Throws Error(what + " must be " + rule + " (got ...)") unless ok.
 void require(bool ok, const char* what, const char* rule, double got);

@@ -58,22 +58,26 @@ Live& world(WorldId id) {
   return *s->live;
 }
 
+namespace {
+// Whether the non-null id names a live body of the synced world w.
+bool names(const Live& w, BodyId id) {
+  const EntityId e = id.index1 - 1;
+  return e < w.table.generation.size() && w.table.generation[e] == id.generation && w.world->alive(e);
+}
+}  // namespace
+
 bool live(BodyId id) {
   Slot* s = find(id.world);
   if (!s || id.index1 == 0) return false;
   s->live->sync();
-  const EntityId e = id.index1 - 1;
-  return e < s->live->table.generation.size() && s->live->table.generation[e] == id.generation &&
-         s->live->world->alive(e);
+  return names(*s->live, id);
 }
 
 Named body(BodyId id) {
   if (id.index1 == 0) throw Error("null body id");
   Live& w = world(id.world);  // synced
-  const EntityId e = id.index1 - 1;
-  if (e >= w.table.generation.size() || w.table.generation[e] != id.generation || !w.world->alive(e))
-    throw Error(describe(id) + " is stale (the body was destroyed) or was never made");
-  return {w, e};
+  if (!names(w, id)) throw Error(describe(id) + " is stale (the body was destroyed) or was never made");
+  return {w, id.index1 - 1};
 }
 
 BodyId id_of(WorldId world, const Live& w, EntityId e) { return {e + 1, world, w.table.generation[e]}; }

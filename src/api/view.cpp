@@ -1,5 +1,6 @@
 #include "api/view.hpp"
 
+#include "api/convert.hpp"
 #include "api/registry.hpp"
 
 namespace physics::api {
@@ -10,13 +11,11 @@ WorldDef def_of(const World& w) {
   WorldDef d;
   d.dt = w.params.dt;
   d.substeps = w.params.substeps;
-  d.gravity = {w.params.gravity.x, w.params.gravity.y};
-  d.solver = w.params.solver == Solver::stable      ? SolverKind::stable
-             : w.params.solver == Solver::automatic ? SolverKind::automatic
-                                                    : SolverKind::course;
+  d.gravity = to_public(w.params.gravity);
+  d.solver = to_public(w.params.solver);
   d.iterations = w.params.iterations;
   d.ccd = w.params.ccd;
-  d.integrator = w.params.integrator == Integrator::exact ? IntegratorKind::exact : IntegratorKind::course;
+  d.integrator = to_public(w.params.integrator);
   d.forces = w.declares(SystemId::forces);
   d.move = w.declares(SystemId::move);
   d.collision = w.declares(SystemId::collision);

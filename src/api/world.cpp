@@ -15,11 +15,9 @@ Params params_of(const WorldDef& d) {
   p.substeps = d.substeps;
   p.gravity = api::to_engine(d.gravity);
   p.ccd = d.ccd;
-  p.solver = d.solver == SolverKind::stable      ? Solver::stable
-             : d.solver == SolverKind::automatic ? Solver::automatic
-                                                 : Solver::course;
+  p.solver = api::to_engine(d.solver);
   p.iterations = d.iterations;
-  p.integrator = d.integrator == IntegratorKind::exact ? Integrator::exact : Integrator::course;
+  p.integrator = api::to_engine(d.integrator);
   return p;
 }
 
