@@ -340,6 +340,13 @@ install: $(BUILD)/libphysics.a
 # the tree against it both ways (pkg-config, then CMake's find_package), run,
 # and its answer checked: the box rests on the floor's top (y 520).
 CHECK_PREFIX := $(abspath $(BUILD))/install-check
+comma := ,
+# The examples' answers, and $(call expect,COMMAND,PATTERN,LABEL): runs
+# COMMAND, prints LABEL and its output, fails unless the output matches.
+HELLO_ANSWER  := "the box rests at (380.0, 520.0)"
+# crates drops one crate every 45 frames: 13 in 600.
+CRATES_ANSWER := "crates: 600 frames, 13 crates fell, best height "*
+expect = out=$$($(1)) && echo "$(3)$$out" && case "$$out" in $(2)) ;; *) echo "$(3)unexpected answer"; exit 1;; esac
 install-check: $(BUILD)/libphysics.a
 	@rm -rf $(CHECK_PREFIX) && $(MAKE) --no-print-directory install PREFIX=$(CHECK_PREFIX)/prefix > /dev/null
 	@mkdir -p $(CHECK_PREFIX)/pc && cp examples/hello.cpp $(CHECK_PREFIX)/pc/
@@ -348,10 +355,8 @@ install-check: $(BUILD)/libphysics.a
 	cmake -S examples -B $(CHECK_PREFIX)/cmake -DCMAKE_PREFIX_PATH=$(CHECK_PREFIX)/prefix \
 	  $(if $(SAN_FLAGS),-DCMAKE_CXX_FLAGS="$(SAN_FLAGS)") > /dev/null
 	+cmake --build $(CHECK_PREFIX)/cmake > /dev/null
-	@for way in pc cmake; do out=$$($(CHECK_PREFIX)/$$way/hello); echo "install-check ($$way): $$out"; \
-	  case "$$out" in "the box rests at (380.0, 520.0)") ;; *) echo "install-check: unexpected answer"; exit 1;; esac; done
-	@out=$$($(CHECK_PREFIX)/cmake/crates --headless 600) && echo "install-check (cmake, SDL): $$out" && \
-	  case "$$out" in "crates: 600 frames, 13 crates fell, best height "*) ;; *) echo "install-check: unexpected answer"; exit 1;; esac
+	@for way in pc cmake; do $(call expect,$(CHECK_PREFIX)/$$way/hello,$(HELLO_ANSWER),install-check ($$way): ); done
+	@$(call expect,$(CHECK_PREFIX)/cmake/crates --headless 600,$(CRATES_ANSWER),install-check (cmake$(comma) SDL): )
 
 # The examples, built in the tree from the public headers alone (-Iinclude,
 # no -Isrc: they can use nothing else), and their headless runs.
@@ -362,11 +367,9 @@ $(BUILD)/examples/hello: examples/hello.cpp include/physics/physics.hpp include/
 $(BUILD)/examples/crates: examples/crates.cpp include/physics/physics.hpp include/physics/math.hpp $(BUILD)/libphysics.a
 	@mkdir -p $(@D)
 	$(CXX) $(EXAMPLE_FLAGS) $$(pkg-config --cflags sdl2) $< -o $@ $(BUILD)/libphysics.a $$(pkg-config --libs sdl2) $(LDFLAGS)
-# crates drops one crate every 45 frames: 13 in 600.
 examples: $(BUILD)/examples/hello $(BUILD)/examples/crates
-	./$(BUILD)/examples/hello
-	@out=$$(./$(BUILD)/examples/crates --headless 600) && echo "$$out" && \
-	  case "$$out" in "crates: 600 frames, 13 crates fell, best height "*) ;; *) echo "examples: unexpected answer"; exit 1;; esac
+	@$(call expect,./$(BUILD)/examples/hello,$(HELLO_ANSWER),examples: )
+	@$(call expect,./$(BUILD)/examples/crates --headless 600,$(CRATES_ANSWER),examples: )
 
 clean:
 	rm -rf build
