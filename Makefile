@@ -390,13 +390,15 @@ clean:
 # `make exercise-run Q=4`: your answer in the window (the sheet: "Constater
 # que le bloc se déplace"): the project's game built with the exercise
 # tree's src/course/ in place of its own, on the question's built-in scene
-# (Q1 walls, Q2-Q4 drift, Q5 impulse, Q6-Q8 bounce, Q9 many; SCENE= another,
-# ARGS= more flags). With no display, a headless run that prints where each
+# (Q1 walls, Q2-Q4 drift, Q5 impulse, Q6-Q8 bounce, Q9 many), built by the
+# tree's own functions (--course: its init_walls, red blocks, init_scene and
+# Block::make); SCENE= another, from its description; ARGS= more flags. With no display, a headless run that prints where each
 # body starts and ends. `make run Q=4` inside the tree does the same.
 .PHONY: exercise exercise-test exercise-check exercise-trees exercise-lint exercise-run exercise-game
 EXERCISE ?= exercise
 EX_RUN   := $(EXERCISE)/build/run
 EX_FRAMES ?= 120
+EX_COURSE_FLAG = $(if $(SCENE),,--course)
 EX_SCENE  = $(or $(SCENE),$(word $(or $(filter 1 2 3 4 5 6 7 8 9,$(Q)),9),walls drift drift drift impulse bounce bounce bounce many))
 # The tree's course files, compiled as in its own Makefile: warnings shown,
 # not errors (a half-written answer still runs), -O0 for a debugger. Their
@@ -420,12 +422,12 @@ exercise-run: deps
 	@$(MAKE) --no-print-directory -s exercise-game
 	@if [ -n "$$DISPLAY$$WAYLAND_DISPLAY$$SDL_VIDEODRIVER" ]; then \
 	  echo "exercise-run: $(EXERCISE)/src/course on the scene $(EX_SCENE) (H: keys, Esc quits)"; \
-	  $(EX_RUN)/game --scene $(EX_SCENE) $(ARGS); \
+	  $(EX_RUN)/game $(EX_COURSE_FLAG) --scene $(EX_SCENE) $(ARGS); \
 	else \
 	  echo "exercise-run: no display (DISPLAY, WAYLAND_DISPLAY unset): $(EXERCISE)/src/course on the scene" \
 	    "$(EX_SCENE), headless, $(EX_FRAMES) frames; the window opens where there is a display"; \
-	  $(EX_RUN)/game --scene $(EX_SCENE) --headless --frames 0 --dump $(EX_RUN)/start.csv >/dev/null && \
-	  $(EX_RUN)/game --scene $(EX_SCENE) --headless --frames $(EX_FRAMES) --dump $(EX_RUN)/end.csv $(ARGS) && \
+	  $(EX_RUN)/game $(EX_COURSE_FLAG) --scene $(EX_SCENE) --headless --frames 0 --dump $(EX_RUN)/start.csv >/dev/null && \
+	  $(EX_RUN)/game $(EX_COURSE_FLAG) --scene $(EX_SCENE) --headless --frames $(EX_FRAMES) --dump $(EX_RUN)/end.csv $(ARGS) && \
 	  tools/exercise/moves.sh $(EX_RUN)/start.csv $(EX_RUN)/end.csv $(EX_FRAMES); \
 	fi
 

@@ -380,6 +380,20 @@ BOOST_AUTO_TEST_CASE(overlapping_blocks_in_a_file_get_one_warning) {
   BOOST_TEST(cli({"--scene", "stack", "--headless", "--frames", "1"}).err.empty());
 }
 
+BOOST_AUTO_TEST_CASE(course_builds_the_sheet_s_scenes_and_refuses_what_it_would_ignore) {
+  const Ran course = cli({"--course", "--scene", "bounce", "--headless", "--frames", "120"});
+  const Ran scene = cli({"--scene", "bounce", "--headless", "--frames", "120"});
+  BOOST_TEST(course.code == 0);
+  BOOST_TEST(has(course.out, "bodies:          6 (1 mobile)"));
+  // The same run: the summaries differ only in their timings.
+  BOOST_TEST(course.out.substr(0, course.out.find("physics ms")) == scene.out.substr(0, scene.out.find("physics ms")));
+  expect_bad({"--course", "--scene", "cradle"},
+             "--course: the course's functions build the sheet's scenes (walls, drift, impulse, bounce, many), not "
+             "'cradle'");
+  expect_bad({"--course", "--friction", "0.5"}, "--course and --friction: the course's functions give each body");
+  expect_bad({"--course", "--print-scene"}, "--print-scene and --course:");
+}
+
 BOOST_AUTO_TEST_CASE(unknown_scene) {
   expect_bad({"--scene", "nope"}, "unknown scene 'nope' (built-in scenes: walls, drift, impulse, bounce, many,");
 }
@@ -648,6 +662,20 @@ BOOST_AUTO_TEST_CASE(a_kick_that_overflows_is_refused_naming_the_block) {
   TempDir d;
   const auto f = d.file("m.json", R"({"blocks":[{"pos":[100,100],"size":[10,10],"mass":1e-300,"force":[1e6,0]}]})");
   expect_bad({"--headless", "--scene", f}, "blocks[0].mass: with a mass of 1e-300");
+}
+
+// An impulse reaches Forces as the force impulse/dt, which the public API
+// (that builds the world) bounds as any force: a tiny dt makes it too large.
+BOOST_AUTO_TEST_CASE(a_first_frame_force_beyond_the_limit_is_refused_naming_the_block) {
+  TempDir d;
+  const auto f = d.file("k.json", R"({"world":{"dt":0.001},"blocks":[{"pos":[100,100],"size":[10,10],"mass":1e9,
+                                       "impulse":[10000,0]}]})");
+  expect_bad({"--headless", "--scene", f},
+             "blocks[0].impulse: with dt 0.001 ms, force + impulse/dt (the first frame's force) reaches 10000000 (at "
+             "most 1000000)");
+  const auto ok = d.file("ok.json", R"({"world":{"dt":0.001},"blocks":[{"pos":[100,100],"size":[10,10],"mass":1e9,
+                                        "impulse":[1000,0]}]})");
+  BOOST_TEST(cli({"--headless", "--frames", "1", "--scene", ok}).code == 0);
 }
 
 BOOST_AUTO_TEST_CASE(a_non_finite_velocity_stops_the_run_naming_body_and_frame) {

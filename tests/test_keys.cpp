@@ -128,7 +128,7 @@ BOOST_AUTO_TEST_CASE(every_block_key_is_saved_from_the_world_or_the_role) {
     const bool physics = k.to_body && k.from_world, game = k.to_role && k.from_role;
     BOOST_TEST(physics != game, k.doc.name());
     BOOST_TEST(!(physics && (k.to_role || k.from_role)), k.doc.name());
-    BOOST_TEST(!(game && (k.to_body || k.from_world || k.to_world)), k.doc.name());
+    BOOST_TEST(!(game && (k.to_body || k.from_world || k.to_def)), k.doc.name());
   }
   // A body made from the block with every key, saved before any step, is that block again
   // (its impulse folded into the pending force).

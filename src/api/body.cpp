@@ -12,9 +12,6 @@ namespace {
 using Body = Entity<component::position, component::box, component::color, component::mass,
                     component::velocity, component::sum_forces, component::restitution>;
 
-static_assert(static_cast<int>(OneWay::right) == static_cast<int>(Face::right) &&
-              static_cast<int>(OneWay::up) == static_cast<int>(Face::up));
-
 void check(const BodyDef& d) {
   api::check_finite(d.position, "a body's position");
   api::check_size(d.size);

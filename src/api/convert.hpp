@@ -32,5 +32,9 @@ void check_friction(double mu);
 Rect to_rect(Vec2 size);  // after check_size
 
 ContactRules rules_of(Filter f, bool sensor, OneWay one_way);
+// The engine's one-way face as the API's, and back (rules_of): the same order.
+static_assert(static_cast<int>(OneWay::right) == static_cast<int>(Face::right) &&
+              static_cast<int>(OneWay::up) == static_cast<int>(Face::up));
+inline OneWay to_public(Face f) { return static_cast<OneWay>(f); }
 
 }  // namespace physics::api

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "scene/builtin_scenes.hpp"
+#include "app/course_world.hpp"
 #include "app/dump.hpp"
 #include "app/headless.hpp"
 #include "app/offscreen.hpp"
@@ -85,6 +86,9 @@ po::options_description descriptions() {
       ("list-scenes", "list the built-in scenes and the scene files in scenes/ (games marked), and exit")
       ("scene", po::value<std::string>()->value_name("NAME|FILE"),
        "a built-in scene (see --list-scenes; default many) or a scene file (.json)")
+      ("course", "build the sheet's scenes (walls, drift, impulse, bounce, many) with the course's own functions "
+       "(src/course/game.cpp) as the sheet's main program does, not from their descriptions (make exercise-run "
+       "shows your answers so)")
       ("print-scene", "print the scene, with the values given here, as a scene file (JSON) and exit (no output "
        "or run flag with it)")
       ("headless", "run without a window and print a summary (also when there is no display)")
@@ -125,7 +129,7 @@ po::options_description descriptions() {
 void conflicts(const po::variables_map& vm) {
   if (vm.count("print-scene"))
     for (const char* flag : {"dump", "trace", "events", "save", "screenshot", "record", "replay", "headless",
-                             "frames", "strict", "overlays"})
+                             "frames", "strict", "overlays", "course"})
       if (vm.count(flag))
         throw UsageError(std::string("--print-scene and --") + flag + ": --print-scene prints the scene and exits, "
                          "it would ignore --" + flag + " (give one of them)");
@@ -144,6 +148,21 @@ void conflicts(const po::variables_map& vm) {
       throw UsageError(std::string("--") + files[i] + " and --" + files[j] + " name one file (" + a + "): " +
                        (i == 0 ? "writing it would destroy the input log" : "give each output its own file"));
     }
+}
+
+// --course builds the sheet's scenes as its functions do: another scene, or
+// a value they would not take (each body's restitution and friction are
+// theirs), is refused rather than ignored.
+void course_conflicts(const Options& o) {
+  if (!CourseWorld::builds(o.scene)) {
+    std::string names;
+    for (const std::string_view n : CourseWorld::scenes()) names += (names.empty() ? "" : ", ") + std::string(n);
+    throw UsageError("--course: the course's functions build the sheet's scenes (" + names + "), not '" + o.scene + "'");
+  }
+  for (const auto& [name, text] : o.overrides.world)
+    if (name == "restitution" || name == "friction")
+      throw UsageError("--course and --" + name + ": the course's functions give each body its own " + name +
+                       " (give one of them)");
 }
 
 // The scene files to list: scenes/ in the working directory (where `make
@@ -254,7 +273,7 @@ int finish_files(const World& w, const SceneSpec& scene, std::span<const BlockRo
 int headless_run(const SceneSpec& spec, const std::vector<Body>& bodies, const Options& o, Recorder& rec,
                  const std::string& why, std::ostream& out, std::ostream& err) {
   const bool picture = !o.screenshot.empty();
-  World w = make_world(spec, bodies, picture && spec.systems.draw);
+  World w = world_maker(o)(spec, bodies, picture && spec.systems.draw);
   rec.start(w);
   const std::int64_t frames = o.frames.value_or(picture ? screenshot_frames : headless_frames);
   const auto summary = Headless::run(w, frames, [&](const World& world) { rec.after_step(world); });
@@ -278,7 +297,7 @@ int replay_run(const InputLog& log, const Options& o, Recorder& rec, const std::
                std::ostream& err) {
   std::size_t current = 0;
   std::vector<SceneSpec> scenes = testbed_scenes(o, current);
-  Testbed tb(std::move(scenes), current, o.overrides, o.overlays);
+  Testbed tb(std::move(scenes), current, o.overrides, o.overlays, world_maker(o));
   Headless::Summary s;
   rec.start(tb.world());
   tb.on_step = [&](const World& w) {
@@ -422,7 +441,14 @@ Options parse(std::span<const std::string> args) {
     if (!o.overrides.style) bad("--style", "must be plain, speed or sprite", get("style"));
   }
   conflicts(vm);
+  o.course = has("course");
+  if (o.course) course_conflicts(o);
   return o;
+}
+
+WorldMaker world_maker(const Options& o) {
+  if (o.course) return CourseWorld::make;
+  return make_world;
 }
 
 SceneSpec resolve_scene(const std::string& name) {

@@ -30,6 +30,7 @@ inline constexpr std::int64_t screenshot_frames = 60;  // --screenshot without -
 struct Options {
   bool help = false, list_scenes = false, print_scene = false, headless = false;
   bool strict = false;  // an escape exits with code 3
+  bool course = false;  // the sheet's scenes built by the course's functions (app/course_world.hpp)
   std::string scene{"many"};
   bool scene_given = false;  // --scene was given (else a replay runs on its log's scene)
   std::optional<std::int64_t> frames;
@@ -43,6 +44,9 @@ struct Options {
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+
+// What builds the worlds of the run: --course's course functions, or make_world.
+WorldMaker world_maker(const Options& o);
 
 // Throws UsageError, also for flags that contradict each other: two outputs
 // (or an output and --replay) naming one file, --print-scene with a flag it

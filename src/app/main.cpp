@@ -50,7 +50,7 @@ void loop(Testbed& tb, Window& win, std::optional<std::int64_t> frames, const st
 // whatever the display's rate, so a run does not depend on the machine.
 int run_window(Cli::Session& s) {
   const Cli::Options& o = s.options;
-  Testbed tb(s.scenes, s.current, o.overrides, o.overlays);
+  Testbed tb(s.scenes, s.current, o.overrides, o.overlays, Cli::world_maker(o));
   const SceneSpec& first = tb.scene();
   std::optional<Window> win;
   try {

@@ -64,9 +64,10 @@ std::string ray_line(const RayHit& h) {
 
 }  // namespace
 
-Testbed::Testbed(std::vector<SceneSpec> scenes, std::size_t current, Overrides overrides, Overlays overlays)
+Testbed::Testbed(std::vector<SceneSpec> scenes, std::size_t current, Overrides overrides, Overlays overlays,
+                 WorldMaker make)
     : scenes_(std::move(scenes)), current_(current < scenes_.size() ? current : 0), overrides_(overrides),
-      overlays_(overlays) {
+      overlays_(overlays), make_(make) {
   install(with_overrides(scenes_.at(current_), overrides_));
   record_contacts();
 }
@@ -76,7 +77,7 @@ Testbed::Testbed(std::vector<SceneSpec> scenes, std::size_t current, Overrides o
 // first and kept together, or none is.
 void Testbed::install(const SceneSpec& spec) {
   const std::vector<Body> bodies = expand(spec, spec.name);
-  World world = make_world(spec, bodies, true);
+  World world = make_(spec, bodies, true);
   std::vector<BlockRole> roles = roles_by_entity(spec, bodies);
   // A game plays through the public API, on a view of the world (the same
   // id once the world is moved into place).

@@ -85,9 +85,11 @@ class Testbed {
   static constexpr double message_ms = 2000.0;  // real ms a "no room there" stays on the HUD
 
   // `scenes` is the list keys 1-9 and Tab walk through; `overrides` (the
-  // command line's values) apply to each of them. Throws SceneError if the
-  // first scene is invalid.
-  Testbed(std::vector<SceneSpec> scenes, std::size_t current, Overrides overrides = {}, Overlays overlays = {});
+  // command line's values) apply to each of them; `make` builds each world
+  // (--course: the course's functions). Throws SceneError if the first scene
+  // is invalid.
+  Testbed(std::vector<SceneSpec> scenes, std::size_t current, Overrides overrides = {}, Overlays overlays = {},
+          WorldMaker make = make_world);
 
   enum class Action { none, quit };
   Action handle(const InputEvent& e);
@@ -165,6 +167,7 @@ class Testbed {
   std::size_t current_;
   Overrides overrides_;
   Overlays overlays_;
+  WorldMaker make_;
   // On the heap, so that a game's api::View of it holds when the testbed moves.
   std::unique_ptr<World> world_;
   bool paused_ = false, slow_ = false;

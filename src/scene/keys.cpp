@@ -1,5 +1,7 @@
 #include "scene/keys.hpp"
 
+#include "api/convert.hpp"
+
 #include <algorithm>
 #include <array>
 #include <charconv>
@@ -49,9 +51,9 @@ Vector unit(Vector v) { return (1.0 / Vector::norm(v)) * v; }
 using BK = Key<BlockSpec>;
 using W = const Components&;  // the world a block is saved from
 
-// In the order of the writer (--print-scene's output) and the doc. pos, size,
-// mass, colour and restitution go into the world through the sheet's
-// Block::make (populate, scene.cpp), the others through their to_world.
+// In the order of the writer (--print-scene's output) and the doc. Each key
+// the physics reads goes into the public API's BodyDef through its to_def
+// (populate, scene.cpp, creates the body with create_body).
 const BK block_rows[] = {
     {.doc = {".pos", "[x, y]", "finite", "required", "the top-left corner, px (y grows downwards)"},
      .missing = "(the top-left corner [x, y], px)",
@@ -59,7 +61,8 @@ const BK block_rows[] = {
      .write = [](ojson& o, const BlockSpec& b) { o["pos"] = vec(b.pos); },
      .check = [](const Checker& k, const BlockSpec& b, const std::string& at) { k.finite(b.pos, At{at, ".pos"}); },
      .from_world = [](W k, EntityId e, const SceneSpec&, BlockSpec& b) { b.pos = k.position[e]; },
-     .to_body = [](const BlockSpec& b, const SceneSpec&, Body& out) { out.pos = b.pos; }},
+     .to_body = [](const BlockSpec& b, const SceneSpec&, Body& out) { out.pos = b.pos; },
+     .to_def = [](const Body& b, double, BodyDef& d) { d.position = api::to_public(b.pos); }},
     {.doc = {".size", "[width, height]", "integers in [1, 2^20]", "required", "px"},
      .missing = "([width, height], px)",
      .read =
@@ -75,14 +78,16 @@ const BK block_rows[] = {
            k.size(b.height, At{at, ".size"});
          },
      .from_world = [](W k, EntityId e, const SceneSpec&, BlockSpec& b) { b.width = k.box[e].width, b.height = k.box[e].height; },
-     .to_body = [](const BlockSpec& b, const SceneSpec&, Body& out) { out.width = b.width, out.height = b.height; }},
+     .to_body = [](const BlockSpec& b, const SceneSpec&, Body& out) { out.width = b.width, out.height = b.height; },
+     .to_def = [](const Body& b, double, BodyDef& d) { d.size = {double(b.width), double(b.height)}; }},
     {.doc = {".mass", "number or `\"inf\"`", "> 0", "required", "`\"inf\"` for a fixed body"},
      .missing = "(a number > 0, or \"inf\" for a fixed body)",
      .read = [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.mass = r.mass(v, p); },
      .write = [](ojson& o, const BlockSpec& b) { o["mass"] = mass_json(b.mass); },
      .check = [](const Checker& k, const BlockSpec& b, const std::string& at) { k.mass(b.mass, At{at, ".mass"}); },
      .from_world = [](W k, EntityId e, const SceneSpec&, BlockSpec& b) { b.mass = k.mass[e]; },
-     .to_body = [](const BlockSpec& b, const SceneSpec&, Body& out) { out.mass = b.mass; }},
+     .to_body = [](const BlockSpec& b, const SceneSpec&, Body& out) { out.mass = b.mass; },
+     .to_def = [](const Body& b, double, BodyDef& d) { d.mass = b.mass; }},
     {.doc = {".velocity", "[x, y]", "±10^6 per axis", "[0, 0]", "px/ms at start"},
      .read = [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.velocity = r.vec(v, p); },
      .write =
@@ -92,7 +97,7 @@ const BK block_rows[] = {
      .check = [](const Checker& k, const BlockSpec& b, const std::string& at) { k.motion(b.velocity, At{at, ".velocity"}); },
      .from_world = [](W k, EntityId e, const SceneSpec&, BlockSpec& b) { b.velocity = k.velocity[e]; },
      .to_body = [](const BlockSpec& b, const SceneSpec&, Body& out) { out.velocity = b.velocity; },
-     .to_world = [](const Body& b, World& w, EntityId e) { w.components.velocity[e] = b.velocity; }},
+     .to_def = [](const Body& b, double, BodyDef& d) { d.velocity = api::to_public(b.velocity); }},
     {.doc = {".force", "[x, y]", "±10^6 per axis", "[0, 0]",
              "initial Σf (Q5), turned into a velocity change by Forces on frame 1"},
      .read = [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.force = r.vec(v, p); },
@@ -106,9 +111,9 @@ const BK block_rows[] = {
      .to_body = [](const BlockSpec& b, const SceneSpec&, Body& out) { out.force = b.force; },
      // An impulse J changes the velocity by J/m. Forces applies Σf·dt/m on the
      // first frame, so the initial force J/dt is exactly that impulse.
-     .to_world =
-         [](const Body& b, World& w, EntityId e) {
-           w.components.sum_forces[e] = b.force + Vector::mult(1.0 / w.params.dt, b.impulse);
+     .to_def =
+         [](const Body& b, double dt, BodyDef& d) {
+           d.force = api::to_public(b.force + Vector::mult(1.0 / dt, b.impulse));
          }},
     {.doc = {".impulse", "[x, y]", "±10^6 per axis", "[0, 0]",
              "velocity change × mass on frame 1 (given to Forces as the force impulse/dt)"},
@@ -118,7 +123,7 @@ const BK block_rows[] = {
            if (!Vector::is_zero(b.impulse)) o["impulse"] = vec(b.impulse);
          },
      .check = [](const Checker& k, const BlockSpec& b, const std::string& at) { k.motion(b.impulse, At{at, ".impulse"}); },
-     .from_world = [](W, EntityId, const SceneSpec&, BlockSpec&) {},  // in the force (above), as to_world
+     .from_world = [](W, EntityId, const SceneSpec&, BlockSpec&) {},  // in the force (above), as to_def
      .to_body = [](const BlockSpec& b, const SceneSpec&, Body& out) { out.impulse = b.impulse; }},
     {.doc = {".color", "`\"#rrggbb\"`", "", "`\"#808080\"`", "its colour"},
      .read = [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.color = r.color(v, p); },
@@ -127,7 +132,8 @@ const BK block_rows[] = {
            if (!(b.color == default_block_color)) o["color"] = hex(b.color);
          },
      .from_world = [](W k, EntityId e, const SceneSpec&, BlockSpec& b) { b.color = k.color[e]; },
-     .to_body = [](const BlockSpec& b, const SceneSpec&, Body& out) { out.color = b.color; }},
+     .to_body = [](const BlockSpec& b, const SceneSpec&, Body& out) { out.color = b.color; },
+     .to_def = [](const Body& b, double, BodyDef& d) { d.color = b.color; }},
     {.doc = {".restitution", "number", "[0, 1]", "the world's", "a pair uses the smaller of its two"},
      .read = [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.restitution = r.restitution(v, p); },
      .write =
@@ -143,7 +149,8 @@ const BK block_rows[] = {
          [](W k, EntityId e, const SceneSpec& from, BlockSpec& b) {
            if (k.restitution[e] != from.restitution) b.restitution = k.restitution[e];
          },
-     .to_body = [](const BlockSpec& b, const SceneSpec& s, Body& out) { out.restitution = b.restitution.value_or(s.restitution); }},
+     .to_body = [](const BlockSpec& b, const SceneSpec& s, Body& out) { out.restitution = b.restitution.value_or(s.restitution); },
+     .to_def = [](const Body& b, double, BodyDef& d) { d.restitution = b.restitution; }},
     {.doc = {".friction", "number", "[0, 1000]", "the world's",
              "Coulomb's coefficient; a pair uses sqrt(mu_a mu_b) ([game-physics.md](game-physics.md))"},
      .read = [](const Reader& r, const json& v, const Path& p, BlockSpec& b) { b.contact.friction = r.number(v, p); },
@@ -161,7 +168,7 @@ const BK block_rows[] = {
            if (k.friction[e] != from.friction) b.contact.friction = k.friction[e];
          },
      .to_body = [](const BlockSpec& b, const SceneSpec& s, Body& out) { out.friction = b.contact.friction.value_or(s.friction); },
-     .to_world = [](const Body& b, World& w, EntityId e) { w.components.friction[e] = b.friction; }},
+     .to_def = [](const Body& b, double, BodyDef& d) { d.friction = b.friction; }},
     {.doc = {".category", "integer", "[0, 2^32 - 1]", "1",
              "bits: a pair interacts only if each one's category meets the other's mask"},
      .read =
@@ -176,9 +183,11 @@ const BK block_rows[] = {
      .from_world = [](W k, EntityId e, const SceneSpec&, BlockSpec& b) { b.contact.rules.category = k.rules(e).category; },
      .to_body = [](const BlockSpec& b, const SceneSpec&, Body& out) { out.rules.category = b.contact.rules.category; },
      // The four keys of the contact rules at once (the world keeps them only for a body that has some).
-     .to_world =
-         [](const Body& b, World& w, EntityId e) {
-           if (!b.rules.plain()) w.components.set_rules(e, b.rules);
+     .to_def =
+         [](const Body& b, double, BodyDef& d) {
+           d.filter = {b.rules.category, b.rules.mask};
+           d.sensor = b.rules.sensor;
+           d.one_way = api::to_public(b.rules.one_way);
          }},
     {.doc = {".mask", "integer", "[0, 2^32 - 1]", "4294967295", "bits: the categories it meets"},
      .read =
@@ -612,9 +621,11 @@ Body body_of(const BlockSpec& b, const SceneSpec& s, std::size_t entry, std::int
   return out;
 }
 
-void to_world(const Body& b, World& w, EntityId e) {
+BodyDef body_def(const Body& b, double dt) {
+  BodyDef d;
   for (const auto& key : scene_io::block_keys())
-    if (key.to_world) key.to_world(b, w, e);
+    if (key.to_def) key.to_def(b, dt, d);
+  return d;
 }
 
 void check_contact_keys(const scene_check::Checker& k, const ContactSpec& c, const std::string& path) {

@@ -18,6 +18,7 @@
 #include <string_view>
 #include <vector>
 
+#include "physics/physics.hpp"
 #include "scene/checker.hpp"
 #include "scene/json_reader.hpp"
 
@@ -52,10 +53,10 @@ struct Key {
   // `from` (null: a key for the games, saved from the body's role below).
   void (*from_world)(const Components& k, EntityId e, const SceneSpec& from, Spec& out) = nullptr;
   // Building: the key's value in the body a block makes (`s` its scene: the
-  // world's defaults), and from the body into the world's entity e beyond
-  // what the sheet's Block::make takes (null: nothing to do, or Block::make's).
+  // world's defaults), and from the body into the public API's def that
+  // creates it (`dt`: the world's; null: nothing to do).
   void (*to_body)(const Spec& b, const SceneSpec& s, Body& out) = nullptr;
-  void (*to_world)(const Body& b, World& w, EntityId e) = nullptr;
+  void (*to_def)(const Body& b, double dt, BodyDef& out) = nullptr;
   // A key for the games: its part in the body's role (roles_by_entity; `body`
   // the body the block made), and back into a block saved from the world (Save;
   // `out` holds the body as it is now).
@@ -101,10 +102,11 @@ namespace physics {
 void check_block_keys(const scene_check::Checker& k, const BlockSpec& b, const std::string& path);
 void check_contact_keys(const scene_check::Checker& k, const ContactSpec& c, const std::string& path);
 
-// The body block b makes (entry and index: where it came from), and what its
-// keys put into entity e of w beyond Block::make (populate, scene.cpp).
+// The body block b makes (entry and index: where it came from), and the
+// public API's def its keys make of it, in a world stepping dt ms (populate,
+// scene.cpp, creates it with create_body).
 Body body_of(const BlockSpec& b, const SceneSpec& s, std::size_t entry, std::int64_t index);
-void to_world(const Body& b, World& w, EntityId e);
+BodyDef body_def(const Body& b, double dt);
 
 // A body's role from its block's keys (walls aside).
 BlockRole role_of(const BlockSpec& b, const Body& body);

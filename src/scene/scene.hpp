@@ -2,10 +2,12 @@
 // whether it has the walls of question 1, and its blocks, single or made by
 // generators (a grid of equal blocks, or seeded random blocks). Built-in
 // scenes (builtin_scenes.hpp) and scene files (scene_json.hpp) both produce a
-// SceneSpec; `make_world` turns one into a World. No SDL here: this is part
-// of the physics library, so headless runs, benchmarks and fuzzers use it.
+// SceneSpec; `make_world` turns one into a World, its bodies made through the
+// public API. No SDL here (libphysics_scene.a): headless runs, benchmarks and
+// fuzzers use it.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <stdexcept>
@@ -16,6 +18,7 @@
 #include <vector>
 
 #include "engine/limits.hpp"
+#include "physics/physics.hpp"
 #include "course/game.hpp"
 #include "course/utils/random.hpp"
 
@@ -260,17 +263,32 @@ std::string overlap_warning(const SceneSpec& s, const std::vector<Body>& bodies,
 // validates once).
 std::int64_t validation_count();
 
-// Adds the walls (if any) and `bodies` (from expand(s, ...)) to `w`, using
-// w.params.dt to turn impulses into initial forces. No checks: Block::make
-// asserts what expand guarantees.
+// The four walls of a scene with `walls`: the sheet's (question 1), as the
+// public API's defs, with the world's restitution and friction.
+std::array<BodyDef, Game::wall_count> wall_defs(const SceneSpec& s);
+
+// Adds the walls (if any) and `bodies` (from expand(s, ...)) to `w` through
+// the public API (create_body on a view of w), using w.params.dt to turn
+// impulses into initial forces. expand's checks are the API's and more, so
+// create_body throws nothing for its bodies.
 void populate(World& w, const SceneSpec& s, const std::vector<Body>& bodies);
 // Same, expanding (so validating) the scene first.
 void populate(World& w, const SceneSpec& s, const std::string& source = "scene");
 
+// Health's watch (engine/health.hpp) on the bodies of w from `first` on: an
+// escape is a body whose centre leaves the inside of the scene's walls (or
+// its bounds).
+void watch(World& w, const SceneSpec& s, EntityId first);
+
 // A world with the scene's parameters and systems (Draw only if `with_draw`:
-// a headless run has nothing to draw), holding `bodies` (from expand).
+// a headless run has nothing to draw), and no body yet.
+World empty_world(const SceneSpec& s, bool with_draw);
+// The same, holding the walls and `bodies` (from expand): populate.
 World make_world(const SceneSpec& s, const std::vector<Body>& bodies, bool with_draw);
 // Same, expanding (so validating) the scene once. Throws SceneError.
 World make_world(const SceneSpec& s, bool with_draw, const std::string& source = "scene");
+// What builds a scene's world from its bodies: make_world, or the course's
+// functions for the sheet's scenes (app/course_world.hpp, --course).
+using WorldMaker = World (*)(const SceneSpec& s, const std::vector<Body>& bodies, bool with_draw);
 
 }  // namespace physics

@@ -11,8 +11,9 @@
 #     its warning: the student's tree keeps warnings but not as errors.
 #  4. the project's own test binary passes every q<n>_* suite.
 #  5. the game of `make exercise-run` runs the tree's course code: built on
-#     the stubbed tree, the questions' built-in scenes end otherwise than in
-#     the project's game; on the answered tree, bit for bit as in it.
+#     the stubbed tree, the questions' built-in scenes (built by the course's
+#     functions, --course, as exercise-run does) end otherwise than in the
+#     project's game; on the answered tree, bit for bit as in it.
 # Steps 1-3 need nothing of the project's build, so `make test` runs them
 # beside it (`--trees`); steps 4-5 wait for the test binary and the game
 # (`--main`; the game is the one beside the test binary).
@@ -51,8 +52,8 @@ viewer() {
     { echo "  exercise-run's game does not build (see $vdir.log)"; fail=1; return; }
   game=$(dirname "$main_tests")/game
   for s in walls drift impulse bounce many; do
-    "$vdir/build/run/game" --scene $s --headless --frames 60 --dump "$vdir/$s.csv" >/dev/null
-    "$game" --scene $s --headless --frames 60 --dump "$vdir/$s.main.csv" >/dev/null
+    "$vdir/build/run/game" --course --scene $s --headless --frames 60 --dump "$vdir/$s.csv" >/dev/null
+    "$game" --course --scene $s --headless --frames 60 --dump "$vdir/$s.main.csv" >/dev/null
     if cmp -s "$vdir/$s.csv" "$vdir/$s.main.csv"; then got=same; else got=differ; fi
     [ $got = "$2" ] || { echo "  exercise-run, answers '$1', scene $s: expected the project's dump to $2"; fail=1; }
   done
