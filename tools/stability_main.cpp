@@ -176,11 +176,16 @@ int family_command(const std::vector<std::string_view>& args, std::vector<Mode> 
   if (chosen.empty()) throw std::invalid_argument("--family: no family '" + name + "'");
   for (const Family* f : chosen)
     for (const DrawResult& r : run_family(*f, modes, first, last)) {
+      std::string failed;
       if (!expected) std::cout << f->name << " seed " << r.seed << ": " << r.params << "\n";
-      for (std::size_t i = 0; i < modes.size(); ++i)
-        if (!expected) std::cout << "  " << (r.outcomes[i].pass ? "pass " : "FAIL ") << modes[i].name << ": "
-                                 << r.outcomes[i].figure << "\n";
-        else if (!r.outcomes[i].pass) std::cout << "      \"" << f->name << "/" << r.seed << "/" << modes[i].name << "\",\n";
+      for (std::size_t i = 0; i < modes.size(); ++i) {
+        if (!expected)
+          std::cout << "  " << (r.outcomes[i].pass ? "pass " : "FAIL ") << modes[i].name << ": " << r.outcomes[i].figure
+                    << "\n";
+        if (!r.outcomes[i].pass) failed += (failed.empty() ? "" : " ") + modes[i].name;
+      }
+      if (expected && !failed.empty())
+        std::cout << "      {\"" << f->name << "/" << r.seed << "\", \"" << failed << "\"},\n";
     }
   return 0;
 }
