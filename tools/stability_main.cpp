@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <stdexcept>
 #include <string_view>
 
 #include "numerics/family.hpp"
@@ -163,9 +164,9 @@ int family_command(const std::vector<std::string_view>& args, std::vector<Mode> 
     else if (args[i] == "--family-expected") expected = true, last = test_draws;
     else if (args[i] == "--seed") {
       const std::string v = value();
-      std::size_t used = 0;
-      first = last = std::stoull(v, &used);
-      if (used != v.size() || v[0] == '-') throw std::invalid_argument("--seed: not a seed: '" + v + "'");
+      if (v.empty() || v.size() > 19 || v.find_first_not_of("0123456789") != std::string::npos)
+        throw std::invalid_argument("--seed: not a seed (0 to 10^19 - 1): '" + v + "'");
+      first = last = std::stoull(v);
     } else throw std::invalid_argument("unknown argument '" + std::string(args[i]) + "'");
   }
   if (!mode.empty()) std::erase_if(modes, [&](const Mode& m) { return m.name != mode; });

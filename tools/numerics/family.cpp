@@ -508,9 +508,12 @@ bool swept_touch(double u0, double v, double t0, double t1, double L, double p, 
 
 // A bullet bouncing along x through a sensor strip across the box, e = 1:
 // the sensor's begin events are the crossings of the closed form, counted
-// as runs of steps whose swept path touches it (within 2 %, or 1).
+// as runs of steps whose swept path touches it (within 2 %, or 1). Up to
+// 40 px/ms (667 px a frame) a step holds at most about one crossing, so
+// that count is the number of crossings, whatever a swept sensor makes of
+// several crossings in one step.
 Draw sensor_crossing(Random& r) {
-  const double speed = log_uniform(r, 0.5, 3000) * (r.uniform_int(0, 1) ? 1 : -1);
+  const double speed = log_uniform(r, 0.5, 40) * (r.uniform_int(0, 1) ? 1 : -1);
   const int s = r.uniform_int(2, 20), sw = r.uniform_int(1, 10), sx = r.uniform_int(200, 590);
   return {fmt("%.0f px block at %.5g px/ms along x, sensor %.0f px wide at x %.0f, e 1", s, speed, sw, sx),
           [=](const Mode& m) {
@@ -737,10 +740,10 @@ const std::vector<FailingDraw>& failing_today() {
     {"fast-in-pile/3", "course substeps16 ccd stable stable+ccd auto"},
     {"fast-in-pile/4", "course substeps16 ccd stable stable+ccd auto"},
     {"fast-in-pile/5", "course substeps16 ccd stable stable+ccd auto"},
-    {"sensor/1", "course substeps16 ccd stable stable+ccd auto"},
+    {"sensor/1", "course"},
     {"sensor/2", "course substeps16 ccd stable stable+ccd auto"},
     {"sensor/3", "course substeps16 ccd stable stable+ccd auto"},
-    {"sensor/4", "course substeps16 stable"},
+    {"sensor/4", "course substeps16 ccd stable stable+ccd auto"},
     {"sensor/5", "course substeps16 ccd stable stable+ccd auto"},
     {"ratio-stack/1", "course substeps16 ccd stable+ccd"},
     {"ratio-stack/2", "course substeps16 ccd stable+ccd auto"},
@@ -795,14 +798,14 @@ const std::vector<Family>& families() {
       family("push-into-wall", "a pusher of mass 1-1e12 at 0.05-0.5 px/ms driving a light block into a wall, "
              "floating or on the floor, e 0-1",
              "never 1 px into the wall, order kept, overlap < 1 px, energy never grows", push_into_wall),
-      family("push-row", "an infinite-mass pusher at 0.01-0.3 px/ms driving 1-16 blocks along the floor, e 0-1, "
+      family("push-row", "an infinite-mass pusher at 0.01-0.3 px/ms driving 1-40 blocks along the floor, e 0-1, "
              "friction 0-1",
              "order kept, none outside, overlap < 1 px once engaged", push_row),
       family("fast-bullet", "a 2-20 px bullet at 3000-30000 px/ms in the walls, any direction, e = 1",
              "closed form of the lossless bounce within 1 px, energy kept", fast_bullet),
       family("fast-in-pile", "5-40 blocks falling, e = 1, with a bullet at 3000-30000 px/ms",
              "energy never grows, none outside", fast_in_pile),
-      family("sensor", "a 2-20 px bullet at 0.5-3000 px/ms through a 1-10 px sensor strip, e = 1",
+      family("sensor", "a 2-20 px bullet at 0.5-40 px/ms through a 1-10 px sensor strip, e = 1",
              "begin events = crossings of the closed form (swept), within 2 % or 1", sensor_crossing),
       family("save-reload", "3-20 blocks, saved after 0-60 frames (0 in a third) and reloaded, e 0-1, friction 0-1",
              "the reloaded run is the unbroken one, bit for bit", save_reload),
