@@ -296,7 +296,9 @@ Draw seam_friction(Random& r) {
                                 [&](const World& x) { lifted = std::max(lifted, std::abs(s.across(x, b) - n0)); });
             if (!t.finite) return nan_outcome();
             const double went = std::abs(s.along(w, b) - a0);
-            const bool stopped = Vector::norm(w.components.velocity[b]) < 1e-9;
+            // (Along the surface: with e > 0 the slider may still bounce on it, by less than 1 px.)
+            const Vector v = w.components.velocity[b];
+            const bool stopped = std::abs(s.orient < 2 ? v.x : v.y) < 1e-9;
             return finish(stopped && std::abs(went - d) < slide_tolerance * d && lifted < max_sink &&
                               t.max_overlap < max_sink,
                           fmt("stopped after %.5g px (exact %.4g), off the surface by %.3g px", went, d, lifted) +
@@ -706,10 +708,10 @@ const std::vector<FailingDraw>& failing_today() {
     {"seam-slide/4", "course stable stable+ccd auto"},
     {"seam-slide/5", "stable auto"},
     {"seam-friction/1", "stable"},
-    {"seam-friction/2", "course substeps16 stable auto"},
-    {"seam-friction/3", "course substeps16 stable auto"},
-    {"seam-friction/4", "course substeps16 stable auto"},
-    {"seam-friction/5", "course stable auto"},
+    {"seam-friction/2", "stable auto"},
+    {"seam-friction/3", "stable auto"},
+    {"seam-friction/4", "stable auto"},
+    {"seam-friction/5", "stable auto"},
     {"exact-fit/1", "stable auto"},
     {"exact-fit/2", "stable auto"},
     {"exact-fit/3", "stable auto"},
