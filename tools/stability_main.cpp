@@ -1,4 +1,8 @@
-// make stability: the matrix of stiff and extreme cases (report/STABILITY.md).
+// make stability: the matrix of stiff and extreme cases and the generated
+// family (report/STABILITY.md): build/stability [OUT.md [--quick]].
+// build/stability --family NAME|all [--seed S] [--mode M]: a family's draws
+// replayed and printed; --family-expected: the test subset's failing draws,
+// as failing_today() (tools/numerics/family.cpp) lists them.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
