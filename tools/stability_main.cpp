@@ -145,7 +145,8 @@ void family_section(std::ostream& md, const std::vector<Mode>& modes) {
         "list: " << families().size() << " families, seeds 1-" << family_draws << " each (" << draws
      << " draws, each run in every mode), each checked against an invariant from physics. A draw is reproducible "
         "from (family, seed): `build/stability --family NAME --seed S` replays it in every mode (`--mode M`: one). "
-        "A CCD run fails, as in the matrix, when more than 1 % of its substeps ran out of impact budget. "
+        "A CCD run fails, as in the matrix, when more than 1 % of its substeps ran out of impact budget (time lost); "
+        "it stops there, its verdict decided, and its figures are those of the frames run until then. "
         "`tests/test_family.cpp` runs seeds 1-" << test_draws << " of every family in `make test`, against the "
         "list of the draws that fail today (`family_expected_to_fail`).\n\n| family | drawn | invariant |";
   for (const Mode& m : modes) md << " " << m.name << " |";
@@ -159,7 +160,7 @@ void family_section(std::ostream& md, const std::vector<Mode>& modes) {
 // --family NAME [--seed S] [--mode M]: the draws replayed (every seed of make stability without --seed;
 // NAME "all": every family), printed. --family-expected: the test subset's failing draws, as
 // family_expected_to_fail lists them.
-int family_command(const std::vector<std::string_view>& args, std::vector<Mode> modes) {
+int family_replay(const std::vector<std::string_view>& args, std::vector<Mode> modes) {
   std::string name, mode;
   std::uint64_t first = 1, last = family_draws;
   bool expected = false;
@@ -200,6 +201,16 @@ int family_command(const std::vector<std::string_view>& args, std::vector<Mode> 
   return 0;
 }
 
+// The same, a bad argument reported on one line (exit 2).
+int family_command(const std::vector<std::string_view>& args, const std::vector<Mode>& modes) {
+  try {
+    return family_replay(args, modes);
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "stability: " << e.what() << "\n";
+    return 2;
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -207,14 +218,8 @@ int main(int argc, char** argv) {
   // STABILITY_MODE=name: that column alone (while working on a mode).
   if (const char* only = std::getenv("STABILITY_MODE"))
     std::erase_if(modes, [&](const Mode& m) { return m.name != only; });
-  if (argc > 1 && std::string_view(argv[1]).starts_with("--family")) {
-    try {
-      return family_command(std::vector<std::string_view>(argv + 1, argv + argc), modes);
-    } catch (const std::exception& e) {
-      std::cerr << "stability: " << e.what() << "\n";
-      return 2;
-    }
-  }
+  if (argc > 1 && std::string_view(argv[1]).starts_with("--family"))
+    return family_command(std::vector<std::string_view>(argv + 1, argv + argc), modes);
   const std::string out_path = argc > 1 ? argv[1] : "report/STABILITY.md";
   const bool quick = argc > 2 && std::string(argv[2]) == "--quick";  // skip the long cases
   const auto cases = stability_cases();
