@@ -89,7 +89,8 @@ GAME_OBJ := $(GAME_SRC:%.cpp=$(BUILD)/obj/%.o)
 TEST_OBJ := $(TEST_SRC:%.cpp=$(BUILD)/obj/%.o)
 REF_OBJ  := $(REF_SRC:%.cpp=$(BUILD)/obj/%.o)
 # Scenes, modes and measures of `make report` / `make stability`, shared with their tests.
-NUM_SRC  := tools/numerics/scenes.cpp tools/numerics/stability.cpp tools/numerics/report.cpp tools/numerics/friction.cpp
+NUM_SRC  := tools/numerics/scenes.cpp tools/numerics/stability.cpp tools/numerics/report.cpp tools/numerics/friction.cpp \
+            tools/numerics/family.cpp
 NUM_OBJ  := $(NUM_SRC:%.cpp=$(BUILD)/obj/%.o)
 TEST_OBJ += $(REF_OBJ) $(NUM_OBJ)
 

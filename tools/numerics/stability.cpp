@@ -9,24 +9,10 @@
 
 namespace physics::numerics {
 
-namespace {
+namespace criteria {
 
-constexpr double g = 0.001;  // px/ms²: a 500 px fall takes one second
-constexpr Vector down{0, g};
 
-std::string fmt(const char* f, double a) {
-  char buf[96];
-  std::snprintf(buf, sizeof buf, f, a);
-  return buf;
-}
-std::string fmt(const char* f, double a, double b) {
-  char buf[128];
-  std::snprintf(buf, sizeof buf, f, a, b);
-  return buf;
-}
-
-// Inside the course's walls: the space they enclose.
-int outside_walls(const World& w, Vector o = {}) { return outside(w, o.x + 40, o.y + 40, o.x + 760, o.y + 560); }
+int outside_walls(const World& w, Vector o) { return outside(w, o.x + 40, o.y + 40, o.x + 760, o.y + 560); }
 
 // The energy the scene can trade: kinetic plus the potential of falling
 // 600 px (the walls' height). Growth is measured against it, so that it does
@@ -64,14 +50,6 @@ Outcome finish(bool pass, std::string figure, const World& w) {
   return {pass && !lost, figure + fmt(", %.0f capped substeps", capped) + (lost ? " (time lost)" : "")};
 }
 
-// Runs `frames` frames and tracks what every criterion needs.
-struct Track {
-  bool finite = true;
-  double max_overlap = 0;   // px, deepest over the run (sampled each `every` frames)
-  double energy_growth = 0; // max (E - E0) / |E0|, step energy
-  double momentum_drift = 0;
-  int outside = 0;          // max count of bodies outside the walls
-};
 // Tests only (Mode::stop_when_lost): a run of `frames` frames can stop once
 // more than 1 % of its substeps are capped, since finish() then finds the
 // same failure.
@@ -79,7 +57,8 @@ bool lost(const Mode& m, const World& w, int frames) {
   return m.stop_when_lost && static_cast<double>(w.ccd.stats.capped_substeps) > 0.01 * frames * w.params.substeps;
 }
 
-Track run(const Mode& m, World& w, int frames, bool with_walls, Vector wall_offset = {}, int every = 1) {
+Track run(const Mode& m, World& w, int frames, bool with_walls, Vector wall_offset, int every,
+          const std::function<void(const World&)>& each) {
   Track t;
   const double E0 = step_energy(w);
   const double play = energy_in_play(w);
@@ -89,6 +68,7 @@ Track run(const Mode& m, World& w, int frames, bool with_walls, Vector wall_offs
   for (int f = 1; f <= frames; ++f) {
     Game::step(w);
     if (lost(m, w, frames)) break;
+    if (each) each(w);
     if (f % every != 0 && f != frames) continue;
     if (!all_finite(w)) {
       t.finite = false;
@@ -102,11 +82,16 @@ Track run(const Mode& m, World& w, int frames, bool with_walls, Vector wall_offs
   return t;
 }
 
-constexpr double max_sink = 1.0;          // px
-constexpr double energy_tolerance = 1e-9; // relative: rounding, not growth
-constexpr double momentum_tolerance = 1e-12;
-
 Outcome nan_outcome() { return {false, "NaN/inf"}; }
+
+}  // namespace criteria
+
+namespace {
+
+using namespace criteria;
+
+constexpr double g = 0.001;  // px/ms²: a 500 px fall takes one second
+constexpr Vector down{0, g};
 
 // ---- mass ratios -----------------------------------------------------------
 
