@@ -9,6 +9,7 @@
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include <thread>
 
 #include "app/cli.hpp"
 #include "app/headless.hpp"
@@ -86,8 +87,15 @@ BOOST_AUTO_TEST_CASE(a_device_is_read_within_the_size_limit) {
   TempDir d;
   const auto log = d.file("z.log", "# scene: /dev/zero\ntick,kind,key,x,y,button\n5,end,0,0,0,0\n");
   expect_bad({"--headless", "--replay", log}, "/dev/zero: cannot read the scene file: larger than 64 MB");
-  // A pipe, as a file of known size, reads whole.
   BOOST_TEST(read_input_file("/dev/null", "scene file").empty());
+  // A pipe (no size either) reads whole, up to its end.
+  const std::string fifo = (d.path / "scene.fifo").string();
+  BOOST_TEST_REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  const std::string text = scene_json(R"("walls": false)", R"({"pos": [1, 2], "size": [3, 4], "mass": 5})");
+  std::thread writer([&] { std::ofstream(fifo) << text; });
+  const std::string got = read_input_file(fifo, "scene file");
+  writer.join();
+  BOOST_TEST(got == text);
 }
 
 // 40 000 blocks on one spot (8 * 10^8 pairs) aborted with bad_alloc; a grid
