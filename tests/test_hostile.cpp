@@ -149,6 +149,14 @@ BOOST_AUTO_TEST_CASE(control_characters_in_names_are_escaped) {
   BOOST_TEST(!has(list.out, "\x1b"));
 }
 
+// An error line quotes what a file gave it (a log's scene name): escaped
+// too, and one line.
+BOOST_AUTO_TEST_CASE(control_characters_in_error_lines_are_escaped) {
+  TempDir d;
+  const auto log = d.file("e.log", "# scene: x\x1b[2Jy\ntick,kind,key,x,y,button\n5,end,0,0,0,0\n");
+  expect_bad({"--headless", "--replay", log}, "unknown scene 'x\\x1b[2Jy'");
+}
+
 // The parser stopped at a NUL: what followed was accepted unread.
 BOOST_AUTO_TEST_CASE(a_nul_byte_is_refused) {
   using namespace std::string_literals;

@@ -316,7 +316,7 @@ int prepare_logs(Options& o, std::optional<InputLog>& log, const std::string& wh
     try {
       log = read_input_log(o.replay);
     } catch (const InputLogError& e) {
-      err << "game: " << e.what() << "\n";
+      err << "game: " << Headless::printable(e.what()) << "\n";
       return 2;
     }
     if (!o.scene_given && !log->scene.empty()) o.scene = log->scene;
@@ -502,7 +502,7 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err,
   try {
     o = parse(args);
   } catch (const UsageError& e) {
-    err << "game: " << e.what() << "\n";
+    err << "game: " << Headless::printable(e.what()) << "\n";
     return 2;
   }
   if (o.help) {
@@ -530,9 +530,9 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err,
     bodies = expand(spec, scene_source(o.scene));
     // Legitimate, but easy to write by mistake in a file: one line.
     if (!find_builtin(o.scene))
-      if (const std::string w = overlap_warning(spec, bodies, o.scene); !w.empty()) err << w << "\n";
+      if (const std::string w = overlap_warning(spec, bodies, o.scene); !w.empty()) err << Headless::printable(w) << "\n";
   } catch (const SceneError& e) {
-    err << "game: " << e.what() << "\n";
+    err << "game: " << Headless::printable(e.what()) << "\n";
     return 2;
   }
   if (o.print_scene) {
@@ -577,16 +577,16 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err,
     }
     return headless_run(spec, bodies, o, rec, why, out, err);
   } catch (const UsageError& e) {
-    err << "game: " << e.what() << "\n";
+    err << "game: " << Headless::printable(e.what()) << "\n";
     return 2;
   } catch (const SceneError& e) {
-    err << "game: " << e.what() << "\n";
+    err << "game: " << Headless::printable(e.what()) << "\n";
     return 2;
   } catch (const WriteError& e) {
-    err << "game: " << e.what() << "\n";
+    err << "game: " << Headless::printable(e.what()) << "\n";
     return exit_write_failed;
   } catch (const std::exception& e) {
-    err << "game: " << e.what() << "\n";
+    err << "game: " << Headless::printable(e.what()) << "\n";
     return 1;
   }
 }
