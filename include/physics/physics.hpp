@@ -96,7 +96,7 @@ inline constexpr double fixed_mass = std::numeric_limits<double>::infinity();  /
 struct BodyDef {
   Vec2 position{};            // px, top-left corner
   Vec2 size{10.0, 10.0};      // px, whole numbers in [1, 1048576]
-  double mass = 1.0;          // > 0, or fixed_mass
+  double mass = 1.0;          // in [1e-300, 1e150], or fixed_mass
   Vec2 velocity{};            // px/ms
   Vec2 force{};               // applied on the first step only, as a scene's "force"
   double restitution = 1.0;   // in [0, 1]; a pair uses the smaller
@@ -142,7 +142,7 @@ Vec2 force(BodyId body);                   // the pending sum of forces for the 
 void apply_force(BodyId body, Vec2 force);  // added to it; the next step turns it into velocity, then clears it
 void apply_impulse(BodyId body, Vec2 impulse);  // velocity += impulse / mass now; nothing for fixed bodies
 double mass(BodyId body);                 // fixed_mass for a fixed body
-void set_mass(BodyId body, double mass);  // > 0 or fixed_mass
+void set_mass(BodyId body, double mass);  // in [1e-300, 1e150] or fixed_mass
 double restitution(BodyId body);                        // in [0, 1]
 void set_restitution(BodyId body, double restitution);  // in [0, 1]; a pair uses the smaller
 double friction(BodyId body);                     // Coulomb's coefficient

@@ -36,7 +36,12 @@ void check_size(Vec2 s) {
   require(whole(s.x) && whole(s.y), "a body's size", "whole pixels in [1, 1048576]", s);
 }
 
-void check_mass(double m) { require(m > 0.0, "a body's mass", "> 0 or fixed_mass (infinity)", m); }
+// The scene files' bounds (engine/limits.hpp): beyond them an energy or an
+// impulse overflows to inf.
+void check_mass(double m) {
+  require((m >= min_mass && m <= max_mass) || m == fixed_mass, "a body's mass", "in [1e-300, 1e150] or fixed_mass",
+          m);
+}
 
 void check_restitution(double e) { require(e >= 0.0 && e <= 1.0, "a body's restitution", "in [0, 1]", e); }
 

@@ -11,6 +11,7 @@
 #include <limits>
 #include <optional>
 #include <sstream>
+#include <tuple>
 
 #include "scene/builtin_scenes.hpp"
 #include "app/course_world.hpp"
@@ -189,9 +190,9 @@ std::filesystem::path scenes_folder() {
 void list_scenes(std::ostream& out) {
   out << "built-in scenes (--scene NAME):\n";
   for (const SceneSpec& s : builtin_scenes()) {
-    std::string name = s.name;
+    std::string name = Headless::printable(s.name);
     name.resize(std::max<std::size_t>(name.size(), 10), ' ');
-    out << "  " << name << s.description << "\n";
+    out << "  " << name << Headless::printable(s.description) << "\n";
   }
   const std::filesystem::path dir = scenes_folder();
   if (dir.empty()) {
@@ -210,9 +211,9 @@ void list_scenes(std::ostream& out) {
     std::string path = f.string(), line;
     try {
       const SceneSpec s = read_scene_file(path);
-      line = (s.game.kind.empty() ? "" : "[" + s.game.kind + "] ") + s.description;
+      line = (s.game.kind.empty() ? "" : "[" + s.game.kind + "] ") + Headless::printable(s.description);
     } catch (const SceneError& e) {
-      line = std::string("(does not read: ") + e.what() + ")";
+      line = std::string("(does not read: ") + Headless::printable(e.what()) + ")";
     }
     path.resize(width, ' ');
     out << "  " << path << line << "\n";
@@ -264,7 +265,7 @@ int finish_files(const World& w, const SceneSpec& scene, std::span<const BlockRo
   if (!o.screenshot.empty() &&
       !Offscreen::screenshot(w, scene.width, scene.height, o.screenshot, scene.style, roles)) {
     err << "game: --screenshot: cannot write " << o.screenshot << "\n";
-    return 1;
+    return exit_write_failed;
   }
   return 0;
 }
@@ -334,7 +335,7 @@ int prepare_logs(Options& o, std::optional<InputLog>& log, const std::string& wh
     try {
       log = read_input_log(o.replay);
     } catch (const InputLogError& e) {
-      err << "game: " << e.what() << "\n";
+      err << "game: " << Headless::printable(e.what()) << "\n";
       return 2;
     }
     if (!o.scene_given && !log->scene.empty()) o.scene = log->scene;
@@ -360,7 +361,8 @@ std::string usage() {
        "  Runs a scene of the 2D physics engine in a window (the testbed; H lists its keys,\n"
        "  Esc quits), or headless with a summary when --headless is given or there is no display.\n"
        "  Values given here override the scene's. Bad input exits with code 2; a non-finite\n"
-       "  position or velocity stops the run with code 3 (also an escape, with --strict).\n\n"
+       "  position or velocity stops the run with code 3 (also an escape, with --strict); an\n"
+       "  output file that fails while written (a full disk) exits with code 4 after the run.\n\n"
     << descriptions()
     << "\nValues may follow the flag or an '=' (--gravity=0,-0.001 for a value starting with '-').\n"
        "\nGames (scene files with a \"game\" key, played in the window; docs/games.md):\n"
@@ -465,26 +467,27 @@ SceneSpec resolve_scene(const std::string& name) {
 
 Recorder::Recorder(const Options& o)
     : dump_path_(o.dump), trace_path_(o.trace), events_path_(o.events), save_path_(o.save) {
-  const auto open = [](std::ofstream& f, const std::string& path, const char* flag) {
+  const auto open = [](std::ofstream& f, const std::string& path, const char* flag, void (*header)(std::ostream&)) {
     if (path.empty()) return;
     f.open(path, std::ios::binary | std::ios::trunc);
     if (!f) throw UsageError(std::string(flag) + ": cannot write " + path + ": " + std::strerror(errno));
     f.precision(17);
+    if (!header) return;
+    errno = 0;
+    header(f);
+    if (!f.flush())
+      throw UsageError(std::string(flag) + ": cannot write " + path + ": " +
+                       (errno ? std::strerror(errno) : "write error"));
   };
-  open(dump_, dump_path_, "--dump");
-  open(trace_, trace_path_, "--trace");
-  open(events_, events_path_, "--events");
-  open(save_, save_path_, "--save");
+  open(dump_, dump_path_, "--dump", Dump::write_header);
+  open(trace_, trace_path_, "--trace", Dump::write_trace_header);
+  open(events_, events_path_, "--events", Dump::write_events_header);
+  open(save_, save_path_, "--save", nullptr);
 }
 
 void Recorder::start(World& w) {
-  if (events_.is_open()) {
-    w.enable_events();
-    Dump::write_events_header(events_);
-  }
-  if (!trace_.is_open()) return;
-  Dump::write_trace_header(trace_);
-  Dump::write_trace_rows(trace_, w);
+  if (events_.is_open()) w.enable_events();
+  if (trace_.is_open()) Dump::write_trace_rows(trace_, w);
 }
 
 void Recorder::after_step(const World& w) {
@@ -507,13 +510,16 @@ void Recorder::abandon() {
 }
 
 void Recorder::finish(const World& w, const SceneSpec& scene, std::span<const BlockRole> roles) {
-  if (dump_.is_open()) Dump::write_state(dump_, w);
+  errno = 0;
+  if (dump_.is_open()) Dump::write_rows(dump_, w);
   if (save_.is_open()) save_ << to_json(Save::scene_of(w, scene, roles, save_path_));
-  for (auto [file, path] : {std::pair{&dump_, &dump_path_}, {&trace_, &trace_path_}, {&events_, &events_path_},
-                            {&save_, &save_path_}}) {
+  for (auto [file, path, flag] : {std::tuple{&dump_, &dump_path_, "--dump"}, {&trace_, &trace_path_, "--trace"},
+                                  {&events_, &events_path_, "--events"}, {&save_, &save_path_, "--save"}}) {
     if (!file->is_open()) continue;
     file->flush();
-    if (!*file) throw std::runtime_error("cannot write " + *path);
+    if (!*file)
+      throw WriteError(std::string(flag) + ": cannot write " + *path + ": " +
+                       (errno ? std::strerror(errno) : "write error"));
   }
 }
 
@@ -522,7 +528,7 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err,
   try {
     o = parse(args);
   } catch (const UsageError& e) {
-    err << "game: " << e.what() << "\n";
+    err << "game: " << Headless::printable(e.what()) << "\n";
     return 2;
   }
   if (o.help) {
@@ -550,9 +556,9 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err,
     bodies = expand(spec, scene_source(o.scene));
     // Legitimate, but easy to write by mistake in a file: one line.
     if (!find_builtin(o.scene))
-      if (const std::string w = overlap_warning(spec, bodies, o.scene); !w.empty()) err << w << "\n";
+      if (const std::string w = overlap_warning(spec, bodies, o.scene); !w.empty()) err << Headless::printable(w) << "\n";
   } catch (const SceneError& e) {
-    err << "game: " << e.what() << "\n";
+    err << "game: " << Headless::printable(e.what()) << "\n";
     return 2;
   }
   if (o.print_scene) {
@@ -597,13 +603,16 @@ int run(std::span<const std::string> args, std::ostream& out, std::ostream& err,
     }
     return headless_run(spec, bodies, o, rec, why, out, err);
   } catch (const UsageError& e) {
-    err << "game: " << e.what() << "\n";
+    err << "game: " << Headless::printable(e.what()) << "\n";
     return 2;
   } catch (const SceneError& e) {
-    err << "game: " << e.what() << "\n";
+    err << "game: " << Headless::printable(e.what()) << "\n";
     return 2;
+  } catch (const WriteError& e) {
+    err << "game: " << Headless::printable(e.what()) << "\n";
+    return exit_write_failed;
   } catch (const std::exception& e) {
-    err << "game: " << e.what() << "\n";
+    err << "game: " << Headless::printable(e.what()) << "\n";
     return 1;
   }
 }

@@ -3,9 +3,12 @@
 // the window front end in; the tests pass none, and so run every headless
 // path and every bad-input case in-process, without SDL linked at all.
 //
-// Exit codes: 0 done, 1 failed at run time (e.g. a disk full while writing),
-// 2 bad input (flag, value, scene name or scene file), with one line on
-// stderr naming the flag, file, key or line, and the problem.
+// Exit codes: 0 done, 2 bad input (flag, value, scene name or scene file, an
+// output that cannot be opened or written before the run), with one line on
+// stderr naming the flag, file, key or line, and the problem; 3 a bad state
+// (non-finite, or an escape with --strict); 4 an output file that could not
+// be written at the end (a disk full: exit_write_failed); 1 any other
+// failure at run time.
 #pragma once
 
 #include <cstdint>
@@ -25,6 +28,7 @@
 namespace physics::Cli {
 
 inline constexpr std::int64_t headless_frames = 600;
+inline constexpr int exit_write_failed = 4;
 inline constexpr std::int64_t screenshot_frames = 60;  // --screenshot without --frames
 
 struct Options {
@@ -44,6 +48,11 @@ struct Options {
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+// An output that failed while being written ("--save: cannot write F: No
+// space left on device"): exit code exit_write_failed.
+struct WriteError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 // What builds the worlds of the run: --course's course functions, or make_world.
 WorldMaker world_maker(const Options& o);
@@ -61,15 +70,17 @@ std::string usage();
 SceneSpec resolve_scene(const std::string& name_or_file);
 
 // --dump, --trace, --events and --save files, opened before the run so that
-// a bad path is bad input (exit 2) rather than a lost run.
+// a bad path is bad input (exit 2) rather than a lost run; the CSV files'
+// headers are written and flushed then too, so that a device that takes no
+// data (/dev/full) is found before the run.
 class Recorder {
  public:
   explicit Recorder(const Options& o);  // throws UsageError
-  void start(World& w);             // trace: header and frame 0; events: enabled in w, header
+  void start(World& w);             // trace: frame 0; events: enabled in w
   void after_step(const World& w);  // trace: this frame; events: this step's
   void restart(World& w);           // a new world (testbed reset): its frame 0, its events
   // dump: the final state; save: the world as the scene `scene` (it was made
-  // from, after overrides) continued. Throws std::runtime_error on I/O error.
+  // from, after overrides) continued. Throws WriteError on I/O error.
   void finish(const World& w, const SceneSpec& scene, std::span<const BlockRole> roles);
   void abandon();                   // dump and save: removed, the run ended on a non-finite state
 

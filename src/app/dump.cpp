@@ -25,7 +25,13 @@ std::string number(double v) {
 }
 
 void write_state(std::ostream& out, const World& w) {
-  out << header << '\n';
+  write_header(out);
+  write_rows(out, w);
+}
+
+void write_header(std::ostream& out) { out << header << '\n'; }
+
+void write_rows(std::ostream& out, const World& w) {
   for (std::size_t e = 0; e < w.components.size(); ++e)
     if (w.alive(static_cast<EntityId>(e))) row(out, w, e);
 }

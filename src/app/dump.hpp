@@ -21,6 +21,8 @@ inline constexpr const char* trace_header = "frame,id,x,y,w,h,vx,vy,mass";
 std::string number(double v);
 
 void write_state(std::ostream& out, const World& w);        // header + rows
+void write_header(std::ostream& out);
+void write_rows(std::ostream& out, const World& w);
 void write_trace_header(std::ostream& out);
 void write_trace_rows(std::ostream& out, const World& w);   // rows of w.frame
 

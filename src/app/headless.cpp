@@ -71,7 +71,7 @@ void print_summary(std::ostream& out, const World& w, const Summary& s, const st
     SystemSet physics_systems = w.declared();
     physics_systems.draw = false;
     const std::string names = physics_systems.to_string();
-    o << "scene:           " << scene << " (systems: " << (names.empty() ? "none" : names) << ")\n";
+    o << "scene:           " << printable(scene) << " (systems: " << (names.empty() ? "none" : names) << ")\n";
   }
   o << "frames:          " << s.frames << " (dt = " << w.params.dt << " ms, " << w.params.substeps << " substep(s)"
     << (w.params.integrator == Integrator::exact ? ", exact integrator" : "") << ")\n"
@@ -137,6 +137,29 @@ std::string advice(const World& w) {
            "pressed ones are pushed into or through walls by the course solver (--solver stable stops that)";
   if (!how.empty()) a += std::string(a.empty() ? "" : "; ") + "bodies left the world: " + how;
   return a.empty() ? a : a + "; see docs/numerics.md";
+}
+
+std::string printable(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  const auto hex = [&](unsigned char c) {
+    static constexpr char digits[] = "0123456789abcdef";
+    out += {'\\', 'x', digits[c >> 4], digits[c & 15]};
+  };
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    const auto next = i + 1 < text.size() ? static_cast<unsigned char>(text[i + 1]) : 0;
+    if (c < 0x20 || c == 0x7f) {
+      hex(c);
+    } else if (c == 0xc2 && next >= 0x80 && next <= 0x9f) {  // U+0080-U+009F, the C1 controls (CSI is U+009B)
+      hex(c);
+      hex(next);
+      ++i;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out;
 }
 
 std::string hud_line(const World& w, double fps) {

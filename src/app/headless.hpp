@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <iosfwd>
 #include <string>
+#include <string_view>
 
 #include "course/game.hpp"
 
@@ -40,6 +41,12 @@ std::string escape_line(const World& w);
 std::string advice(const World& w);
 // What --solver auto used over the run, for the summary.
 std::string auto_line(const World& w);
+
+// `text` (a scene's name or description, from a file) as it may go to a
+// terminal: control characters (C0, DEL, C1 in UTF-8) as \xNN, so that an
+// ANSI escape or a newline in a name cannot recolour the terminal nor forge
+// a summary line; other bytes (UTF-8 text) as they are.
+std::string printable(std::string_view text);
 
 // The HUD line: fps, physics ms/step, body count, kinetic energy, momentum.
 std::string hud_line(const World& w, double fps);

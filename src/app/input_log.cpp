@@ -7,9 +7,11 @@
 #include <fstream>
 #include <optional>
 #include <ostream>
+#include <sstream>
 #include <string_view>
 
 #include "engine/limits.hpp"
+#include "scene/scene_json.hpp"
 
 namespace physics {
 
@@ -85,6 +87,7 @@ InputLog parse_input_log(std::istream& in, const std::string& name) {
     ++n;
     std::string_view line = text;
     if (line.ends_with('\r')) line.remove_suffix(1);  // written on Windows
+    if (line.find('\0') != std::string_view::npos) LineReader(name, n).fail("a NUL byte: an input log is text");
     if (line.starts_with(scene_prefix)) log.scene = std::string(line.substr(scene_prefix.size()));
     if (line.empty() || line.starts_with('#')) continue;
     const LineReader r(name, n);
@@ -97,8 +100,8 @@ InputLog parse_input_log(std::istream& in, const std::string& name) {
     const std::vector<std::string_view> f = split(line);
     if (f.size() != 6) r.fail("expected 6 fields tick,kind,key,x,y,button (got " + std::to_string(f.size()) + ")");
     const auto tick = r.integer<std::int64_t>(f[0], "tick");
-    if (tick < 0 || tick > max_frames)
-      r.fail("tick must be in [0, " + std::to_string(max_frames) + "] (got " + std::to_string(tick) + ")");
+    if (tick < 0 || tick > max_log_ticks)
+      r.fail("tick must be in [0, " + std::to_string(max_log_ticks) + "] (got " + std::to_string(tick) + ")");
     const std::int64_t last = log.events.empty() ? 0 : log.events.back().tick;
     if (tick < last) r.fail("tick " + std::to_string(tick) + " is before the previous line's " + std::to_string(last));
     InputEvent e{Kind::quit};
@@ -125,8 +128,12 @@ InputLog parse_input_log(std::istream& in, const std::string& name) {
 }
 
 InputLog read_input_log(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputLogError(path + ": cannot read the input log: " + std::strerror(errno));
+  std::istringstream in;
+  try {
+    in.str(read_input_file(path, "input log"));  // 64 MB at most, a device or a pipe too
+  } catch (const SceneError& e) {
+    throw InputLogError(e.what());
+  }
   return parse_input_log(in, path);
 }
 

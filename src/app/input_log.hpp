@@ -13,7 +13,8 @@
 //   812,end,0,0,0,0
 //
 // kind: key, key_up, mouse_down, mouse_up, mouse_move, quit; the last line is
-// `end`, the tick the recording stopped at. Ticks never decrease.
+// `end`, the tick the recording stopped at. Ticks never decrease, and are at
+// most max_log_ticks.
 #pragma once
 
 #include <cstdint>
@@ -25,6 +26,12 @@
 #include "app/testbed.hpp"
 
 namespace physics {
+
+// The largest tick a log may hold: 10^7 steps, 46 hours of a window at
+// 60 Hz, which a headless replay of a small scene runs in about a minute (a
+// log ending at tick 2^53 ran for ever). A longer session is recorded in
+// parts.
+inline constexpr std::int64_t max_log_ticks = 10'000'000;
 
 struct LoggedEvent {
   std::int64_t tick = 0;  // Testbed::ticks() when the event was handled

@@ -54,7 +54,7 @@ int run_window(Cli::Session& s) {
   const SceneSpec& first = tb.scene();
   std::optional<Window> win;
   try {
-    win.emplace(first.width, first.height, "physics - " + first.name + " (H: keys)");
+    win.emplace(first.width, first.height, "physics - " + Headless::printable(first.name) + " (H: keys)");
   } catch (const WindowError& e) {
     throw Cli::NoWindow(e.what());
   }
@@ -77,7 +77,11 @@ int run_window(Cli::Session& s) {
   // is the one worth replaying.
   if (!o.record.empty()) {
     log.end = tb.ticks();
-    write_input_log(o.record, log);
+    try {
+      write_input_log(o.record, log);
+    } catch (const std::runtime_error& e) {
+      throw Cli::WriteError(std::string("--record: ") + e.what());  // exit code 4, as every output
+    }
   }
   // Nothing is written as if it were fine after a non-finite state (exit 3,
   // as headless).

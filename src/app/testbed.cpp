@@ -34,6 +34,20 @@ namespace {
 
 constexpr Color spawn_color{255, 140, 0, 255};
 
+// A spawned block's cell (Testbed::room_for_spawn): its corner in units of
+// its size (inside the world, far within int32), and the cell as one key.
+std::pair<std::int64_t, std::int64_t> spawn_cell_xy(Vector pos) {
+  return {static_cast<std::int64_t>(std::floor(pos.x / Testbed::spawn_size)),
+          static_cast<std::int64_t>(std::floor(pos.y / Testbed::spawn_size))};
+}
+std::uint64_t spawn_cell_key(std::int64_t x, std::int64_t y) {
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(x)) << 32) | static_cast<std::uint32_t>(y);
+}
+std::uint64_t spawn_cell(Vector pos) {
+  const auto [x, y] = spawn_cell_xy(pos);
+  return spawn_cell_key(x, y);
+}
+
 SceneSpec with_overrides(SceneSpec s, const Overrides& o) {
   apply(s, o);
   return s;
@@ -109,6 +123,7 @@ void Testbed::rebuild() {
 
 // What a new world starts without: last step's contacts, time owed, a drag.
 void Testbed::restarted() {
+  spawn_index_.reset();  // another world
   record_contacts();
   last_contacts_.clear();
   last_regions_.clear();
@@ -156,6 +171,7 @@ void Testbed::step() {
   if (world_->health.non_finite) return;
   if (level_ && outcome_ == Level::Outcome::playing) level_->before_step(game_view_->id());
   Game::step(*world_);
+  spawn_index_.reset();  // the bodies have moved
   ++ticks_;
   after_step();
   if (level_ && outcome_ == Level::Outcome::playing) after_level_step();
@@ -230,23 +246,50 @@ bool Testbed::spawn(Vector centre, Vector v) {
     say(s.walls ? "no room there: a block cannot overlap the walls" : "no room there: outside the world", true);
     return false;
   }
-  // Nor into a body (a tower would explode): one scan per click, with the
-  // sheet's test (mdiff, has_origin), so a block is refused exactly where
-  // Collision would see it overlap.
-  const Components& c = world_->components;
-  for (std::size_t e = 0; e < c.size(); ++e) {
-    const auto [s_pos, s_box] = Rect::mdiff(pos, Rect{spawn_size, spawn_size}, c.position[e], c.box[e]);
-    if (Rect::has_origin(s_pos, s_box)) {
-      say("no room there: a block cannot overlap another body", true);
-      return false;
-    }
+  if (!room_for_spawn(pos)) {
+    say("no room there: a block cannot overlap another body", true);
+    return false;
   }
   const auto b = Block::make(*world_, pos.x, pos.y, spawn_size, spawn_size, spawn_color, spawn_mass,
                              with_overrides(s, overrides_).restitution);
   world_->components.velocity[b.id] = v;
   roles_.resize(world_->components.size());
   message_.clear();
+  ++spawn_index_->spawned;
+  spawn_index_->cells[spawn_cell(pos)].push_back(b.id);
   return true;
+}
+
+// Nor into a body (a tower would explode), with the sheet's test (mdiff,
+// has_origin) on every candidate, so a block is refused exactly where
+// Collision would see it overlap. The candidates: the bodies of the grid
+// whose box meets the block's, and the blocks spawned since in the 3x3
+// cells around it (two spawn_size squares overlap only within one cell).
+bool Testbed::room_for_spawn(Vector pos) {
+  const Components& c = world_->components;
+  // Another body added since (a game's launch): the index is rebuilt.
+  if (spawn_index_ && spawn_index_->indexed + spawn_index_->spawned != c.size()) spawn_index_.reset();
+  if (!spawn_index_) {
+    spawn_index_.emplace();
+    std::vector<FloatBox> boxes;
+    boxes.reserve(c.size());
+    for (std::size_t e = 0; e < c.size(); ++e) boxes.push_back(FloatBox::around(c.position[e], c.box[e], 0.0));
+    spawn_index_->grid.index(boxes);
+    spawn_index_->indexed = c.size();
+  }
+  const auto overlaps = [&](std::size_t e) {
+    const auto [s_pos, s_box] = Rect::mdiff(pos, Rect{spawn_size, spawn_size}, c.position[e], c.box[e]);
+    return Rect::has_origin(s_pos, s_box);
+  };
+  bool hit = false;
+  spawn_index_->grid.query(FloatBox::around(pos, Rect{spawn_size, spawn_size}, 0.0),
+                           [&](std::uint32_t e) { hit = hit || overlaps(e); });
+  const auto [cx, cy] = spawn_cell_xy(pos);
+  for (std::int64_t dx = -1; dx <= 1 && !hit; ++dx)
+    for (std::int64_t dy = -1; dy <= 1 && !hit; ++dy)
+      if (const auto it = spawn_index_->cells.find(spawn_cell_key(cx + dx, cy + dy)); it != spawn_index_->cells.end())
+        hit = std::any_of(it->second.begin(), it->second.end(), overlaps);
+  return !hit;
 }
 
 Testbed::Action Testbed::handle(const InputEvent& e) {

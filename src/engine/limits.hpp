@@ -21,6 +21,13 @@ inline constexpr int max_substeps = 1000;
 inline constexpr int max_iterations = 1000;
 inline constexpr double max_motion = 1e6;  // |velocity|, |force|, |impulse|, |gravity| per axis
 inline constexpr double max_dt = 1e6;      // ms
+// Masses: within them no figure a run prints overflows (docs/reliability.md,
+// "No non-finite figure"). A speed stays below about 1e28 px/ms (gravity and
+// dt at their limits for max_frames frames), so m v^2 summed over max_bodies
+// stays below 1e213; an impulse, a momentum, below 1e185; 1 / min_mass is
+// finite (a mass of 1e-320 made the inverse mass inf and the impulses NaN).
+inline constexpr double max_mass = 1e150;
+inline constexpr double min_mass = 1e-300;
 // The smallest dt: below it, impulse/dt (the first frame's force) and the
 // Forces' divisions overflow or lose all precision (--dt 1e-320 gave NaN).
 inline constexpr double min_dt = 1e-6;     // ms

@@ -63,6 +63,9 @@ struct Checker {
   }
   void mass(double m, At at) const {
     if (std::isnan(m) || m <= 0.0 || m == -infinity) fail(at, "must be > 0 or \"inf\" (got " + num(m) + ")");
+    if (m != infinity && (m < min_mass || m > max_mass))
+      fail(at, "must be in [" + num(min_mass) + ", " + num(max_mass) + "] or \"inf\" (got " + num(m) +
+                   "): beyond, energies and impulses overflow");
   }
   void friction(double mu, At at) const {
     if (!(mu >= 0.0 && mu <= max_friction)) fail(at, "must be in [0, " + num(max_friction) + "] (got " + num(mu) + ")");

@@ -19,6 +19,18 @@ namespace {
 
 using namespace scene_check;
 
+// How far from the origin a saved state's block may lie: 2^50 px, where a
+// double still resolves a quarter pixel; a body at the motion limit (10^6
+// px/ms) crosses it after 7 * 10^7 frames of 16 ms.
+constexpr double max_saved_coordinate = 0x1p50;
+
+// The pairs of bodies a scene may start with touching or overlapping: a
+// grid of touching blocks has 4 a body (8 neighbours each), a gas fewer;
+// any scene may have 2^20 (about 250 MB under the stable solver). 40 000
+// blocks on one spot have 8 * 10^8.
+constexpr std::int64_t pairs_per_body = 8;
+constexpr std::int64_t min_pair_limit = std::int64_t{1} << 20;
+
 // The first frame's force, force + impulse/dt (how an impulse reaches
 // Forces), and the velocity change it makes, force·dt/m + impulse/m, within
 // the motion limit (a mass of 1e-300 turned a force of 1e6 into inf; the
@@ -90,6 +102,8 @@ void check_random(const Checker& k, const RandomSpec& r, const std::string& p) {
   k.range(r.mass, At{p, ".mass"});
   if (r.mass.drawn) {
     if (!(r.mass.lo > 0.0)) k.fail(At{p, ".mass"}, "range must be > 0 (got min " + num(r.mass.lo) + ")");
+    k.mass(r.mass.lo, At{p, ".mass"});
+    k.mass(r.mass.hi, At{p, ".mass"});
   } else if (r.mass.lo != infinity) {
     k.mass(r.mass.lo, At{p, ".mass"});
   }
@@ -130,14 +144,22 @@ std::string body_path(const SceneSpec& s, const Body& b) {
 // (touching a wall is fine: touching boxes do not collide). A position far
 // outside can come from a finite but huge step or origin, or be NaN (an
 // overflow): both fail here. The message is built only for the failing body.
+// A saved world (--save, key "state") is loaded as it was: its bodies may
+// overlap a wall or have left the world, which a scene's start may not; but
+// only as far as a run takes them (max_saved_coordinate): a hand-written
+// "state": {} does not let a block start at (1e300, -1e300).
 void check_placement(const Checker& k, const SceneSpec& s, const std::vector<Body>& bodies) {
   const double t = s.walls ? wall_thickness : 0.0;
   const double x0 = t, y0 = t, x1 = s.width - t, y1 = s.height - t;
   for (const Body& b : bodies)
     if (!std::isfinite(b.pos.x) || !std::isfinite(b.pos.y)) k.finite(b.pos, At{body_path(s, b) + " position"});
-  // A saved world (--save) is loaded as it was: its bodies may overlap a
-  // wall or have left the world, which a scene's start may not.
-  if (s.state) return;
+  if (s.state) {
+    for (const Body& b : bodies)
+      if (std::abs(b.pos.x) > max_saved_coordinate || std::abs(b.pos.y) > max_saved_coordinate)
+        k.fail(body_path(s, b), "block at (" + num(b.pos.x) + ", " + num(b.pos.y) + ") in a saved state: a coordinate "
+                                "beyond ±" + num(max_saved_coordinate) + " px, farther than a run takes a body");
+    return;
+  }
   for (const Body& b : bodies) {
     const double l = b.pos.x, top = b.pos.y, r = b.pos.x + b.width, bot = b.pos.y + b.height;
     const bool outside = l < 0 || top < 0 || r > s.width || bot > s.height;
@@ -154,6 +176,38 @@ void check_placement(const Checker& k, const SceneSpec& s, const std::vector<Bod
   }
 }
 
+
+// Pairs of bodies whose boxes touch or overlap at the start (closed boxes,
+// two fixed bodies left out: the pairs the broad phase lists), counted up to
+// limit + 1: each body's neighbours in the broad phase's grid (its cells
+// only, O(n) memory), where building the pairs took 6.4 GB for 40 000 bodies
+// on one spot, and aborted.
+std::int64_t touching_pairs(const std::vector<Body>& bodies, std::int64_t limit) {
+  std::vector<FloatBox> boxes;
+  boxes.reserve(bodies.size());
+  for (const Body& b : bodies) boxes.push_back(FloatBox::outward(b.pos.x, b.pos.y, b.pos.x + b.width, b.pos.y + b.height));
+  UniformGrid grid;
+  grid.index(boxes);
+  std::int64_t n = 0;
+  for (std::uint32_t i = 0; i < boxes.size() && n <= limit; ++i)
+    grid.query(boxes[i], [&](std::uint32_t j) {
+      if (j > i && overlap(boxes[i], boxes[j]) && (std::isfinite(bodies[i].mass) || std::isfinite(bodies[j].mass))) ++n;
+    });
+  return n;
+}
+
+// A scene whose bodies lie on one another beyond max_start_pairs is refused
+// with the numbers, rather than aborting in the broad phase or the solver
+// (about 250 bytes a pair under the stable solver, measured).
+void check_pairs(const Checker& k, const std::vector<Body>& bodies) {
+  const std::int64_t limit =
+      std::max(pairs_per_body * static_cast<std::int64_t>(bodies.size()), min_pair_limit);
+  if (touching_pairs(bodies, limit) > limit)
+    k.fail("blocks", "more than " + std::to_string(limit) + " pairs of bodies touch or overlap at the start (at most " +
+                         std::to_string(pairs_per_body) + " a body, or " + std::to_string(min_pair_limit) + ", for " +
+                         std::to_string(bodies.size()) + " bodies): bodies piled on one another, which no solver "
+                         "can hold");
+}
 
 void expand_random(const RandomSpec& r, const SceneSpec& s, std::size_t entry, std::vector<Body>& out) {
   const double world_e = s.restitution;
@@ -336,6 +390,7 @@ std::vector<Body> expand(const SceneSpec& s, const std::string& source) {
     if (const auto* r = std::get_if<RandomSpec>(&e)) expand_random(*r, s, i, out);
   }
   check_placement(Checker{source}, s, out);
+  check_pairs(Checker{source}, out);
   return out;
 }
 

@@ -213,6 +213,13 @@ TextPos line_column(std::string_view text, std::size_t position) {
 
 SceneSpec read_scene(std::string_view text, const std::string& source) {
   const Reader r(source);
+  // The parser stops at a NUL as at the end of the text: what follows it
+  // would be accepted unread.
+  if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos) {
+    const TextPos p = line_column(text, nul + 1);
+    throw SceneError(source + ":" + std::to_string(p.line) + ":" + std::to_string(p.column) +
+                     ": a NUL byte: a scene file is text");
+  }
   SceneSpec s;
   // The blocks are read as the parser completes each one. Their first error
   // is kept and raised after the checks that come before the blocks (syntax
@@ -280,31 +287,41 @@ SceneSpec parse_scene(std::string_view text, const std::string& source) {
   return s;
 }
 
-SceneSpec read_scene_file(const std::string& path) {
+std::string read_input_file(const std::string& path, const std::string& what) {
+  const std::string cannot = path + ": cannot read the " + what + ": ";
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
-  if (ec || !std::filesystem::exists(status))
-    throw SceneError(path + ": cannot read the scene file: no such file");
-  if (std::filesystem::is_directory(status)) throw SceneError(path + ": cannot read the scene file: it is a directory");
+  if (ec || !std::filesystem::exists(status)) throw SceneError(cannot + "no such file");
+  if (std::filesystem::is_directory(status)) throw SceneError(cannot + "it is a directory");
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw SceneError(path + ": cannot read the scene file: " + std::strerror(errno));
-  const auto size = std::filesystem::file_size(path, ec);
-  if (!ec && size > max_file_size)
-    throw SceneError(path + ": cannot read the scene file: larger than " + std::to_string(max_file_size >> 20) + " MB");
-  // Read at once into a string of the file's size (a stream, then a copy,
-  // doubled the work on a large scene); grown by the loop if it was not known.
-  std::string text(ec ? 0 : static_cast<std::size_t>(size), '\0');
+  if (!in) throw SceneError(cannot + std::strerror(errno));
+  const std::string too_large = cannot + "larger than " + std::to_string(max_file_size >> 20) + " MB";
+  auto size = std::filesystem::is_regular_file(status) ? std::filesystem::file_size(path, ec) : 0;
+  if (ec) size = 0;  // then read as a stream
+  if (size > max_file_size) throw SceneError(too_large);
+  // A regular file's size is known: read at once into a string of that size
+  // (a stream, then a copy, doubled the work on a large scene). Anything else
+  // (a device, a pipe, a file that grew) is read on in chunks, one byte past
+  // the limit at most: /dev/zero is refused at 64 MB, not after 2 GB.
+  std::string text(static_cast<std::size_t>(size), '\0');
   in.read(text.data(), static_cast<std::streamsize>(text.size()));
   text.resize(static_cast<std::size_t>(in.gcount()));
-  for (char buf[65536]; in && !in.eof();) {
+  for (char buf[65536]; in && !in.eof() && text.size() <= max_file_size;) {
     in.read(buf, sizeof buf);
     text.append(buf, static_cast<std::size_t>(in.gcount()));
   }
-  if (in.bad()) throw SceneError(path + ": cannot read the scene file: read error");
+  if (text.size() > max_file_size) throw SceneError(too_large);
+  if (in.bad()) throw SceneError(cannot + "read error");
+  return text;
+}
+
+SceneSpec read_scene_file(const std::string& path) {
+  const std::string text = read_input_file(path, "scene file");
   SceneSpec s = read_scene(text, path);
   // A game's next level is named relative to this file's folder; it must be
   // there now, not only once this level is won.
   if (!s.game.next.empty()) {
+    std::error_code ec;
     s.game.next_path = (std::filesystem::path(path).parent_path() / s.game.next).string();
     if (!std::filesystem::is_regular_file(s.game.next_path, ec))
       throw SceneError(path + ": game.next: no scene file " + s.game.next_path);

@@ -35,6 +35,12 @@ SceneSpec parse_scene(std::string_view text, const std::string& source);
 SceneSpec read_scene_file(const std::string& path);
 SceneSpec load_scene_file(const std::string& path);
 
+// The text of the file at `path`, whatever it is (a file, a device, a pipe),
+// at most 64 MB: more is refused, read no further than the limit. Throws
+// SceneError "path: cannot read the `what`: ..." (no such file, a directory,
+// larger than 64 MB, read error). Every input file is read with it.
+std::string read_input_file(const std::string& path, const std::string& what);
+
 // The scene as a scene file that parse_scene reads back to the same scene.
 std::string to_json(const SceneSpec& s);
 
