@@ -126,12 +126,14 @@ BOOST_AUTO_TEST_CASE(bad_values_throw_naming_the_value_and_change_nothing) {
     d.mass = m;
     BOOST_TEST(has(error_of([&] { create_body(f.world, d); }), "mass must be in [1e-300, 1e150]"), m);
   }
-  d.mass = 1e150;
-  BOOST_TEST(is_valid(create_body(f.world, d)));
   d = default_body_def();
   d.position = {std::nan(""), 0};
   BOOST_TEST(has(error_of([&] { create_body(f.world, d); }), "position must be finite"));
   BOOST_TEST(body_count(f.world) == 2u);
+  d = default_body_def();
+  d.mass = 1e150;  // the bound itself is a mass
+  BOOST_TEST(is_valid(create_body(f.world, d)));
+  destroy_body(bodies(f.world).back());
   BOOST_TEST(has(error_of([&] { set_restitution(f.box, 2.0); }), "restitution must be in [0, 1]"));
   BOOST_TEST(restitution(f.box) == 0.0);
   BOOST_TEST(has(error_of([&] { set_velocity(f.box, {INFINITY, 0}); }), "velocity"));
@@ -235,7 +237,7 @@ BOOST_AUTO_TEST_CASE(out_of_range_enums_and_runaway_impulses_are_refused) {
   d.one_way = static_cast<OneWay>(9);
   BOOST_TEST(has(error_of([&] { create_body(f.world, d); }), "one_way"));
   BOOST_TEST(has(error_of([&] { set_one_way(f.box, static_cast<OneWay>(9)); }), "one_way"));
-  set_mass(f.box, 1e-320);
+  set_mass(f.box, 1e-300);  // the smallest mass: an impulse of 1 would give 1e300 px/ms
   BOOST_TEST(has(error_of([&] { apply_impulse(f.box, {1.0, 0.0}); }), "the velocity an impulse gives"));
   BOOST_TEST(velocity(f.box).x == 0.0);
 }
