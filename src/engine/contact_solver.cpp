@@ -43,15 +43,15 @@ int support_sign(int axis, Vector g) {
   return 0;
 }
 
-// The lower (bearing) and upper (resting) body of a weight-bearing contact;
-// false for a side contact.
-template <class Contact>
-bool support_ends(const Contact& ct, Vector g, EntityId& lower, EntityId& upper) {
-  const int sign = support_sign(ct.axis, g);
-  if (sign == 0) return false;
-  lower = sign > 0 ? ct.b : ct.c, upper = sign > 0 ? ct.c : ct.b;
-  return true;
-}
+// A weight-bearing contact as the bottom-up pass reads it, for one
+// direction of "down": its lower and upper body, which of them is fixed, and
+// its index among the solver's contacts. shock_passes() makes these once per
+// direction, so the passes below read a compact list, not the bodies' masses.
+struct Support {
+  EntityId lower, upper;
+  bool lower_fixed, upper_fixed;
+  std::uint32_t index;
+};
 
 // Depth in the support graph: fixed bodies are at 0, a body resting on a
 // body of depth d is at d + 1; bodies resting on nothing fixed get `none`.
@@ -68,30 +68,24 @@ constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
 // within a step and burst sideways). A body in a cycle of contacts (boxes
 // that overlap as no stack does) keeps its shortest chain.
 // O(bodies + contacts), where relaxing every contact until nothing changes
-// costs contacts × stack height.
-template <class Contacts>
-std::vector<std::uint32_t> support_depths(const Components& k, const Contacts& contacts, Vector g) {
-  std::vector<std::uint32_t> depth(k.size(), none);
-  // The upper bodies of each lower one, as a compressed adjacency list.
-  std::vector<std::uint32_t> start(k.size() + 1, 0), upper_of;
+// costs contacts × stack height. `bodies`: the number of entities.
+std::vector<std::uint32_t> support_depths(std::size_t bodies, std::span<const Support> contacts) {
+  std::vector<std::uint32_t> depth(bodies, none);
+  // The upper bodies of each lower one, as a compressed adjacency list (a
+  // fixed upper body's depth stays 0: not listed).
+  std::vector<std::uint32_t> start(bodies + 1, 0), upper_of;
   std::vector<EntityId> queue;
-  const auto ends = [&](const auto& ct, EntityId& lower, EntityId& upper) {
-    return support_ends(ct, g, lower, upper) && std::isfinite(k.mass[upper]);  // a fixed body's depth stays 0
-  };
-  for (const auto& ct : contacts) {
-    EntityId lower, upper;
-    if (ends(ct, lower, upper)) ++start[lower + 1];
-  }
+  for (const Support& ct : contacts)
+    if (!ct.upper_fixed) ++start[ct.lower + 1];
   for (std::size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
   upper_of.resize(start.back());
   std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-  for (const auto& ct : contacts) {
-    EntityId lower, upper;
-    if (ends(ct, lower, upper)) upper_of[fill[lower]++] = upper;
+  for (const Support& ct : contacts)
+    if (!ct.upper_fixed) upper_of[fill[ct.lower]++] = ct.upper;
+  for (const Support& ct : contacts) {
+    if (ct.lower_fixed && depth[ct.lower] == none) depth[ct.lower] = 0, queue.push_back(ct.lower);
+    if (ct.upper_fixed && depth[ct.upper] == none) depth[ct.upper] = 0, queue.push_back(ct.upper);
   }
-  for (const auto& ct : contacts)
-    for (const EntityId e : {ct.c, ct.b})
-      if (!std::isfinite(k.mass[e]) && depth[e] == none) depth[e] = 0, queue.push_back(e);
   const std::size_t fixed = queue.size();
   for (std::size_t q = 0; q < queue.size(); ++q) {
     const EntityId lower = queue[q];
@@ -102,7 +96,7 @@ std::vector<std::uint32_t> support_depths(const Components& k, const Contacts& c
   }
   if (queue.size() == fixed) return depth;
   // The longest chains, over the bodies found (all of whose lower bodies are found too).
-  std::vector<std::uint32_t> pending(k.size(), 0), longest(k.size(), 0);
+  std::vector<std::uint32_t> pending(bodies, 0), longest(bodies, 0);
   for (const EntityId lower : queue)
     for (std::uint32_t a = start[lower]; a < start[lower + 1]; ++a) ++pending[upper_of[a]];
   queue.resize(fixed);
@@ -119,21 +113,17 @@ std::vector<std::uint32_t> support_depths(const Components& k, const Contacts& c
 }
 
 // Weight-bearing contacts whose lower body rests on the ground, lowest first
-// (contacts of equal depth in their given order: a stable counting sort).
-template <class Contacts>
-std::vector<std::size_t> bottom_up(const Components& k, const Contacts& contacts, Vector g) {
-  const auto anchors = [&](const auto& ct) {
-    return support_sign(ct.axis, g) != 0 && !(std::isfinite(k.mass[ct.c]) && std::isfinite(k.mass[ct.b]));
-  };
+// (contacts of equal depth in their given order: a stable counting sort), by
+// their indices among the solver's contacts.
+std::vector<std::size_t> bottom_up(std::size_t bodies, std::span<const Support> contacts) {
+  const auto anchors = [](const Support& ct) { return ct.lower_fixed || ct.upper_fixed; };
   if (std::none_of(contacts.begin(), contacts.end(), anchors)) return {};  // nothing rests on a fixed body
-  const auto depth = support_depths(k, contacts, g);
+  const auto depth = support_depths(bodies, contacts);
   std::vector<std::size_t> order;
   std::vector<std::uint32_t> level;  // depth of each listed contact's lower body
-  for (std::size_t i = 0; i < contacts.size(); ++i) {
-    EntityId lower, upper;
-    if (!support_ends(contacts[i], g, lower, upper)) continue;
-    if (depth[lower] != none && depth[lower] < depth[upper]) order.push_back(i), level.push_back(depth[lower]);
-  }
+  for (const Support& ct : contacts)
+    if (depth[ct.lower] != none && depth[ct.lower] < depth[ct.upper])
+      order.push_back(ct.index), level.push_back(depth[ct.lower]);
   std::uint32_t levels = 0;
   for (const std::uint32_t l : level) levels = std::max(levels, l + 1);
   std::vector<std::size_t> first(levels + 1, 0), sorted(order.size());
@@ -157,9 +147,25 @@ std::vector<ShockPass> shock_passes(const Components& k, const Contacts& contact
   if (!Vector::is_zero(g)) downs.push_back(g);
   if (g.x == 0.0) downs.push_back({-1, 0}), downs.push_back({1, 0});
   if (g.y == 0.0) downs.push_back({0, -1}), downs.push_back({0, 1});
+  // Which ends are fixed, read once per contact.
+  std::vector<std::uint8_t> fixed(contacts.size());
+  for (std::size_t i = 0; i < contacts.size(); ++i)
+    fixed[i] = static_cast<std::uint8_t>((std::isfinite(k.mass[contacts[i].c]) ? 0 : 1) | (std::isfinite(k.mass[contacts[i].b]) ? 0 : 2));
   std::vector<ShockPass> out;
-  for (const Vector down : downs)
-    if (auto order = bottom_up(k, contacts, down); !order.empty()) out.push_back({down, std::move(order)});
+  std::vector<Support> supports;
+  supports.reserve(contacts.size());
+  for (const Vector down : downs) {
+    supports.clear();
+    for (std::size_t i = 0; i < contacts.size(); ++i) {
+      const int sign = support_sign(contacts[i].axis, down);
+      if (sign == 0) continue;
+      const bool fc = fixed[i] & 1, fb = fixed[i] >> 1;
+      const auto index = static_cast<std::uint32_t>(i);
+      if (sign > 0) supports.push_back({contacts[i].b, contacts[i].c, fb, fc, index});
+      else supports.push_back({contacts[i].c, contacts[i].b, fc, fb, index});
+    }
+    if (auto order = bottom_up(k.size(), supports); !order.empty()) out.push_back({down, std::move(order)});
+  }
   return out;
 }
 
