@@ -86,6 +86,38 @@ BOOST_AUTO_TEST_CASE(a_block_falls_freely_down_a_slot_of_touching_blocks_that_fi
   }
 }
 
+// The same along a wall: a 20x20 block moving into a column of touching
+// 20x20 fixed blocks at 0.2 px/ms, e = 0, falls along it freely (it stopped on
+// the second wall block's corner: a vertical normal from the seam).
+BOOST_AUTO_TEST_CASE(a_block_pressed_into_a_wall_of_touching_blocks_falls_freely_along_it) {
+  for (const Mode& m : {stable, stable_ccd, automatic}) {
+    BOOST_TEST_INFO(m.name);
+    World w = make_world(m, {0, g});
+    const EntityId s = block(w, 100, 0, 20, 20, 1.0, {0.2, 0}, 0.0);
+    for (int i = 0; i < 60; ++i) block(w, 120, 20.0 * i, 20, 20, infinity, {}, 0.0);
+    const int n = 63;
+    for (int f = 0; f < n; ++f) Game::step(w);
+    const double h = course_dt;
+    BOOST_TEST(std::abs(w.components.position[s].y - g * h * h * n * (n + 1) / 2) < 1e-9);
+    BOOST_TEST(w.components.position[s].x == 100.0);
+  }
+}
+
+// A floor at fractional coordinates (x = 0.1 + 40 i, top at 200.3), whose
+// blocks overlap by rounding, under g = 0.01: a slide at 2 px/ms keeps its
+// speed (it stopped at the first seam, with auto too).
+BOOST_AUTO_TEST_CASE(a_slide_over_a_floor_at_fractional_coordinates_keeps_its_speed) {
+  for (const Mode& m : {stable, stable_ccd, automatic}) {
+    BOOST_TEST_INFO(m.name);
+    World w = make_world(m, {0, 0.01});
+    const EntityId s = block(w, 0.1, 180.3, 20, 20, 1.0, {2, 0}, 0.0);
+    for (int i = 0; i < 99; ++i) block(w, 0.1 + 40 * i, 200.3, 40, 40, infinity, {}, 0.0);
+    for (int f = 0; f < 100; ++f) Game::step(w);
+    BOOST_TEST(std::abs(w.components.position[s].x - (0.1 + 2 * 100 * course_dt)) < 1e-9);
+    BOOST_TEST(w.components.velocity[s].x == 2.0);
+  }
+}
+
 // Three towers of five 40x40 blocks on the floor when gravity's step g·h²
 // (1000 px at dt = 1000 ms; 278 px at g = 1 px/ms²) exceeds a block's size:
 // no block moves by 1 px, nothing overlaps by 1 px (they burst sideways by

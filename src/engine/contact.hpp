@@ -72,16 +72,19 @@ inline std::pair<int, double> best_axis(const Components& k, EntityId c, EntityI
 // touch along one axis only, they slide along that face, which is the
 // normal (the other axis is either overlapping deeper, where best_axis says
 // the same, or separated, and the box passes over the seam). If they touch
-// along both (corner to corner), the normal is the axis they move less along
-// (a slide along x over a seam: y; a fall down a slot: x). Otherwise
-// best_axis's, with its tie order.
+// along both (corner to corner: `corner`), the normal is the axis of the face
+// contacts the two bodies have with others (`faces`, touching_face's bits:
+// the floor box a box rests on, the wall it slides down), else the axis they
+// move less along (a slide along x over a seam: y; a fall down a slot: x).
+// Otherwise best_axis's, with its tie order.
 struct ContactAxis {
   int axis;           // as best_axis's
   double gap;         // along axis (negative: overlap)
   double separation;  // best_axis's gap
   int separating;     // best_axis's axis
+  bool corner;        // touching along both axes
 };
-inline ContactAxis contact_axis(const Components& k, EntityId c, EntityId b, double touch) {
+inline ContactAxis contact_axis(const Components& k, EntityId c, EntityId b, double touch, int faces = 0) {
   const Vector pc = k.position[c], pb = k.position[b];
   const Rect rc = k.box[c], rb = k.box[b];
   const double sx = pb.x - pc.x - rc.width, sy = pb.y - pc.y - rc.height;  // as best_axis's
@@ -92,11 +95,22 @@ inline ContactAxis contact_axis(const Components& k, EntityId c, EntityId b, dou
   int axis = best;
   if (tx != ty) {
     axis = tx ? ax : ay;
+  } else if (tx && (faces == 1 || faces == 2)) {
+    axis = faces == 1 ? ax : ay;
   } else if (tx) {
     const Vector v = k.velocity[c] - k.velocity[b];
     if (std::abs(v.x) != std::abs(v.y)) axis = std::abs(v.x) < std::abs(v.y) ? ax : ay;
   }
-  return {axis, gaps[axis], gaps[best], best};
+  return {axis, gaps[axis], gaps[best], best, tx && ty};
+}
+
+// 1 if the boxes touch along x face to face (within ±touch along x,
+// overlapping by more than touch along y), 2 the same along y, 0 otherwise:
+// what contact_axis's `faces` collects over a body's pairs.
+inline int touching_face(const Components& k, EntityId c, EntityId b, double touch) {
+  const ContactAxis a = contact_axis(k, c, b, touch);
+  if (a.corner || std::abs(a.gap) > touch || a.axis != a.separating) return 0;  // (else separated along the other)
+  return a.axis < 2 ? 1 : 2;
 }
 
 // ---- Friction (beyond the sheet; docs/game-physics.md) ----

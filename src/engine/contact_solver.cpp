@@ -198,8 +198,10 @@ void ContactSolver::prepare(const Components& k, double h, Vector g, const Solve
   // Slower than the speed gravity gives in two substeps: a resting contact,
   // not an impact, so no bounce (otherwise a block on the floor would hop).
   const double threshold = 2.0 * Vector::norm(g) * h + 1e-12;
-  for (const Pair& p : pairs_) {
-    const auto [axis, gap, separation, separating] = contact_axis(k, p.c, p.b, s.touch);
+  contact_axes(k, s);
+  for (std::size_t i = 0; i < pairs_.size(); ++i) {
+    const Pair& p = pairs_[i];
+    const auto [axis, gap, separation, separating, corner] = axes_[i];
     const Vector v = k.velocity[p.c] - k.velocity[p.b];
     // Speculative: a pair further apart than the margin is a contact only if
     // it closes the gap within this substep.
@@ -705,11 +707,31 @@ bool ContactSolver::prepare_positions(const Components& k, const SolverSettings&
   positions_.clear();
   const auto overlaps = [&](const Pair& p) { return best_axis(k, p.c, p.b).second < -s.slop; };
   if (std::none_of(pairs_.begin(), pairs_.end(), overlaps)) return false;
-  for (const Pair& p : pairs_) {
-    const ContactAxis a = contact_axis(k, p.c, p.b, s.touch);
-    if (!(a.separation > s.margin)) positions_.push_back({p.c, p.b, a.axis, 0.0, 0.0, 0.0, 0.0});
-  }
+  contact_axes(k, s);
+  for (std::size_t i = 0; i < pairs_.size(); ++i)
+    if (!(axes_[i].separation > s.margin))
+      positions_.push_back({pairs_[i].c, pairs_[i].b, axes_[i].axis, 0.0, 0.0, 0.0, 0.0});
   return true;
+}
+
+// Each pair's normal (contact_axis). Pairs that touch corner to corner take
+// the axis of their bodies' face contacts, which takes a look at every pair:
+// only when there is such a pair.
+void ContactSolver::contact_axes(const Components& k, const SolverSettings& s) {
+  axes_.resize(pairs_.size());
+  bool corners = false;
+  for (std::size_t i = 0; i < pairs_.size(); ++i) {
+    axes_[i] = contact_axis(k, pairs_[i].c, pairs_[i].b, s.touch);
+    corners = corners || axes_[i].corner;
+  }
+  if (!corners) return;
+  faces_.assign(k.size(), 0);
+  for (const Pair& p : pairs_) {
+    const auto f = static_cast<std::uint8_t>(touching_face(k, p.c, p.b, s.touch));
+    faces_[p.c] |= f, faces_[p.b] |= f;
+  }
+  for (std::size_t i = 0; i < pairs_.size(); ++i)
+    if (axes_[i].corner) axes_[i] = contact_axis(k, pairs_[i].c, pairs_[i].b, s.touch, faces_[pairs_[i].c] | faces_[pairs_[i].b]);
 }
 
 // Signed distance between the boxes of a position contact along its axis

@@ -50,6 +50,7 @@
 #include <vector>
 
 #include "engine/components.hpp"
+#include "engine/contact.hpp"
 #include "engine/pairs.hpp"
 #include "engine/timing.hpp"
 
@@ -153,6 +154,9 @@ class ContactSolver {
   void island_energies(const Components& k);
   void impact_time(Components& k, double h, Vector g);
   void store();
+  void contact_axes(const Components& k, const SolverSettings& s);
+  std::vector<ContactAxis> axes_;    // by pair: its normal (contact_axes())
+  std::vector<std::uint8_t> faces_;  // by entity id: touching_face's bits over its pairs (contact_axes())
   // solve_positions' stages.
   bool prepare_positions(const Components& k, const SolverSettings& s);
   void project(Components& k, Vector g, const SolverSettings& s);
