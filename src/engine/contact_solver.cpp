@@ -715,8 +715,8 @@ bool ContactSolver::prepare_positions(const Components& k, const SolverSettings&
 }
 
 // Each pair's normal (contact_axis). Pairs that touch corner to corner take
-// the axis of their bodies' face contacts, which takes a look at every pair:
-// only when there is such a pair.
+// the axis of their bodies' face contacts: only those bodies' pairs (marked
+// with bit 2 of faces_) are looked at for them, and only when there is such a pair.
 void ContactSolver::contact_axes(const Components& k, const SolverSettings& s) {
   axes_.resize(pairs_.size());
   bool corners = false;
@@ -725,13 +725,19 @@ void ContactSolver::contact_axes(const Components& k, const SolverSettings& s) {
     corners = corners || axes_[i].corner;
   }
   if (!corners) return;
+  constexpr std::uint8_t wanted = 4;
   faces_.assign(k.size(), 0);
+  for (std::size_t i = 0; i < pairs_.size(); ++i)
+    if (axes_[i].corner) faces_[pairs_[i].c] = faces_[pairs_[i].b] = wanted;
   for (const Pair& p : pairs_) {
+    if (!((faces_[p.c] | faces_[p.b]) & wanted)) continue;
     const auto f = static_cast<std::uint8_t>(touching_face(k, p.c, p.b, s.touch));
     faces_[p.c] |= f, faces_[p.b] |= f;
   }
-  for (std::size_t i = 0; i < pairs_.size(); ++i)
-    if (axes_[i].corner) axes_[i] = contact_axis(k, pairs_[i].c, pairs_[i].b, s.touch, faces_[pairs_[i].c] | faces_[pairs_[i].b]);
+  for (std::size_t i = 0; i < pairs_.size(); ++i) {
+    const Pair& p = pairs_[i];
+    if (axes_[i].corner) axes_[i] = contact_axis(k, p.c, p.b, s.touch, (faces_[p.c] | faces_[p.b]) & 3);
+  }
 }
 
 // Signed distance between the boxes of a position contact along its axis
