@@ -60,6 +60,59 @@ inline std::pair<int, double> best_axis(const Components& k, EntityId c, EntityI
   return {best, gaps[best]};
 }
 
+// The normal of a contact for a solver that keeps resting contacts (the
+// stable solver's), and the gap along it; `separation` is best_axis's gap
+// (the boxes' distance, what decides whether they are in contact at all).
+// The shortest way out alone makes ghost collisions: a box resting on a
+// floor of touching boxes sits `slop` deep in it, so the next floor box is
+// nearer along x than along y, and a horizontal normal stops the box at the
+// seam (in a slot that fits exactly, a vertical one stops a falling box on a
+// wall box's top). Touching floors are exact only to rounding and the
+// resting slop, so a gap within ±touch of 0 counts as touching: if the boxes
+// touch along one axis only, they slide along that face, which is the
+// normal (the other axis is either overlapping deeper, where best_axis says
+// the same, or separated, and the box passes over the seam). If they touch
+// along both (corner to corner: `corner`), the normal is the axis of the face
+// contacts the two bodies have with others (`faces`, touching_face's bits:
+// the floor box a box rests on, the wall it slides down), else the axis they
+// move less along (a slide along x over a seam: y; a fall down a slot: x).
+// Otherwise best_axis's, with its tie order.
+struct ContactAxis {
+  int axis;           // as best_axis's
+  double gap;         // along axis (negative: overlap)
+  double separation;  // best_axis's gap
+  int separating;     // best_axis's axis
+  bool corner;        // touching along both axes
+};
+inline ContactAxis contact_axis(const Components& k, EntityId c, EntityId b, double touch, int faces = 0) {
+  const Vector pc = k.position[c], pb = k.position[b];
+  const Rect rc = k.box[c], rb = k.box[b];
+  const double sx = pb.x - pc.x - rc.width, sy = pb.y - pc.y - rc.height;  // as best_axis's
+  const double gaps[4] = {sx, -(sx + (rb.width + rc.width)), sy, -(sy + (rb.height + rc.height))};
+  const int ax = gaps[1] > gaps[0] ? 1 : 0, ay = gaps[3] > gaps[2] ? 3 : 2;
+  const int best = gaps[ay] > gaps[ax] ? ay : ax;
+  const bool tx = std::abs(gaps[ax]) <= touch, ty = std::abs(gaps[ay]) <= touch;
+  int axis = best;
+  if (tx != ty) {
+    axis = tx ? ax : ay;
+  } else if (tx && (faces == 1 || faces == 2)) {
+    axis = faces == 1 ? ax : ay;
+  } else if (tx) {
+    const Vector v = k.velocity[c] - k.velocity[b];
+    if (std::abs(v.x) != std::abs(v.y)) axis = std::abs(v.x) < std::abs(v.y) ? ax : ay;
+  }
+  return {axis, gaps[axis], gaps[best], best, tx && ty};
+}
+
+// 1 if the boxes touch along x face to face (within ±touch along x,
+// overlapping by more than touch along y), 2 the same along y, 0 otherwise:
+// what contact_axis's `faces` collects over a body's pairs.
+inline int touching_face(const Components& k, EntityId c, EntityId b, double touch) {
+  const ContactAxis a = contact_axis(k, c, b, touch);
+  if (a.corner || std::abs(a.gap) > touch || a.axis != a.separating) return 0;  // (else separated along the other)
+  return a.axis < 2 ? 1 : 2;
+}
+
 // ---- Friction (beyond the sheet; docs/game-physics.md) ----
 
 // A pair's coefficient: sqrt(mu_a mu_b), Box2D's mixing rule (so a

@@ -43,47 +43,50 @@ int support_sign(int axis, Vector g) {
   return 0;
 }
 
-// The lower (bearing) and upper (resting) body of a weight-bearing contact;
-// false for a side contact.
-template <class Contact>
-bool support_ends(const Contact& ct, Vector g, EntityId& lower, EntityId& upper) {
-  const int sign = support_sign(ct.axis, g);
-  if (sign == 0) return false;
-  lower = sign > 0 ? ct.b : ct.c, upper = sign > 0 ? ct.c : ct.b;
-  return true;
-}
+// A weight-bearing contact as the bottom-up pass reads it, for one
+// direction of "down": its lower and upper body, which of them is fixed, and
+// its index among the solver's contacts. shock_passes() makes these once per
+// direction, so the passes below read a compact list, not the bodies' masses.
+struct Support {
+  EntityId lower, upper;
+  bool lower_fixed, upper_fixed;
+  std::uint32_t index;
+};
 
 // Depth in the support graph: fixed bodies are at 0, a body resting on a
 // body of depth d is at d + 1; bodies resting on nothing fixed get `none`.
 constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
 
 // Breadth-first from the fixed bodies along the weight-bearing contacts
-// (lower -> upper): each body gets the length of its shortest support chain.
+// (lower -> upper) finds the bodies that rest on something fixed; then each
+// gets the length of its longest support chain (Kahn's order: a body once all
+// its lower bodies have theirs), so that the bottom-up pass sets every lower
+// body before the bodies on it. The shortest chain is not enough when g·h²
+// exceeds a block's size: a stack's every block is then in a speculative
+// contact with the floor through the blocks below, all at depth 1, and the
+// pass skipped the contacts between them (the stack fell into the floor
+// within a step and burst sideways). A body in a cycle of contacts (boxes
+// that overlap as no stack does) keeps its shortest chain.
 // O(bodies + contacts), where relaxing every contact until nothing changes
-// costs contacts × stack height.
-template <class Contacts>
-std::vector<std::uint32_t> support_depths(const Components& k, const Contacts& contacts, Vector g) {
-  std::vector<std::uint32_t> depth(k.size(), none);
-  // The upper bodies of each lower one, as a compressed adjacency list.
-  std::vector<std::uint32_t> start(k.size() + 1, 0), upper_of;
+// costs contacts × stack height. `bodies`: the number of entities.
+std::vector<std::uint32_t> support_depths(std::size_t bodies, std::span<const Support> contacts) {
+  std::vector<std::uint32_t> depth(bodies, none);
+  // The upper bodies of each lower one, as a compressed adjacency list (a
+  // fixed upper body's depth stays 0: not listed).
+  std::vector<std::uint32_t> start(bodies + 1, 0), upper_of;
   std::vector<EntityId> queue;
-  const auto ends = [&](const auto& ct, EntityId& lower, EntityId& upper) {
-    return support_ends(ct, g, lower, upper) && std::isfinite(k.mass[upper]);  // a fixed body's depth stays 0
-  };
-  for (const auto& ct : contacts) {
-    EntityId lower, upper;
-    if (ends(ct, lower, upper)) ++start[lower + 1];
-  }
+  for (const Support& ct : contacts)
+    if (!ct.upper_fixed) ++start[ct.lower + 1];
   for (std::size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
   upper_of.resize(start.back());
   std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-  for (const auto& ct : contacts) {
-    EntityId lower, upper;
-    if (ends(ct, lower, upper)) upper_of[fill[lower]++] = upper;
+  for (const Support& ct : contacts)
+    if (!ct.upper_fixed) upper_of[fill[ct.lower]++] = ct.upper;
+  for (const Support& ct : contacts) {
+    if (ct.lower_fixed && depth[ct.lower] == none) depth[ct.lower] = 0, queue.push_back(ct.lower);
+    if (ct.upper_fixed && depth[ct.upper] == none) depth[ct.upper] = 0, queue.push_back(ct.upper);
   }
-  for (const auto& ct : contacts)
-    for (const EntityId e : {ct.c, ct.b})
-      if (!std::isfinite(k.mass[e]) && depth[e] == none) depth[e] = 0, queue.push_back(e);
+  const std::size_t fixed = queue.size();
   for (std::size_t q = 0; q < queue.size(); ++q) {
     const EntityId lower = queue[q];
     for (std::uint32_t a = start[lower]; a < start[lower + 1]; ++a) {
@@ -91,21 +94,36 @@ std::vector<std::uint32_t> support_depths(const Components& k, const Contacts& c
       if (depth[upper] == none) depth[upper] = depth[lower] + 1, queue.push_back(upper);
     }
   }
+  if (queue.size() == fixed) return depth;
+  // The longest chains, over the bodies found (all of whose lower bodies are found too).
+  std::vector<std::uint32_t> pending(bodies, 0), longest(bodies, 0);
+  for (const EntityId lower : queue)
+    for (std::uint32_t a = start[lower]; a < start[lower + 1]; ++a) ++pending[upper_of[a]];
+  queue.resize(fixed);
+  for (std::size_t q = 0; q < queue.size(); ++q) {
+    const EntityId lower = queue[q];
+    for (std::uint32_t a = start[lower]; a < start[lower + 1]; ++a) {
+      const EntityId upper = upper_of[a];
+      longest[upper] = std::max(longest[upper], longest[lower] + 1);
+      if (--pending[upper] == 0) queue.push_back(upper);
+    }
+  }
+  for (std::size_t q = fixed; q < queue.size(); ++q) depth[queue[q]] = longest[queue[q]];
   return depth;
 }
 
 // Weight-bearing contacts whose lower body rests on the ground, lowest first
-// (contacts of equal depth in their given order: a stable counting sort).
-template <class Contacts>
-std::vector<std::size_t> bottom_up(const Components& k, const Contacts& contacts, Vector g) {
-  const auto depth = support_depths(k, contacts, g);
+// (contacts of equal depth in their given order: a stable counting sort), by
+// their indices among the solver's contacts.
+std::vector<std::size_t> bottom_up(std::size_t bodies, std::span<const Support> contacts) {
+  const auto anchors = [](const Support& ct) { return ct.lower_fixed || ct.upper_fixed; };
+  if (std::none_of(contacts.begin(), contacts.end(), anchors)) return {};  // nothing rests on a fixed body
+  const auto depth = support_depths(bodies, contacts);
   std::vector<std::size_t> order;
   std::vector<std::uint32_t> level;  // depth of each listed contact's lower body
-  for (std::size_t i = 0; i < contacts.size(); ++i) {
-    EntityId lower, upper;
-    if (!support_ends(contacts[i], g, lower, upper)) continue;
-    if (depth[lower] != none && depth[lower] < depth[upper]) order.push_back(i), level.push_back(depth[lower]);
-  }
+  for (const Support& ct : contacts)
+    if (depth[ct.lower] != none && depth[ct.lower] < depth[ct.upper])
+      order.push_back(ct.index), level.push_back(depth[ct.lower]);
   std::uint32_t levels = 0;
   for (const std::uint32_t l : level) levels = std::max(levels, l + 1);
   std::vector<std::size_t> first(levels + 1, 0), sorted(order.size());
@@ -113,6 +131,42 @@ std::vector<std::size_t> bottom_up(const Components& k, const Contacts& contacts
   for (std::size_t l = 1; l <= levels; ++l) first[l] += first[l - 1];
   for (std::size_t i = 0; i < order.size(); ++i) sorted[first[level[i]]++] = order[i];
   return sorted;
+}
+
+// The directions of the bottom-up passes: gravity's, and both ways along
+// each axis gravity has no component on. Along those, a fixed body anchors
+// what presses on it as the floor does a stack: a light block between a
+// heavy pusher and a wall, a row driven by an infinite-mass pusher
+// (Gauss-Seidel alone carries a heavy body's push through a light one only
+// at the light one's rate, and the projection's shares by inverse mass push
+// the light one into the wall). The axes are independent (a contact's normal
+// is along one), so the passes along x do not undo those along y.
+template <class Contacts>
+std::vector<ShockPass> shock_passes(const Components& k, const Contacts& contacts, Vector g) {
+  std::vector<Vector> downs;
+  if (!Vector::is_zero(g)) downs.push_back(g);
+  if (g.x == 0.0) downs.push_back({-1, 0}), downs.push_back({1, 0});
+  if (g.y == 0.0) downs.push_back({0, -1}), downs.push_back({0, 1});
+  // Which ends are fixed, read once per contact.
+  std::vector<std::uint8_t> fixed(contacts.size());
+  for (std::size_t i = 0; i < contacts.size(); ++i)
+    fixed[i] = static_cast<std::uint8_t>((std::isfinite(k.mass[contacts[i].c]) ? 0 : 1) | (std::isfinite(k.mass[contacts[i].b]) ? 0 : 2));
+  std::vector<ShockPass> out;
+  std::vector<Support> supports;
+  supports.reserve(contacts.size());
+  for (const Vector down : downs) {
+    supports.clear();
+    for (std::size_t i = 0; i < contacts.size(); ++i) {
+      const int sign = support_sign(contacts[i].axis, down);
+      if (sign == 0) continue;
+      const bool fc = fixed[i] & 1, fb = fixed[i] >> 1;
+      const auto index = static_cast<std::uint32_t>(i);
+      if (sign > 0) supports.push_back({contacts[i].b, contacts[i].c, fb, fc, index});
+      else supports.push_back({contacts[i].c, contacts[i].b, fc, fb, index});
+    }
+    if (auto order = bottom_up(k.size(), supports); !order.empty()) out.push_back({down, std::move(order)});
+  }
+  return out;
 }
 
 }  // namespace
@@ -138,24 +192,30 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
 void ContactSolver::prepare(const Components& k, double h, Vector g, const SolverSettings& s) {
   contacts_.clear();
   impacts_.clear();
+  moving_fixed_ = false;
   topology_next_.clear();
   bool friction = false;
   // Slower than the speed gravity gives in two substeps: a resting contact,
   // not an impact, so no bounce (otherwise a block on the floor would hop).
   const double threshold = 2.0 * Vector::norm(g) * h + 1e-12;
-  for (const Pair& p : pairs_) {
-    const auto [axis, gap] = best_axis(k, p.c, p.b);
-    const Vector n = axis_normal[axis];
-    const double vn = Vector::dot(k.velocity[p.c] - k.velocity[p.b], n);
+  contact_axes(k, s);
+  for (std::size_t i = 0; i < pairs_.size(); ++i) {
+    const Pair& p = pairs_[i];
+    const auto [axis, gap, separation, separating, corner] = axes_[i];
+    const Vector v = k.velocity[p.c] - k.velocity[p.b];
     // Speculative: a pair further apart than the margin is a contact only if
     // it closes the gap within this substep.
-    if (gap > s.margin && gap + vn * h > 0.0) continue;
+    if (separation > s.margin && separation + Vector::dot(v, axis_normal[separating]) * h > 0.0) continue;
+    const Vector n = axis_normal[axis];
+    const double vn = Vector::dot(v, n);
     const bool impact = vn < -threshold && gap + vn * h <= 0.0;
     // With CCD on, impacts are its business: it finds each one's exact time
     // and resolves chains of them one after the other (a cradle). The solver
     // keeps the resting contacts, which CCD alone cannot hold.
     if (impact && !s.impacts) continue;
     const double wc = inverse_mass_[p.c], wb = inverse_mass_[p.b];
+    moving_fixed_ = moving_fixed_ || (wc == 0.0 && !Vector::is_zero(k.velocity[p.c])) ||
+                    (wb == 0.0 && !Vector::is_zero(k.velocity[p.b]));
     ContactConstraint ct{p.c, p.b, axis, true, wc, wb, 1.0 / (wc + wb), 0.0, 0.0, 0.0, 0.0, 0.0};
     if (impact) {
       // A real impact this substep: stopped here (target 0), then bounced by
@@ -249,20 +309,21 @@ void ContactSolver::relax(Components& k, Vector g, const SolverSettings& s) {
   else
     iterate<true>(s);
   store_rows<after_bounce>(k);
-  if (!s.shock_propagation || Vector::is_zero(g)) return;
-  if (!have_order_) support_order_ = bottom_up(k, contacts_, g), have_order_ = true;
-  for (const std::size_t i : support_order_) {
-    const ContactConstraint& ct = contacts_[i];
-    const Vector n = axis_normal[ct.axis];
-    const double vn = Vector::dot(k.velocity[ct.c] - k.velocity[ct.b], n);
-    if (vn >= target(ct)) continue;
-    // The lower body is immovable for this pass: the upper takes it all.
-    if (support_sign(ct.axis, g) > 0) {
-      if (ct.wc > 0.0) k.velocity[ct.c] = k.velocity[ct.c] + (target(ct) - vn) * n;
-    } else {
-      if (ct.wb > 0.0) k.velocity[ct.b] = k.velocity[ct.b] - (target(ct) - vn) * n;
+  if (!s.shock_propagation) return;
+  if (!have_order_) support_order_ = shock_passes(k, contacts_, g), have_order_ = true;
+  for (const ShockPass& pass : support_order_)
+    for (const std::size_t i : pass.contacts) {
+      const ContactConstraint& ct = contacts_[i];
+      const Vector n = axis_normal[ct.axis];
+      const double vn = Vector::dot(k.velocity[ct.c] - k.velocity[ct.b], n);
+      if (vn >= target(ct)) continue;
+      // The lower body is immovable for this pass: the upper takes it all.
+      if (support_sign(ct.axis, pass.down) > 0) {
+        if (ct.wc > 0.0) k.velocity[ct.c] = k.velocity[ct.c] + (target(ct) - vn) * n;
+      } else {
+        if (ct.wb > 0.0) k.velocity[ct.b] = k.velocity[ct.b] - (target(ct) - vn) * n;
+      }
     }
-  }
 }
 
 // The iterations' order (order_) and the bodies' slots. Each contact reads
@@ -537,7 +598,7 @@ void ContactSolver::guard_energy(Components& k) {
   bool any = false;
   for (std::size_t i = 0; i < sums_.size(); ++i) {
     const IslandEnergy& su = sums_[i];
-    if (su.end <= su.start * (1.0 + 1e-14)) continue;
+    if (su.frames == 2 || su.end <= su.start * (1.0 + 1e-14)) continue;
     any = true;
     if (su.inel <= su.start) {
       s_rest[i] = largest(su.a_rest, su.b_rest, su.inel - su.start);
@@ -560,8 +621,10 @@ void ContactSolver::guard_energy(Components& k) {
 // When no body of a contact ends with more kinetic energy than it started
 // with, no island can have gained (each island's sums add the same per-body
 // terms, and rounding is monotone): nothing to do. A resting pile is the
-// common case, and this skips the islands' bookkeeping there.
+// common case, and this skips the islands' bookkeeping there. (Not so in the
+// frame of a moving fixed body: then the islands are always looked at.)
 bool ContactSolver::any_body_gained(const Components& k) const {
+  if (moving_fixed_) return true;
   for (std::size_t i = 0; i < slot_body_.size(); ++i) {
     const EntityId e = slot_body_[i];
     const double m = k.mass[e];
@@ -602,11 +665,19 @@ void ContactSolver::island_energies(const Components& k) {
     const EntityId r = find(e);
     if (root_index_[r] == none) root_index_[r] = static_cast<std::uint32_t>(sums_.size()), sums_.emplace_back();
   }
+  for (const ContactConstraint& ct : contacts_) {
+    if ((ct.wc > 0.0) == (ct.wb > 0.0)) continue;  // the fixed bodies an island touches
+    const EntityId body = ct.wc > 0.0 ? ct.c : ct.b, fixed = ct.wc > 0.0 ? ct.b : ct.c;
+    IslandEnergy& su = sums_[root_index_[find(body)]];
+    if (su.frames == 0) su.frame = k.velocity[fixed], su.frames = 1;
+    else if (su.frames == 1 && !(su.frame == k.velocity[fixed])) su.frames = 2;
+  }
   for (const EntityId e : bodies_) {
     const std::uint32_t i = root_index_[find(e)];
     island_[e] = i;
     const double m = k.mass[e];
-    const Vector v0 = v_start_[slot_of_[e]], vi = v_inelastic_[slot_of_[e]], v1 = k.velocity[e];
+    const Vector u = sums_[i].frame;
+    const Vector v0 = v_start_[slot_of_[e]] - u, vi = v_inelastic_[slot_of_[e]] - u, v1 = k.velocity[e] - u;
     const Vector rest = v1 - vi, back = vi - v0;
     IslandEnergy& su = sums_[i];
     su.start += 0.5 * m * Vector::dot(v0, v0);
@@ -636,11 +707,37 @@ bool ContactSolver::prepare_positions(const Components& k, const SolverSettings&
   positions_.clear();
   const auto overlaps = [&](const Pair& p) { return best_axis(k, p.c, p.b).second < -s.slop; };
   if (std::none_of(pairs_.begin(), pairs_.end(), overlaps)) return false;
-  for (const Pair& p : pairs_) {
-    const auto [axis, gap] = best_axis(k, p.c, p.b);
-    if (!(gap > s.margin)) positions_.push_back({p.c, p.b, axis, 0.0, 0.0, 0.0, 0.0});
-  }
+  contact_axes(k, s);
+  for (std::size_t i = 0; i < pairs_.size(); ++i)
+    if (!(axes_[i].separation > s.margin))
+      positions_.push_back({pairs_[i].c, pairs_[i].b, axes_[i].axis, 0.0, 0.0, 0.0, 0.0});
   return true;
+}
+
+// Each pair's normal (contact_axis). Pairs that touch corner to corner take
+// the axis of their bodies' face contacts: only those bodies' pairs (marked
+// with bit 2 of faces_) are looked at for them, and only when there is such a pair.
+void ContactSolver::contact_axes(const Components& k, const SolverSettings& s) {
+  axes_.resize(pairs_.size());
+  bool corners = false;
+  for (std::size_t i = 0; i < pairs_.size(); ++i) {
+    axes_[i] = contact_axis(k, pairs_[i].c, pairs_[i].b, s.touch);
+    corners = corners || axes_[i].corner;
+  }
+  if (!corners) return;
+  constexpr std::uint8_t wanted = 4;
+  faces_.assign(k.size(), 0);
+  for (std::size_t i = 0; i < pairs_.size(); ++i)
+    if (axes_[i].corner) faces_[pairs_[i].c] = faces_[pairs_[i].b] = wanted;
+  for (const Pair& p : pairs_) {
+    if (!((faces_[p.c] | faces_[p.b]) & wanted)) continue;
+    const auto f = static_cast<std::uint8_t>(touching_face(k, p.c, p.b, s.touch));
+    faces_[p.c] |= f, faces_[p.b] |= f;
+  }
+  for (std::size_t i = 0; i < pairs_.size(); ++i) {
+    const Pair& p = pairs_[i];
+    if (axes_[i].corner) axes_[i] = contact_axis(k, p.c, p.b, s.touch, (faces_[p.c] | faces_[p.b]) & 3);
+  }
 }
 
 // Signed distance between the boxes of a position contact along its axis
@@ -682,23 +779,24 @@ void ContactSolver::project(Components& k, Vector g, const SolverSettings& s) {
       k.position[ct.b] = k.position[ct.b] - (push * ct.share_b) * n;
     }
   }
-  if (!s.shock_propagation || Vector::is_zero(g)) return;
+  if (!s.shock_propagation) return;
   // The order depends only on the contacts' bodies, axes and fixed ends, and
   // on gravity: a resting pile keeps it from substep to substep.
   position_keys_.swap(position_keys_next_);
   if (!have_position_order_ || g != position_g_ || position_keys_ != position_keys_next_)
-    position_order_ = bottom_up(k, positions_, g), position_g_ = g, have_position_order_ = true;
-  for (const std::size_t i : position_order_) {
-    const PositionContact& ct = positions_[i];
-    const double depth = -gap(k, ct) - s.slop;
-    if (!(depth > 0.0)) continue;
-    const Vector n = axis_normal[ct.axis];
-    if (support_sign(ct.axis, g) > 0) {
-      if (std::isfinite(k.mass[ct.c])) k.position[ct.c] = k.position[ct.c] + depth * n;
-    } else {
-      if (std::isfinite(k.mass[ct.b])) k.position[ct.b] = k.position[ct.b] - depth * n;
+    position_order_ = shock_passes(k, positions_, g), position_g_ = g, have_position_order_ = true;
+  for (const ShockPass& pass : position_order_)
+    for (const std::size_t i : pass.contacts) {
+      const PositionContact& ct = positions_[i];
+      const double depth = -gap(k, ct) - s.slop;
+      if (!(depth > 0.0)) continue;
+      const Vector n = axis_normal[ct.axis];
+      if (support_sign(ct.axis, pass.down) > 0) {
+        if (std::isfinite(k.mass[ct.c])) k.position[ct.c] = k.position[ct.c] + depth * n;
+      } else {
+        if (std::isfinite(k.mass[ct.b])) k.position[ct.b] = k.position[ct.b] - depth * n;
+      }
     }
-  }
 }
 
 }  // namespace physics

@@ -12,7 +12,9 @@
 //  1. solve_velocities, before Move: prepare, warm_start, relax, restitution,
 //     impact_time, store. contacts are the pairs whose boxes are
 //     closer than `margin` along their separating axis (speculative, so a
-//     resting body is caught before it sinks). Sequential impulses, each
+//     resting body is caught before it sinks), each with the normal of
+//     contact_axis (engine/contact.hpp: no ghost collision at the seams of
+//     touching boxes). Sequential impulses, each
 //     clamped so that the impulse accumulated on a contact never pulls
 //     (Catto's accumulated clamping), warm started from the previous
 //     substep's impulses of resting contacts. A real impact is first stopped
@@ -23,7 +25,10 @@
 //     its own mass's worth of impulse per iteration), so the iterations end
 //     with one pass of shock propagation (Guendelman, Bridson, Fedkiw 2003):
 //     contacts that carry weight (normal along gravity) are taken from the
-//     ground up, the lower body treated as immovable. It runs only on bodies
+//     ground up (by each body's longest chain of support), the lower body
+//     treated as immovable; then the same along the axes gravity has no
+//     component on, both ways, from the fixed bodies out (a wall holds what
+//     is pushed into it as the floor holds a stack). It runs only on bodies
 //     that rest on a fixed one through such contacts; free bodies keep the
 //     plain, momentum-conserving impulses.
 //     The iterations run on a hot copy (schedule(), load_rows()): the
@@ -45,6 +50,7 @@
 #include <vector>
 
 #include "engine/components.hpp"
+#include "engine/contact.hpp"
 #include "engine/pairs.hpp"
 #include "engine/timing.hpp"
 
@@ -54,6 +60,7 @@ struct SolverSettings {
   int iterations = 8;         // velocity and position iterations
   double margin = 0.5;        // px: speculative contact distance
   double slop = 0.01;         // px: overlap left alone (keeps resting contacts alive)
+  double touch = 0.05;        // px: a gap within ±touch counts as touching when choosing a normal (contact_axis)
   double projection = 0.8;    // share of the overlap beyond slop removed per position iteration
   bool shock_propagation = true;
   bool impacts = true;        // false with CCD on: impacts are left to it
@@ -99,6 +106,14 @@ struct FrictionRow {
   double lambda2;    // the same in the relaxation after the bounces
 };
 
+// One bottom-up pass of shock propagation: the direction taken as down (the
+// lower body of a contact lies that way and is immovable for the pass) and
+// the contacts in order, lowest first.
+struct ShockPass {
+  Vector down;
+  std::vector<std::size_t> contacts;
+};
+
 class ContactSolver {
  public:
   void solve_velocities(Components& k, std::span<const EntityId> entities, double h, Vector gravity,
@@ -139,6 +154,9 @@ class ContactSolver {
   void island_energies(const Components& k);
   void impact_time(Components& k, double h, Vector g);
   void store();
+  void contact_axes(const Components& k, const SolverSettings& s);
+  std::vector<ContactAxis> axes_;    // by pair: its normal (contact_axes())
+  std::vector<std::uint8_t> faces_;  // by entity id: touching_face's bits over its pairs (contact_axes())
   // solve_positions' stages.
   bool prepare_positions(const Components& k, const SolverSettings& s);
   void project(Components& k, Vector g, const SolverSettings& s);
@@ -188,12 +206,12 @@ class ContactSolver {
   Vector topology_g_{};
   // The position stage's bottom-up order, and what it was made for: each
   // contact's bodies, axis and fixed ends (bits 2, 3), gravity.
-  std::vector<std::size_t> position_order_;
+  std::vector<ShockPass> position_order_;
   std::vector<TopologyKey> position_keys_, position_keys_next_;
   Vector position_g_{};
   bool have_position_order_ = false;
   std::vector<FrictionRow> friction_;          // empty, or one per contact
-  std::vector<std::size_t> support_order_;     // bottom-up order of this substep's contacts
+  std::vector<ShockPass> support_order_;       // bottom-up passes over this substep's contacts
   bool have_order_ = false;
   std::vector<double> inverse_mass_;           // by entity id, this substep's (solve_velocities)
   std::vector<Vector> v_start_, v_inelastic_;  // by slot
@@ -201,9 +219,15 @@ class ContactSolver {
   // The energy guard's islands: kinetic energies at the start, after the
   // inelastic relaxation and at the end, and the coefficients of the
   // quadratics in the blend factors (rest: the bounces; back: towards the start).
+  // Energies are taken in the frame of the fixed bodies the island touches:
+  // a moving one (a pusher of infinite mass) does work on it, and its
+  // impacts keep the relative energy, not the absolute one.
   struct IslandEnergy {
     double start = 0, inel = 0, end = 0, b_rest = 0, a_rest = 0, b_back = 0, a_back = 0;
+    Vector frame{};  // the velocity of the fixed bodies it touches
+    int frames = 0;  // how many different ones: 0, 1, or 2 (several: no frame keeps its energy, no guard)
   };
+  bool moving_fixed_ = false;  // some contact of the substep has a fixed body that moves
   std::vector<IslandEnergy> sums_;
   std::vector<EntityId> bodies_;               // finite bodies of the contacts, by id
   std::vector<EntityId> parent_;               // union-find of islands
