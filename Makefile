@@ -448,3 +448,66 @@ exercise-lint:
 	@python3 tools/exercise/make_exercise.py --check
 
 test: exercise-lint
+
+# ---- the browser build (docs/web.md) ----
+# `make web`: the engine, the scenes, the testbed's logic and the games built
+# to WebAssembly with Debian's clang (wasm32-wasi, wasi-libc, libc++), into
+# build/web/: index.html, front.js, physics.wasm and the scene files.
+# `make serve` serves it on localhost; `make web-test` checks it under Node's
+# WASI (the determinism hashes, the games' replays: the same bits as the
+# native build) and in headless Chromium.
+WEB_PACKAGES  := clang-14 lld-14 wasi-libc libc++-14-dev-wasm32 libc++abi-14-dev-wasm32 libclang-rt-14-dev-wasm32 \
+                 nlohmann-json3-dev nodejs
+WEB           := build/web
+WEB_CXX       := clang++-14
+# -ffp-contract=off as natively (no fused multiply-add: wasm has none anyway);
+# -Iweb/compat: <filesystem> and <charconv> pieces Debian's wasm libc++ lacks;
+# nlohmann's headers through a folder of their own (-isystem /usr/include
+# would bring glibc's headers in); no std::filesystem in its API.
+WEB_FLAGS     := --target=wasm32-wasi -std=c++20 -O2 -Wall -Wextra -Werror -ffp-contract=off -Iweb/compat -Iinclude \
+                 -Isrc -Itests -isystem $(WEB)/include -DJSON_HAS_FILESYSTEM=0 -DJSON_HAS_EXPERIMENTAL_FILESYSTEM=0 -MMD -MP
+# (src/scene/save.cpp: the save key S of the command line, with std::filesystem.)
+WEB_APP_SRC   := src/app/testbed.cpp src/app/testbed_replay.cpp src/app/style.cpp src/app/input_log.cpp \
+                 src/app/headless.cpp src/app/dump.cpp
+WEB_SRC       := $(CORE_SRC) $(filter-out src/scene/save.cpp,$(SCENE_SRC)) $(GAMES_SRC) $(WEB_APP_SRC) $(wildcard web/*.cpp)
+WEB_OBJ       := $(WEB_SRC:%.cpp=$(WEB)/obj/%.o)
+# `n >= (std::size_t{1} << 32) - 1` is a shift by the width of a 32-bit size_t
+# there: clang folds the check away (it cannot hold with 32-bit sizes anyway).
+$(WEB)/obj/src/engine/broadphase.o: WEB_FLAGS += -Wno-shift-count-overflow
+WEB_FILES     :=
+.PHONY: web serve web-test
+web: deps
+	@$(MAKE) --no-print-directory PACKAGES="$(WEB_PACKAGES)" deps
+	@$(MAKE) --no-print-directory $(WEB)/physics.wasm $(WEB_FILES)
+
+$(WEB)/include/nlohmann:
+	@mkdir -p $(@D)
+	ln -sfn /usr/include/nlohmann $@
+
+$(WEB)/obj/%.o: %.cpp | $(WEB)/include/nlohmann
+	@mkdir -p $(@D)
+	$(WEB_CXX) $(WEB_FLAGS) -c $< -o $@
+
+# A reactor (no main: the page calls the exports), stripped. wasm-ld's stack
+# is 64 KiB by default, below the data: the scene reader's recursion ran
+# past it. 1 MiB, first in memory, so that an overflow traps.
+$(WEB)/physics.wasm: $(WEB_OBJ)
+	$(WEB_CXX) --target=wasm32-wasi -mexec-model=reactor -Wl,--strip-all,-z,stack-size=1048576,--stack-first -o $@ $^
+
+$(WEB)/%: web/%
+	@mkdir -p $(@D)
+	cp $< $@
+
+# The scene files the page offers (and a game's next levels), copied beside it.
+$(WEB)/scenes.json: $(wildcard scenes/*.json)
+	@mkdir -p $(WEB)/scenes
+	cp $^ $(WEB)/scenes/
+	python3 -c 'import sys, json; print(json.dumps([p.split("/")[-1] for p in sys.argv[1:]]))' $^ > $@
+
+# The same bits as natively: the determinism hashes and the replays' final
+# states under Node's WASI, against tests/test_determinism.cpp and build/game.
+web-test: web
+	@$(MAKE) --no-print-directory $(BUILD)/game
+	node --no-warnings web/test/node_check.mjs $(WEB)/physics.wasm $(BUILD)/game
+
+-include $(shell find $(WEB)/obj -name '*.d' 2>/dev/null)

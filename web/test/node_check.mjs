@@ -1,0 +1,70 @@
+// The WebAssembly build under Node's WASI (node:wasi), against the native
+// build: the determinism hashes (committed in tests/test_determinism.cpp) and
+// each committed game replay's final state (build/game --replay LOG
+// --headless --dump: the same dump, byte for byte). Run by `make web-test`:
+//   node web/test/node_check.mjs build/web/physics.wasm build/game
+import { WASI } from 'node:wasi';
+import { readFileSync, mkdtempSync, readdirSync } from 'node:fs';
+import { execFileSync } from 'node:child_process';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+
+const [wasmPath, gamePath] = process.argv.slice(2);
+const module = await WebAssembly.compile(readFileSync(wasmPath));
+let failures = 0;
+const check = (ok, what) => {
+  console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`);
+  if (!ok) failures++;
+};
+
+// One export called in a fresh instance; its stdout, and the time it took.
+// The repository is preopened as "/" (scenes/, replays/).
+async function run(exportName, arg) {
+  const out = join(mkdtempSync(join(tmpdir(), 'web-check-')), 'out');
+  const { openSync, closeSync } = await import('node:fs');
+  const fd = openSync(out, 'w');
+  const wasi = new WASI({ version: 'preview1', preopens: { '/': process.cwd() }, stdout: fd, returnOnExit: true });
+  const instance = await WebAssembly.instantiate(module, { wasi_snapshot_preview1: wasi.wasiImport });
+  wasi.initialize(instance);
+  const { memory, web_alloc } = instance.exports;
+  const args = [];
+  if (arg !== undefined) {
+    const bytes = new TextEncoder().encode(arg + '\0');
+    const p = web_alloc(bytes.length);
+    new Uint8Array(memory.buffer, p, bytes.length).set(bytes);
+    args.push(p);
+  }
+  const t0 = performance.now();
+  instance.exports[exportName](...args);
+  const ms = performance.now() - t0;
+  closeSync(fd);
+  return { text: readFileSync(out, 'utf8'), ms };
+}
+
+// 1. Determinism: each mode's pair of hashes and the 1 000-frame one, as committed.
+const test = readFileSync('tests/test_determinism.cpp', 'utf8');
+const list = (name) => test.match(new RegExp(`${name}\\[\\] = \\{([^}]*)\\}`))[1].match(/0x[0-9a-f]+/g);
+const gas = list('gas_expected'), pyramid = list('pyramid_expected');
+const long = test.match(/expected_hash = (0x[0-9a-f]+)/)[1];
+const det = await run('web_determinism');
+const lines = det.text.trim().split('\n');
+const norm = (h) => '0x' + BigInt(h).toString(16).padStart(16, '0');
+lines.slice(0, -1).forEach((line, m) => {
+  const [name, , g, , p] = line.split(' ');
+  check(g === norm(gas[m]) && p === norm(pyramid[m]), `determinism ${name}: gas ${g} pyramid ${p} (committed ${norm(gas[m])} ${norm(pyramid[m])})`);
+});
+const last = lines.at(-1).split(' ')[1];
+check(last === norm(long), `determinism 1000 frames: ${last} (committed ${norm(long)}), ${(det.ms / 1000).toFixed(1)} s`);
+
+// 2. Each committed replay: the wasm's final dump is the native game's.
+for (const log of readdirSync('replays').filter((f) => f.endsWith('.log')).sort()) {
+  const path = `replays/${log}`;
+  const web = await run('web_replay', path);
+  const dump = web.text.slice(web.text.indexOf('id,'));
+  const head = web.text.slice(0, web.text.indexOf('id,')).trim().split('\n');
+  const native = join(mkdtempSync(join(tmpdir(), 'web-native-')), 'dump.csv');
+  execFileSync(gamePath, ['--replay', path, '--headless', '--dump', native], { stdio: 'ignore' });
+  const same = readFileSync(native, 'utf8') === dump;
+  check(same, `replay ${path}: ${head.join(', ')}; final dump ${same ? 'identical to' : 'DIFFERS from'} the native one`);
+}
+process.exit(failures ? 1 : 0);
