@@ -474,7 +474,7 @@ WEB_OBJ       := $(WEB_SRC:%.cpp=$(WEB)/obj/%.o)
 # `n >= (std::size_t{1} << 32) - 1` is a shift by the width of a 32-bit size_t
 # there: clang folds the check away (it cannot hold with 32-bit sizes anyway).
 $(WEB)/obj/src/engine/broadphase.o: WEB_FLAGS += -Wno-shift-count-overflow
-WEB_FILES     :=
+WEB_FILES     := $(WEB)/index.html $(WEB)/front.js $(WEB)/wasi.js $(WEB)/scenes.json
 .PHONY: web serve web-test
 web: deps
 	@$(MAKE) --no-print-directory PACKAGES="$(WEB_PACKAGES)" deps
@@ -503,6 +503,12 @@ $(WEB)/scenes.json: $(wildcard scenes/*.json)
 	@mkdir -p $(WEB)/scenes
 	cp $^ $(WEB)/scenes/
 	python3 -c 'import sys, json; print(json.dumps([p.split("/")[-1] for p in sys.argv[1:]]))' $^ > $@
+
+# On localhost only; PORT=8000 by default.
+PORT ?= 8000
+serve: web
+	@echo "serving $(WEB)/ on http://127.0.0.1:$(PORT)/ (Ctrl-C stops)"
+	python3 -m http.server $(PORT) --bind 127.0.0.1 --directory $(WEB)
 
 # The same bits as natively: the determinism hashes and the replays' final
 # states under Node's WASI, against tests/test_determinism.cpp and build/game.

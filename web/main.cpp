@@ -44,6 +44,22 @@ std::string hex(std::uint64_t h) {
   return buf;
 }
 
+// A log played on `scene`'s testbed, headless (app/cli.cpp, replay_run),
+// and what it printed: ticks, the game's outcome, the state hash, the dump.
+int play_log(const InputLog& log, const std::string& scene) {
+  std::size_t current = 0;
+  Testbed tb(scenes_for(scene, current), current);
+  tb.replay(log);
+  tb.play();
+  std::cout << "replay: " << tb.replayed() << " events over " << tb.ticks() << " ticks, ended at frame "
+            << tb.world().frame << "\n";
+  if (tb.level()) std::cout << "game: " << (tb.outcome() == Level::Outcome::won ? "won" : "not won") << "\n";
+  std::cout << "state " << hex(determinism::state_hash(tb.world().components)) << "\n";
+  Dump::write_state(std::cout, tb.world());
+  std::cout.flush();
+  return 0;
+}
+
 struct Page {
   std::unique_ptr<Testbed> tb;
   web::Commands commands;
@@ -83,18 +99,36 @@ WEB_EXPORT(web_determinism) int web_determinism() {
 // the final state's hash and its dump (Dump::write_state, as --dump writes).
 WEB_EXPORT(web_replay) int web_replay(const char* log_path) {
   const InputLog log = read_input_log(log_path);
-  std::size_t current = 0;
-  Testbed tb(scenes_for(log.scene, current), current);
-  tb.replay(log);
-  tb.play();
-  std::cout << "replay: " << tb.replayed() << " events over " << tb.ticks() << " ticks, ended at frame "
-            << tb.world().frame << "\n";
-  if (const Level* level = tb.level())
-    std::cout << "game: " << (tb.outcome() == Level::Outcome::won ? "won" : "not won") << "\n";
-  std::cout << "state " << hex(determinism::state_hash(tb.world().components)) << "\n";
-  Dump::write_state(std::cout, tb.world());
+  return play_log(log, log.scene);
+}
+
+// `build/game --scene NAME --headless --frames N`'s run and summary
+// (Headless::run, print_summary: the bench's measure, physics ms/step), then
+// the final state's dump (as --dump writes it).
+WEB_EXPORT(web_headless) int web_headless(const char* name, int frames) {
+  const SceneSpec* builtin = find_builtin(name);
+  const SceneSpec spec = builtin ? *builtin : load_scene_file(name);
+  if (!spec.game.kind.empty()) {  // a game's level runs in its testbed, with no input (as natively)
+    InputLog idle;
+    idle.end = frames;
+    return play_log(idle, name);
+  }
+  World w = make_world(spec, false);
+  const Headless::Summary s = Headless::run(w, frames);
+  Headless::print_summary(std::cout, w, s, "the web build's headless run", spec.name);
+  Dump::write_state(std::cout, w);
   std::cout.flush();
   return 0;
+}
+
+// The built-in scenes' names, one a line, in the order of the keys 1-8.
+WEB_EXPORT(web_builtins) const char* web_builtins() {
+  static const std::string names = [] {
+    std::string out;
+    for (const SceneSpec& s : builtin_scenes()) out += s.name + "\n";
+    return out;
+  }();
+  return names.c_str();
 }
 
 // The page's testbed on scene `name` (a built-in's name or a scene file).

@@ -19,7 +19,7 @@ const check = (ok, what) => {
 
 // One export called in a fresh instance; its stdout, and the time it took.
 // The repository is preopened as "/" (scenes/, replays/).
-async function run(exportName, arg) {
+async function run(exportName, arg, number) {
   const out = join(mkdtempSync(join(tmpdir(), 'web-check-')), 'out');
   const { openSync, closeSync } = await import('node:fs');
   const fd = openSync(out, 'w');
@@ -34,6 +34,7 @@ async function run(exportName, arg) {
     new Uint8Array(memory.buffer, p, bytes.length).set(bytes);
     args.push(p);
   }
+  if (number !== undefined) args.push(number);
   const t0 = performance.now();
   instance.exports[exportName](...args);
   const ms = performance.now() - t0;
@@ -66,5 +67,17 @@ for (const log of readdirSync('replays').filter((f) => f.endsWith('.log')).sort(
   execFileSync(gamePath, ['--replay', path, '--headless', '--dump', native], { stdio: 'ignore' });
   const same = readFileSync(native, 'utf8') === dump;
   check(same, `replay ${path}: ${head.join(', ')}; final dump ${same ? 'identical to' : 'DIFFERS from'} the native one`);
+}
+// 3. Every scene file, 300 frames headless: the wasm's final dump is the
+// native game's; and the ms/step of both on gas10k (the bench's gas 10 000).
+for (const file of readdirSync('scenes').filter((f) => f.endsWith('.json')).sort()) {
+  const path = `scenes/${file}`;
+  const web = await run('web_headless', path, 300);
+  const native = join(mkdtempSync(join(tmpdir(), 'web-native-')), 'dump.csv');
+  const summary = execFileSync(gamePath, ['--scene', path, '--headless', '--frames', '300', '--dump', native], { encoding: 'utf8' });
+  const same = readFileSync(native, 'utf8') === web.text.slice(web.text.indexOf('id,'));
+  const ms = (text) => text.match(/physics ms\/step: ([0-9.e-]+)/)[1];
+  check(same, `scene ${path}, 300 frames: final dump ${same ? 'identical to' : 'DIFFERS from'} the native one` +
+    (file === 'gas10k.json' ? ` (physics ms/step: wasm ${ms(web.text)}, native ${ms(summary)})` : ''));
 }
 process.exit(failures ? 1 : 0);
