@@ -474,7 +474,7 @@ WEB_OBJ       := $(WEB_SRC:%.cpp=$(WEB)/obj/%.o)
 # `n >= (std::size_t{1} << 32) - 1` is a shift by the width of a 32-bit size_t
 # there: clang folds the check away (it cannot hold with 32-bit sizes anyway).
 $(WEB)/obj/src/engine/broadphase.o: WEB_FLAGS += -Wno-shift-count-overflow
-WEB_FILES     := $(WEB)/index.html $(WEB)/front.js $(WEB)/wasi.js $(WEB)/scenes.json
+WEB_FILES     := $(WEB)/index.html $(WEB)/front.js $(WEB)/wasi.js $(WEB)/files.json
 .PHONY: web serve web-test
 web: deps
 	@$(MAKE) --no-print-directory PACKAGES="$(WEB_PACKAGES)" deps
@@ -498,11 +498,13 @@ $(WEB)/%: web/%
 	@mkdir -p $(@D)
 	cp $< $@
 
-# The scene files the page offers (and a game's next levels), copied beside it.
-$(WEB)/scenes.json: $(wildcard scenes/*.json)
-	@mkdir -p $(WEB)/scenes
-	cp $^ $(WEB)/scenes/
-	python3 -c 'import sys, json; print(json.dumps([p.split("/")[-1] for p in sys.argv[1:]]))' $^ > $@
+# The scene files the page offers (and a game's next levels) and the
+# replays, copied beside it, and their list, which the page loads.
+$(WEB)/files.json: $(wildcard scenes/*.json) $(wildcard replays/*.log)
+	@mkdir -p $(WEB)/scenes $(WEB)/replays
+	cp $(filter scenes/%,$^) $(WEB)/scenes/
+	cp $(filter replays/%,$^) $(WEB)/replays/
+	python3 -c 'import sys, json; print(json.dumps(sys.argv[1:]))' $^ > $@
 
 # On localhost only; PORT=8000 by default.
 PORT ?= 8000
@@ -511,9 +513,19 @@ serve: web
 	python3 -m http.server $(PORT) --bind 127.0.0.1 --directory $(WEB)
 
 # The same bits as natively: the determinism hashes and the replays' final
-# states under Node's WASI, against tests/test_determinism.cpp and build/game.
+# states under Node's WASI, against tests/test_determinism.cpp and build/game;
+# then the page in headless Chromium (Debian's), driven by playwright-core
+# (npm, pinned; it downloads no browser), screenshots in build/web-test/.
+WEB_TEST_PACKAGES := chromium
+PLAYWRIGHT        := playwright-core@1.65.1
+NPM_DIR           := build/npm
+$(NPM_DIR)/node_modules/playwright-core/package.json:
+	@mkdir -p $(NPM_DIR)
+	npm install --no-audit --no-fund --loglevel=error --prefix $(NPM_DIR) $(PLAYWRIGHT)
 web-test: web
-	@$(MAKE) --no-print-directory $(BUILD)/game
+	@$(MAKE) --no-print-directory PACKAGES="$(WEB_TEST_PACKAGES)" deps
+	@$(MAKE) --no-print-directory $(BUILD)/game $(NPM_DIR)/node_modules/playwright-core/package.json
 	node --no-warnings web/test/node_check.mjs $(WEB)/physics.wasm $(BUILD)/game
+	node web/test/chromium_check.mjs $(WEB) $(BUILD)/game build/web-test
 
 -include $(shell find $(WEB)/obj -name '*.d' 2>/dev/null)

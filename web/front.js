@@ -21,7 +21,7 @@ function sdlKey(e) {
   return e.key.length === 1 ? e.key.toLowerCase().charCodeAt(0) : 0;
 }
 
-let wasm, running = false, last = 0, fps = 0, drawMs = 0;
+let wasm, captured = null, running = false, last = 0, fps = 0, drawMs = 0;
 const stats = { frames: 0, steps: 0, wasmMs: 0, paintMs: 0 };
 
 function cString(text) {
@@ -137,12 +137,12 @@ canvas.addEventListener('contextmenu', (e) => e.preventDefault());
 select.addEventListener('change', () => open(select.value));
 
 async function start() {
-  const sceneFiles = await (await fetch('scenes.json')).json();
+  const list = await (await fetch('files.json')).json();  // scenes/*.json, replays/*.log
   const files = {};
-  await Promise.all(sceneFiles.map(async (f) => {
-    files[`scenes/${f}`] = new Uint8Array(await (await fetch(`scenes/${f}`)).arrayBuffer());
-  }));
+  await Promise.all(list.map(async (f) => { files[f] = new Uint8Array(await (await fetch(f)).arrayBuffer()); }));
+  const sceneFiles = list.filter((f) => f.startsWith('scenes/')).map((f) => f.slice(7));
   const wasi = new Wasi(files, (fd, line) => {
+    if (captured && fd === 1) return void captured.push(line);
     (fd === 2 ? console.error : console.log)(line);
     if (fd === 2) errorBox.textContent += line + '\n';
   });
@@ -161,8 +161,23 @@ async function start() {
   requestAnimationFrame(frame);
 }
 
-// For the browser test (web/test/chromium_check.mjs): the state, the counters.
-window.physics = { state: () => state(), stats, ready: start().catch((e) => {
+// One of the module's headless runs (web_replay LOG, web_headless SCENE
+// FRAMES), apart from the page's testbed: what it printed.
+function run(name, arg, number) {
+  const p = cString(arg);
+  captured = [];
+  try {
+    wasm[name](p, ...(number === undefined ? [] : [number]));
+    return captured.join('\n') + '\n';
+  } finally {
+    captured = null;
+    wasm.web_free(p);
+  }
+}
+
+// For the browser test (web/test/chromium_check.mjs): the state, the
+// counters, the headless runs.
+window.physics = { state: () => state(), stats, run, ready: start().catch((e) => {
   errorBox.textContent += `${e.message}\n`;
   throw e;
 }) };
