@@ -457,14 +457,17 @@ test: exercise-lint
 # WASI (the determinism hashes, the games' replays: the same bits as the
 # native build) and in headless Chromium.
 WEB_PACKAGES  := clang-14 lld-14 wasi-libc libc++-14-dev-wasm32 libc++abi-14-dev-wasm32 libclang-rt-14-dev-wasm32 \
-                 nlohmann-json3-dev nodejs
-WEB           := build/web
+                 binaryen nlohmann-json3-dev nodejs
+WEB           ?= build/web
 WEB_CXX       := clang++-14
 # -ffp-contract=off as natively (no fused multiply-add: wasm has none anyway);
 # -Iweb/compat: <filesystem> and <charconv> pieces Debian's wasm libc++ lacks;
 # nlohmann's headers through a folder of their own (-isystem /usr/include
 # would bring glibc's headers in); no std::filesystem in its API.
-WEB_FLAGS     := --target=wasm32-wasi -std=c++20 -O2 -Wall -Wextra -Werror -ffp-contract=off -Iweb/compat -Iinclude \
+# For size (the page loads it): -Oz with link-time optimisation, then
+# binaryen's wasm-opt -Oz: 861 KB at -O2, 450 KB so (docs/web.md, "Size").
+WEB_OPT       ?= -Oz -flto
+WEB_FLAGS     := --target=wasm32-wasi -std=c++20 $(WEB_OPT) -Wall -Wextra -Werror -ffp-contract=off -Iweb/compat -Iinclude \
                  -Isrc -Itests -isystem $(WEB)/include -DJSON_HAS_FILESYSTEM=0 -DJSON_HAS_EXPERIMENTAL_FILESYSTEM=0 -MMD -MP
 # (src/scene/save.cpp: the save key S of the command line, with std::filesystem.)
 WEB_APP_SRC   := src/app/testbed.cpp src/app/testbed_replay.cpp src/app/style.cpp src/app/input_log.cpp \
@@ -475,10 +478,11 @@ WEB_OBJ       := $(WEB_SRC:%.cpp=$(WEB)/obj/%.o)
 # there: clang folds the check away (it cannot hold with 32-bit sizes anyway).
 $(WEB)/obj/src/engine/broadphase.o: WEB_FLAGS += -Wno-shift-count-overflow
 WEB_FILES     := $(WEB)/index.html $(WEB)/front.js $(WEB)/wasi.js $(WEB)/files.json
-.PHONY: web serve web-test
+.PHONY: web serve web-test web-pinned
 web: deps
 	@$(MAKE) --no-print-directory PACKAGES="$(WEB_PACKAGES)" deps
 	@$(MAKE) --no-print-directory $(WEB)/physics.wasm $(WEB_FILES)
+	@echo "web: $(WEB)/: physics.wasm $$(stat -c %s $(WEB)/physics.wasm) bytes, JavaScript $$(cat $(WEB)/*.js | wc -c) bytes"
 
 $(WEB)/include/nlohmann:
 	@mkdir -p $(@D)
@@ -491,8 +495,10 @@ $(WEB)/obj/%.o: %.cpp | $(WEB)/include/nlohmann
 # A reactor (no main: the page calls the exports), stripped. wasm-ld's stack
 # is 64 KiB by default, below the data: the scene reader's recursion ran
 # past it. 1 MiB, first in memory, so that an overflow traps.
-$(WEB)/physics.wasm: $(WEB_OBJ)
-	$(WEB_CXX) --target=wasm32-wasi -mexec-model=reactor -Wl,--strip-all,-z,stack-size=1048576,--stack-first -o $@ $^
+$(WEB)/physics-linked.wasm: $(WEB_OBJ)
+	$(WEB_CXX) --target=wasm32-wasi $(WEB_OPT) -mexec-model=reactor -Wl,--strip-all,-z,stack-size=1048576,--stack-first -o $@ $^
+$(WEB)/physics.wasm: $(WEB)/physics-linked.wasm
+	wasm-opt -Oz $< -o $@
 
 $(WEB)/%: web/%
 	@mkdir -p $(@D)
@@ -522,9 +528,34 @@ NPM_DIR           := build/npm
 $(NPM_DIR)/node_modules/playwright-core/package.json:
 	@mkdir -p $(NPM_DIR)
 	npm install --no-audit --no-fund --loglevel=error --prefix $(NPM_DIR) $(PLAYWRIGHT)
+# The pinned functions (web/test/pinned_check.cpp): hypot, glibc's natively
+# and ours in wasm; to_chars, libc++'s and ours with web/to_chars_fixed.cpp.
+PIN     := $(WEB)/pinned
+PIN_CXX := $(WEB_CXX) --target=wasm32-wasi -std=c++20 -O2 -ffp-contract=off -Wall -Wextra -Werror
+$(PIN)/hypot-native: web/test/pinned_check.cpp
+	@mkdir -p $(@D)
+	$(CXX) -std=c++20 -O2 -ffp-contract=off -Wall -Wextra -Werror $< -o $@
+$(PIN)/hypot.wasm: web/test/pinned_check.cpp web/hypot.cpp
+	@mkdir -p $(@D)
+	$(PIN_CXX) $^ -o $@
+$(PIN)/to_chars-libcxx.wasm: web/test/pinned_check.cpp
+	@mkdir -p $(@D)
+	$(PIN_CXX) -DTO_CHARS $^ -o $@
+$(PIN)/to_chars.wasm: web/test/pinned_check.cpp web/to_chars_fixed.cpp
+	@mkdir -p $(@D)
+	$(PIN_CXX) -DTO_CHARS $^ -o $@
+web-pinned: $(PIN)/hypot-native $(PIN)/hypot.wasm $(PIN)/to_chars-libcxx.wasm $(PIN)/to_chars.wasm
+	$(PIN)/hypot-native > $(PIN)/hypot-native.txt
+	node --no-warnings web/test/wasi_run.mjs $(PIN)/hypot.wasm $(PIN)/hypot.txt
+	node --no-warnings web/test/wasi_run.mjs $(PIN)/to_chars-libcxx.wasm $(PIN)/to_chars-libcxx.txt
+	node --no-warnings web/test/wasi_run.mjs $(PIN)/to_chars.wasm $(PIN)/to_chars.txt
+	@cmp $(PIN)/hypot-native.txt $(PIN)/hypot.txt && cmp $(PIN)/to_chars-libcxx.txt $(PIN)/to_chars.txt && \
+	  echo "ok   pinned: hypot as glibc's on $$(wc -l < $(PIN)/hypot.txt) arguments, to_chars as libc++'s on $$(wc -l < $(PIN)/to_chars.txt) values"
+
 web-test: web
 	@$(MAKE) --no-print-directory PACKAGES="$(WEB_TEST_PACKAGES)" deps
 	@$(MAKE) --no-print-directory $(BUILD)/game $(NPM_DIR)/node_modules/playwright-core/package.json
+	@$(MAKE) --no-print-directory web-pinned
 	node --no-warnings web/test/node_check.mjs $(WEB)/physics.wasm $(BUILD)/game
 	node web/test/chromium_check.mjs $(WEB) $(BUILD)/game build/web-test
 
