@@ -139,6 +139,18 @@ check(s.scene === 'gas', `7 opens scene 7 (${s.scene}, ${s.bodies} bodies)`);
 await press('Tab');
 check((await state()).scene === 'stack', 'Tab opens the next one (stack)');
 
+// Every built-in scene and scene file opens and runs in the page.
+const names = await page.evaluate(() => [...document.querySelectorAll('#scene option')].map((o) => o.value));
+const stalled = [];
+for (const name of names) {
+  await open(name);
+  await wait(400);
+  const st = await state();
+  if (!(st.frame > 0) || errors.length) stalled.push(`${name} (frame ${st.frame})`);
+}
+check(names.length >= 23 && stalled.length === 0,
+  `all ${names.length} scenes of the menu run${stalled.length ? '; not: ' + stalled.join(', ') : ''}`);
+
 // 6. Frame rates: the 300-body gas and the games, 3 s each.
 const measures = {};
 async function rate(scene) {
@@ -179,6 +191,13 @@ for (const log of ['replays/platformer.log', 'replays/targets-1.log']) {
   check(same && /game: won/.test(out), `${log} in the page: ${out.match(/state \S+/)[0]}, won, final dump ` +
     `${same ? 'identical to' : 'DIFFERS from'} the native one`);
 }
+
+// 8. The physics' speed in Chromium: gas10k's ms/step, against the native build's.
+const gas10k = await page.evaluate(() => window.physics.run('web_headless', 'scenes/gas10k.json', 300));
+const nativeGas = execFileSync(gamePath, ['--scene', 'scenes/gas10k.json', '--headless', '--frames', '300'], { encoding: 'utf8' });
+const msStep = (text) => Number(text.match(/physics ms\/step: ([0-9.e-]+)/)[1]);
+measures.gas10k_ms_per_step = { chromium: msStep(gas10k), native: msStep(nativeGas) };
+console.log(`     gas10k, 300 frames: ${msStep(gas10k)} ms/step in Chromium, ${msStep(nativeGas)} natively`);
 
 check(errors.length === 0, `no error on the page${errors.length ? ': ' + errors.join('; ') : ''}`);
 writeFileSync(join(outDir, 'measures.json'), JSON.stringify(measures, null, 1) + '\n');
