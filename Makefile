@@ -461,13 +461,15 @@ WEB_PACKAGES  := clang-14 lld-14 wasi-libc libc++-14-dev-wasm32 libc++abi-14-dev
 WEB           ?= build/web
 WEB_CXX       := clang++-14
 # -ffp-contract=off as natively (no fused multiply-add: wasm has none anyway);
+# -fwasm-exceptions: WebAssembly's exception handling, with our runtime
+# (web/cxa_exceptions.cpp: Debian's wasm libc++abi has none);
 # -Iweb/compat: <filesystem> and <charconv> pieces Debian's wasm libc++ lacks;
 # nlohmann's headers through a folder of their own (-isystem /usr/include
 # would bring glibc's headers in); no std::filesystem in its API.
 # For size (the page loads it): -Oz with link-time optimisation, then
-# binaryen's wasm-opt -Oz: 861 KB at -O2, 450 KB so (docs/web.md, "Size").
+# binaryen's wasm-opt -Oz: 861 KB at -O2, 486 KB so, exceptions included (docs/web.md).
 WEB_OPT       ?= -Oz -flto
-WEB_FLAGS     := --target=wasm32-wasi -std=c++20 $(WEB_OPT) -Wall -Wextra -Werror -ffp-contract=off -Iweb/compat -Iinclude \
+WEB_FLAGS     := --target=wasm32-wasi -std=c++20 $(WEB_OPT) -fwasm-exceptions -Wall -Wextra -Werror -ffp-contract=off -Iweb/compat -Iinclude \
                  -Isrc -Itests -isystem $(WEB)/include -DJSON_HAS_FILESYSTEM=0 -DJSON_HAS_EXPERIMENTAL_FILESYSTEM=0 -MMD -MP
 # (src/scene/save.cpp: the save key S of the command line, with std::filesystem.)
 WEB_APP_SRC   := src/app/testbed.cpp src/app/testbed_replay.cpp src/app/style.cpp src/app/input_log.cpp \
@@ -477,6 +479,10 @@ WEB_OBJ       := $(WEB_SRC:%.cpp=$(WEB)/obj/%.o)
 # `n >= (std::size_t{1} << 32) - 1` is a shift by the width of a 32-bit size_t
 # there: clang folds the check away (it cannot hold with 32-bit sizes anyway).
 $(WEB)/obj/src/engine/broadphase.o: WEB_FLAGS += -Wno-shift-count-overflow
+# The exception runtime outside the link-time optimiser: clang 14's inlines
+# its throw intrinsic into callers' try blocks, and then stops ("Cannot
+# invoke an intrinsic other than donothing...").
+$(WEB)/obj/web/cxa_exceptions.o: WEB_FLAGS += -fno-lto
 WEB_FILES     := $(WEB)/index.html $(WEB)/front.js $(WEB)/wasi.js $(WEB)/files.json
 .PHONY: web serve web-test web-pinned
 web: deps
@@ -492,13 +498,20 @@ $(WEB)/obj/%.o: %.cpp | $(WEB)/include/nlohmann
 	@mkdir -p $(@D)
 	$(WEB_CXX) $(WEB_FLAGS) -c $< -o $@
 
-# A reactor (no main: the page calls the exports), stripped. wasm-ld's stack
-# is 64 KiB by default, below the data: the scene reader's recursion ran
-# past it. 1 MiB, first in memory, so that an overflow traps.
+# A reactor (no main: the page calls the exports). wasm-ld's stack is 64 KiB
+# by default, below the data: the scene reader's recursion ran past it.
+# 1 MiB, first in memory, so that an overflow traps. Not stripped by the
+# linker: clang runs wasm-opt itself when it is installed, which reads the
+# features (exception handling) from the target_features section; ours then
+# strips the names and sections. The link-time code generation does not get
+# -fwasm-exceptions' backend options from the compile: given again (without
+# them its code drops every catch clause).
+WEB_EH_LTO := -Wl,-mllvm,-wasm-enable-eh,-mllvm,-exception-model=wasm
 $(WEB)/physics-linked.wasm: $(WEB_OBJ)
-	$(WEB_CXX) --target=wasm32-wasi $(WEB_OPT) -mexec-model=reactor -Wl,--strip-all,-z,stack-size=1048576,--stack-first -o $@ $^
+	$(WEB_CXX) --target=wasm32-wasi $(WEB_OPT) -fwasm-exceptions $(WEB_EH_LTO) -mexec-model=reactor \
+	  -Wl,-z,stack-size=1048576,--stack-first -o $@ $^
 $(WEB)/physics.wasm: $(WEB)/physics-linked.wasm
-	wasm-opt -Oz $< -o $@
+	wasm-opt -Oz --enable-exception-handling --strip-debug --strip-producers --strip-target-features $< -o $@
 
 $(WEB)/%: web/%
 	@mkdir -p $(@D)

@@ -40,18 +40,14 @@ const state = () => JSON.parse(readString(wasm.web_state()));
 
 function open(name) {
   const p = cString(name);
-  try {
-    wasm.web_open(p);
-  } catch (e) {
-    errorBox.textContent += `cannot open ${name}: ${e.message}\n`;
-    return;
-  } finally {
-    wasm.web_free(p);
-  }
+  const failed = wasm.web_open(p);  // its error went to stderr, shown under the picture
+  wasm.web_free(p);
+  if (failed) return false;
   const s = state();
   canvas.width = s.width, canvas.height = s.height;
   running = true;
   canvas.focus();
+  return true;
 }
 
 // The commands' colours are 0-255, alpha too.
@@ -156,7 +152,7 @@ async function start() {
     select.add(new Option(name.startsWith('scenes/') ? `${name.slice(7)} (file)` : name, name));
   const wanted = new URLSearchParams(location.search).get('scene') || 'many';
   select.value = wanted;
-  open(wanted);
+  if (!open(wanted)) open(select.value = 'many');  // the error stays shown
   status.textContent = '';
   requestAnimationFrame(frame);
 }

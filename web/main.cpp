@@ -60,6 +60,19 @@ int play_log(const InputLog& log, const std::string& scene) {
   return 0;
 }
 
+// An export's work, its error (a scene or log that does not read) as the
+// command line gives it: one line on stderr, and 2.
+template <class F>
+int guarded(F&& f) {
+  try {
+    return f();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "game: %s\n", e.what());
+    std::fflush(stderr);
+    return 2;
+  }
+}
+
 struct Page {
   std::unique_ptr<Testbed> tb;
   web::Commands commands;
@@ -98,27 +111,31 @@ WEB_EXPORT(web_determinism) int web_determinism() {
 // log's scene, its events at their ticks; prints the ticks, the game's line,
 // the final state's hash and its dump (Dump::write_state, as --dump writes).
 WEB_EXPORT(web_replay) int web_replay(const char* log_path) {
-  const InputLog log = read_input_log(log_path);
-  return play_log(log, log.scene);
+  return guarded([&] {
+    const InputLog log = read_input_log(log_path);
+    return play_log(log, log.scene);
+  });
 }
 
 // `build/game --scene NAME --headless --frames N`'s run and summary
 // (Headless::run, print_summary: the bench's measure, physics ms/step), then
 // the final state's dump (as --dump writes it).
 WEB_EXPORT(web_headless) int web_headless(const char* name, int frames) {
-  const SceneSpec* builtin = find_builtin(name);
-  const SceneSpec spec = builtin ? *builtin : load_scene_file(name);
-  if (!spec.game.kind.empty()) {  // a game's level runs in its testbed, with no input (as natively)
-    InputLog idle;
-    idle.end = frames;
-    return play_log(idle, name);
-  }
-  World w = make_world(spec, false);
-  const Headless::Summary s = Headless::run(w, frames);
-  Headless::print_summary(std::cout, w, s, "the web build's headless run", spec.name);
-  Dump::write_state(std::cout, w);
-  std::cout.flush();
-  return 0;
+  return guarded([&] {
+    const SceneSpec* builtin = find_builtin(name);
+    const SceneSpec spec = builtin ? *builtin : load_scene_file(name);
+    if (!spec.game.kind.empty()) {  // a game's level runs in its testbed, with no input (as natively)
+      InputLog idle;
+      idle.end = frames;
+      return play_log(idle, name);
+    }
+    World w = make_world(spec, false);
+    const Headless::Summary s = Headless::run(w, frames);
+    Headless::print_summary(std::cout, w, s, "the web build's headless run", spec.name);
+    Dump::write_state(std::cout, w);
+    std::cout.flush();
+    return 0;
+  });
 }
 
 // The built-in scenes' names, one a line, in the order of the keys 1-8.
@@ -131,12 +148,15 @@ WEB_EXPORT(web_builtins) const char* web_builtins() {
   return names.c_str();
 }
 
-// The page's testbed on scene `name` (a built-in's name or a scene file).
+// The page's testbed on scene `name` (a built-in's name or a scene file);
+// one that does not read leaves the testbed as it was (2, the error on stderr).
 WEB_EXPORT(web_open) int web_open(const char* name) {
-  std::size_t current = 0;
-  std::vector<SceneSpec> scenes = scenes_for(name, current);
-  page.tb = std::make_unique<Testbed>(std::move(scenes), current);
-  return 0;
+  return guarded([&] {
+    std::size_t current = 0;
+    std::vector<SceneSpec> scenes = scenes_for(name, current);
+    page.tb = std::make_unique<Testbed>(std::move(scenes), current);
+    return 0;
+  });
 }
 
 // An input event (InputEvent::Kind's order); 1 when it asks to quit.

@@ -199,6 +199,18 @@ const msStep = (text) => Number(text.match(/physics ms\/step: ([0-9.e-]+)/)[1]);
 measures.gas10k_ms_per_step = { chromium: msStep(gas10k), native: msStep(nativeGas) };
 console.log(`     gas10k, 300 frames: ${msStep(gas10k)} ms/step in Chromium, ${msStep(nativeGas)} natively`);
 
+// 9. A scene that does not read: its error under the picture (the exception
+// caught in the module), and the default scene runs.
+errors.length = 0;
+await page.goto(`${base}?scene=scenes/nope.json`);
+await page.evaluate(() => window.physics.ready);
+await wait(300);
+const shown = await page.locator('#error').textContent();
+s = await state();
+check(/scenes\/nope\.json: cannot read the scene file: no such file/.test(shown) && s.scene === 'many' && s.frame > 0,
+  `a missing scene: "${shown.trim()}" shown, many runs instead (frame ${s.frame})`);
+errors.splice(0, errors.length, ...errors.filter((e) => !/nope\.json/.test(e)));
+
 check(errors.length === 0, `no error on the page${errors.length ? ': ' + errors.join('; ') : ''}`);
 writeFileSync(join(outDir, 'measures.json'), JSON.stringify(measures, null, 1) + '\n');
 await browser.close();

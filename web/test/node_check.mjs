@@ -4,7 +4,7 @@
 // --headless --dump: the same dump, byte for byte). Run by `make web-test`:
 //   node web/test/node_check.mjs build/web/physics.wasm build/game
 import { WASI } from 'node:wasi';
-import { readFileSync, mkdtempSync, readdirSync } from 'node:fs';
+import { readFileSync, writeFileSync, mkdtempSync, readdirSync, openSync, closeSync, mkdirSync } from 'node:fs';
 import { execFileSync } from 'node:child_process';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
@@ -17,13 +17,13 @@ const check = (ok, what) => {
   if (!ok) failures++;
 };
 
-// One export called in a fresh instance; its stdout, and the time it took.
-// The repository is preopened as "/" (scenes/, replays/).
+// One export called in a fresh instance: its return value, stdout, stderr,
+// and the time it took. The repository is preopened as "/" (scenes/, replays/).
 async function run(exportName, arg, number) {
-  const out = join(mkdtempSync(join(tmpdir(), 'web-check-')), 'out');
-  const { openSync, closeSync } = await import('node:fs');
-  const fd = openSync(out, 'w');
-  const wasi = new WASI({ version: 'preview1', preopens: { '/': process.cwd() }, stdout: fd, returnOnExit: true });
+  const dir = mkdtempSync(join(tmpdir(), 'web-check-'));
+  const out = openSync(join(dir, 'out'), 'w'), err = openSync(join(dir, 'err'), 'w');
+  const wasi = new WASI({ version: 'preview1', preopens: { '/': process.cwd() }, stdout: out, stderr: err,
+                          returnOnExit: true });
   const instance = await WebAssembly.instantiate(module, { wasi_snapshot_preview1: wasi.wasiImport });
   wasi.initialize(instance);
   const { memory, web_alloc } = instance.exports;
@@ -36,10 +36,10 @@ async function run(exportName, arg, number) {
   }
   if (number !== undefined) args.push(number);
   const t0 = performance.now();
-  instance.exports[exportName](...args);
+  const rc = instance.exports[exportName](...args);
   const ms = performance.now() - t0;
-  closeSync(fd);
-  return { text: readFileSync(out, 'utf8'), ms };
+  closeSync(out), closeSync(err);
+  return { rc, text: readFileSync(join(dir, 'out'), 'utf8'), err: readFileSync(join(dir, 'err'), 'utf8'), ms };
 }
 
 // 1. Determinism: each mode's pair of hashes and the 1 000-frame one, as committed.
@@ -79,5 +79,28 @@ for (const file of readdirSync('scenes').filter((f) => f.endsWith('.json')).sort
   const ms = (text) => text.match(/physics ms\/step: ([0-9.e-]+)/)[1];
   check(same, `scene ${path}, 300 frames: final dump ${same ? 'identical to' : 'DIFFERS from'} the native one` +
     (file === 'gas10k.json' ? ` (physics ms/step: wasm ${ms(web.text)}, native ${ms(summary)})` : ''));
+}
+// 4. Bad input: the exception is caught (web/cxa_exceptions.cpp), and the
+// message is the native game's, word for word.
+const bad = 'build/web-check';
+mkdirSync(bad, { recursive: true });
+const cases = {
+  'missing.json': null,
+  'syntax.json': '{ "name": "s",\n  "world": { "gravity": [0, 1] ]\n}\n',
+  'key.json': '{ "name": "k", "world": { "gravty": [0, 1] } }\n',
+  'wall.json': '{ "name": "w", "blocks": [ { "pos": [770, 100], "size": [20, 20], "mass": 1 } ] }\n',
+};
+for (const [file, text] of Object.entries(cases)) {
+  const path = `${bad}/${file}`;
+  if (text !== null) writeFileSync(path, text);
+  const web = await run('web_headless', path, 1);
+  let native = '';
+  try {
+    execFileSync(gamePath, ['--scene', path, '--headless', '--frames', '1'], { stdio: 'pipe' });
+  } catch (e) {
+    native = e.stderr.toString();
+  }
+  check(web.rc === 2 && native !== '' && web.err === native, `bad scene ${file}: ${web.err.trim()}` +
+    (web.err === native ? ' (as natively)' : ` (natively: ${native.trim()})`));
 }
 process.exit(failures ? 1 : 0);
