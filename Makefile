@@ -449,3 +449,128 @@ exercise-lint:
 	@python3 tools/exercise/make_exercise.py --check
 
 test: exercise-lint
+
+# ---- the browser build (docs/web.md) ----
+# `make web`: the engine, the scenes, the testbed's logic and the games built
+# to WebAssembly with Debian's clang (wasm32-wasi, wasi-libc, libc++), into
+# build/web/: index.html, front.js, physics.wasm and the scene files.
+# `make serve` serves it on localhost; `make web-test` checks it under Node's
+# WASI (the determinism hashes, the games' replays: the same bits as the
+# native build) and in headless Chromium.
+WEB_PACKAGES  := clang-14 lld-14 wasi-libc libc++-14-dev-wasm32 libc++abi-14-dev-wasm32 libclang-rt-14-dev-wasm32 \
+                 binaryen nlohmann-json3-dev nodejs
+WEB           ?= build/web
+WEB_CXX       := clang++-14
+# -ffp-contract=off as natively (no fused multiply-add: wasm has none anyway);
+# -fwasm-exceptions: WebAssembly's exception handling, with our runtime
+# (web/cxa_exceptions.cpp: Debian's wasm libc++abi has none);
+# -Iweb/compat: <filesystem> and <charconv> pieces Debian's wasm libc++ lacks;
+# nlohmann's headers through a folder of their own (-isystem /usr/include
+# would bring glibc's headers in); no std::filesystem in its API.
+# For size (the page loads it): -Oz with link-time optimisation, then
+# binaryen's wasm-opt -Oz: 861 KB at -O2, 486 KB so, exceptions included (docs/web.md).
+WEB_OPT       ?= -Oz -flto
+WEB_FLAGS     := --target=wasm32-wasi -std=c++20 $(WEB_OPT) -fwasm-exceptions -Wall -Wextra -Werror -ffp-contract=off -Iweb/compat -Iinclude \
+                 -Isrc -Itests -isystem $(WEB)/include -DJSON_HAS_FILESYSTEM=0 -DJSON_HAS_EXPERIMENTAL_FILESYSTEM=0 -MMD -MP
+# (src/scene/save.cpp: the save key S of the command line, with std::filesystem.)
+WEB_APP_SRC   := src/app/testbed.cpp src/app/testbed_replay.cpp src/app/style.cpp src/app/input_log.cpp \
+                 src/app/headless.cpp src/app/dump.cpp
+WEB_SRC       := $(CORE_SRC) $(filter-out src/scene/save.cpp,$(SCENE_SRC)) $(GAMES_SRC) $(WEB_APP_SRC) $(wildcard web/*.cpp)
+WEB_OBJ       := $(WEB_SRC:%.cpp=$(WEB)/obj/%.o)
+# `n >= (std::size_t{1} << 32) - 1` is a shift by the width of a 32-bit size_t
+# there: clang folds the check away (it cannot hold with 32-bit sizes anyway).
+$(WEB)/obj/src/engine/broadphase.o: WEB_FLAGS += -Wno-shift-count-overflow
+# The exception runtime outside the link-time optimiser: clang 14's inlines
+# its throw intrinsic into callers' try blocks, and then stops ("Cannot
+# invoke an intrinsic other than donothing...").
+$(WEB)/obj/web/cxa_exceptions.o: WEB_FLAGS += -fno-lto
+WEB_FILES     := $(WEB)/index.html $(WEB)/front.js $(WEB)/wasi.js $(WEB)/files.json
+.PHONY: web serve web-test web-pinned
+web: deps
+	@$(MAKE) --no-print-directory PACKAGES="$(WEB_PACKAGES)" deps
+	@$(MAKE) --no-print-directory $(WEB)/physics.wasm $(WEB_FILES)
+	@echo "web: $(WEB)/: physics.wasm $$(stat -c %s $(WEB)/physics.wasm) bytes, JavaScript $$(cat $(WEB)/*.js | wc -c) bytes"
+
+$(WEB)/include/nlohmann:
+	@mkdir -p $(@D)
+	ln -sfn /usr/include/nlohmann $@
+
+$(WEB)/obj/%.o: %.cpp | $(WEB)/include/nlohmann
+	@mkdir -p $(@D)
+	$(WEB_CXX) $(WEB_FLAGS) -c $< -o $@
+
+# A reactor (no main: the page calls the exports). wasm-ld's stack is 64 KiB
+# by default, below the data: the scene reader's recursion ran past it.
+# 1 MiB, first in memory, so that an overflow traps. Not stripped by the
+# linker: clang runs wasm-opt itself when it is installed, which reads the
+# features (exception handling) from the target_features section; ours then
+# strips the names and sections. The link-time code generation does not get
+# -fwasm-exceptions' backend options from the compile: given again (without
+# them its code drops every catch clause).
+WEB_EH_LTO := -Wl,-mllvm,-wasm-enable-eh,-mllvm,-exception-model=wasm
+$(WEB)/physics-linked.wasm: $(WEB_OBJ)
+	$(WEB_CXX) --target=wasm32-wasi $(WEB_OPT) -fwasm-exceptions $(WEB_EH_LTO) -mexec-model=reactor \
+	  -Wl,-z,stack-size=1048576,--stack-first -o $@ $^
+$(WEB)/physics.wasm: $(WEB)/physics-linked.wasm
+	wasm-opt -Oz --enable-exception-handling --strip-debug --strip-producers --strip-target-features $< -o $@
+
+$(WEB)/%: web/%
+	@mkdir -p $(@D)
+	cp $< $@
+
+# The scene files the page offers (and a game's next levels) and the
+# replays, copied beside it, and their list, which the page loads.
+$(WEB)/files.json: $(wildcard scenes/*.json) $(wildcard replays/*.log)
+	@mkdir -p $(WEB)/scenes $(WEB)/replays
+	cp $(filter scenes/%,$^) $(WEB)/scenes/
+	cp $(filter replays/%,$^) $(WEB)/replays/
+	python3 -c 'import sys, json; print(json.dumps(sys.argv[1:]))' $^ > $@
+
+# On localhost only; PORT=8000 by default.
+PORT ?= 8000
+serve: web
+	@echo "serving $(WEB)/ on http://127.0.0.1:$(PORT)/ (Ctrl-C stops)"
+	python3 -m http.server $(PORT) --bind 127.0.0.1 --directory $(WEB)
+
+# The same bits as natively: the determinism hashes and the replays' final
+# states under Node's WASI, against tests/test_determinism.cpp and build/game;
+# then the page in headless Chromium (Debian's), driven by playwright-core
+# (npm, pinned; it downloads no browser), screenshots in build/web-test/.
+WEB_TEST_PACKAGES := chromium
+PLAYWRIGHT        := playwright-core@1.65.1
+NPM_DIR           := build/npm
+$(NPM_DIR)/node_modules/playwright-core/package.json:
+	@mkdir -p $(NPM_DIR)
+	npm install --no-audit --no-fund --loglevel=error --prefix $(NPM_DIR) $(PLAYWRIGHT)
+# The pinned functions (web/test/pinned_check.cpp): hypot, glibc's natively
+# and ours in wasm; to_chars, libc++'s and ours with web/to_chars_fixed.cpp.
+PIN     := $(WEB)/pinned
+PIN_CXX := $(WEB_CXX) --target=wasm32-wasi -std=c++20 -O2 -ffp-contract=off -Wall -Wextra -Werror
+$(PIN)/hypot-native: web/test/pinned_check.cpp
+	@mkdir -p $(@D)
+	$(CXX) -std=c++20 -O2 -ffp-contract=off -Wall -Wextra -Werror $< -o $@
+$(PIN)/hypot.wasm: web/test/pinned_check.cpp web/hypot.cpp
+	@mkdir -p $(@D)
+	$(PIN_CXX) $^ -o $@
+$(PIN)/to_chars-libcxx.wasm: web/test/pinned_check.cpp
+	@mkdir -p $(@D)
+	$(PIN_CXX) -DTO_CHARS $^ -o $@
+$(PIN)/to_chars.wasm: web/test/pinned_check.cpp web/to_chars_fixed.cpp
+	@mkdir -p $(@D)
+	$(PIN_CXX) -DTO_CHARS $^ -o $@
+web-pinned: $(PIN)/hypot-native $(PIN)/hypot.wasm $(PIN)/to_chars-libcxx.wasm $(PIN)/to_chars.wasm
+	$(PIN)/hypot-native > $(PIN)/hypot-native.txt
+	node --no-warnings web/test/wasi_run.mjs $(PIN)/hypot.wasm $(PIN)/hypot.txt
+	node --no-warnings web/test/wasi_run.mjs $(PIN)/to_chars-libcxx.wasm $(PIN)/to_chars-libcxx.txt
+	node --no-warnings web/test/wasi_run.mjs $(PIN)/to_chars.wasm $(PIN)/to_chars.txt
+	@cmp $(PIN)/hypot-native.txt $(PIN)/hypot.txt && cmp $(PIN)/to_chars-libcxx.txt $(PIN)/to_chars.txt && \
+	  echo "ok   pinned: hypot as glibc's on $$(wc -l < $(PIN)/hypot.txt) arguments, to_chars as libc++'s on $$(wc -l < $(PIN)/to_chars.txt) values"
+
+web-test: web
+	@$(MAKE) --no-print-directory PACKAGES="$(WEB_TEST_PACKAGES)" deps
+	@$(MAKE) --no-print-directory $(BUILD)/game $(NPM_DIR)/node_modules/playwright-core/package.json
+	@$(MAKE) --no-print-directory web-pinned
+	node --no-warnings web/test/node_check.mjs $(WEB)/physics.wasm $(BUILD)/game
+	node web/test/chromium_check.mjs $(WEB) $(BUILD)/game build/web-test
+
+-include $(shell find $(WEB)/obj -name '*.d' 2>/dev/null)
