@@ -474,12 +474,9 @@ WEB_FLAGS     := --target=wasm32-wasi -std=c++20 $(WEB_OPT) -fwasm-exceptions -W
                  -Isrc -Itests -isystem $(WEB)/include -DJSON_HAS_FILESYSTEM=0 -DJSON_HAS_EXPERIMENTAL_FILESYSTEM=0 -MMD -MP
 # (src/scene/save.cpp: the save key S of the command line, with std::filesystem.)
 WEB_APP_SRC   := src/app/testbed.cpp src/app/testbed_replay.cpp src/app/style.cpp src/app/input_log.cpp \
-                 src/app/headless.cpp src/app/dump.cpp
+                 src/app/headless.cpp src/app/dump.cpp src/app/overlay.cpp
 WEB_SRC       := $(CORE_SRC) $(filter-out src/scene/save.cpp,$(SCENE_SRC)) $(GAMES_SRC) $(WEB_APP_SRC) $(wildcard web/*.cpp)
 WEB_OBJ       := $(WEB_SRC:%.cpp=$(WEB)/obj/%.o)
-# `n >= (std::size_t{1} << 32) - 1` is a shift by the width of a 32-bit size_t
-# there: clang folds the check away (it cannot hold with 32-bit sizes anyway).
-$(WEB)/obj/src/engine/broadphase.o: WEB_FLAGS += -Wno-shift-count-overflow
 # The exception runtime outside the link-time optimiser: clang 14's inlines
 # its throw intrinsic into callers' try blocks, and then stops ("Cannot
 # invoke an intrinsic other than donothing...").

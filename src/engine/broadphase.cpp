@@ -118,7 +118,7 @@ void UniformGrid::emit(std::uint32_t a, std::uint32_t b) {
 // their neighbours, large boxes against the grid and each other; sorted.
 void UniformGrid::build(std::span<const FloatBox> boxes, std::span<const std::uint8_t> fixed) {
   const std::size_t n = boxes.size();
-  if (n >= (std::size_t{1} << 32) - 1) throw std::length_error("broadphase: too many bodies");
+  if (n >= std::size_t{std::numeric_limits<std::uint32_t>::max()}) throw std::length_error("broadphase: too many bodies");
   fixed_.assign(fixed.begin(), fixed.end());
   found_.clear();
   double max_extent = 0.0;
@@ -131,7 +131,7 @@ void UniformGrid::build(std::span<const FloatBox> boxes, std::span<const std::ui
 }
 
 void UniformGrid::index(std::span<const FloatBox> boxes) {
-  if (boxes.size() >= (std::size_t{1} << 32) - 1) throw std::length_error("broadphase: too many bodies");
+  if (boxes.size() >= std::size_t{std::numeric_limits<std::uint32_t>::max()}) throw std::length_error("broadphase: too many bodies");
   fixed_.clear();
   found_.clear();
   pairs_.clear();
