@@ -22,7 +22,17 @@ bool AutoMode::plan(const Components& k, std::span<const EntityId> bodies, doubl
   // up) or when a body is fast: what it lands on may be a pile, and CCD
   // alone would carry it down the pile one impact at a time, without end.
   const bool g = !Vector::is_zero(gravity);
-  solver_path_ = first_ || hold_left_ > 0 || fast_count_ > many_fast || (g && (fast_count_ > 0 || bouncy(k, bodies)));
+  solver_path_ = first_ || hold_left_ > 0 || (g && (fast_count_ > 0 || bouncy(k, bodies)));
+  // Many fast bodies without gravity: the solver's path too, on trial (see
+  // roll_back), unless a trial failed in the last `hold` substeps: then every
+  // body is swept, as with `ccd` on.
+  trial_ = !solver_path_ && fast_count_ > many_fast;
+  if (trial_ && sweep_left_ > 0) {
+    --sweep_left_;
+    trial_ = false;
+    sweep_all(bodies);
+  }
+  solver_path_ = solver_path_ || trial_;
   ++(solver_path_ ? stats.solver_substeps : stats.course_substeps);
   return solver_path_;
 }
@@ -38,6 +48,7 @@ bool AutoMode::bouncy(const Components& k, std::span<const EntityId> bodies) {
 // from. Sides do not change from one substep to the next, so one pass uses
 // the last substep's thinnest and checks it, and runs again only when it
 // changed (the first substep, a thinner body added, the thinnest removed).
+// Then the pairs of bodies that close faster than that (mark_closing).
 void AutoMode::mark_fast(const Components& k, std::span<const EntityId> bodies, double h) {
   fast_.resize(k.size());
   // Raw pointers: a byte store may alias anything, and through the vectors
@@ -45,23 +56,107 @@ void AutoMode::mark_fast(const Components& k, std::span<const EntityId> bodies, 
   const Rect* box = k.box.data();
   const Vector* velocity = k.velocity.data();
   std::uint8_t* fast = fast_.data();
+  double d1 = 0, d2 = 0;  // the two largest squared displacements of the bodies that are not fast
   for (;;) {
     const double world_thinnest = thinnest_;
     int thinnest = std::numeric_limits<int>::max();
     std::size_t count = 0;
+    d1 = d2 = 0;
     for (const EntityId e : bodies) {
       const int side = std::min(box[e].width, box[e].height);
       thinnest = std::min(thinnest, side);
       const double reach = CcdSelection::reach(side, world_thinnest);
       const double dx = h * velocity[e].x, dy = h * velocity[e].y;
-      const bool is_fast = dx * dx + dy * dy > reach * reach;  // squared: no root per body
+      const double d = dx * dx + dy * dy;
+      const bool is_fast = d > reach * reach;  // squared: no root per body
       fast[e] = is_fast;
       count += is_fast;
+      if (!is_fast && d > d2) (d > d1 ? d2 = d1, d1 = d : d2 = d);
     }
     fast_count_ = count;
-    if (static_cast<double>(thinnest) == thinnest_ || bodies.empty()) return;
+    if (static_cast<double>(thinnest) == thinnest_ || bodies.empty()) break;
     thinnest_ = thinnest;
   }
+  // Two bodies that are not fast close at most sqrt(d1) + sqrt(d2), and a
+  // pair tunnels only past half its two sides, at least the thinnest.
+  if (std::sqrt(d1) + std::sqrt(d2) > thinnest_) mark_closing(k, bodies, h, d1, d2);
+}
+
+// Closing speeds: two bodies, each within its reach, may still approach each
+// other by more than half their two sides in a substep (head on, each at
+// their reach: twice it), and pass through each other. The bodies that may
+// be in such a pair (their displacement plus the largest other one exceeds
+// their reach) are the candidates; of them, the pairs whose swept boxes meet
+// and whose relative displacement h·|v_c - v_b| exceeds half their thinnest
+// sides are marked fast, both bodies (a sort on x and a sweep, not all pairs).
+// sq1 and sq2: the two largest squared displacements of the bodies not fast.
+void AutoMode::mark_closing(const Components& k, std::span<const EntityId> bodies, double h, double sq1, double sq2) {
+  std::vector<SweptBox>& c = closing_;
+  c.clear();
+  for (const EntityId e : bodies) {
+    if (fast_[e]) continue;
+    const Vector v = k.velocity[e], p = k.position[e];
+    const double dx = h * v.x, dy = h * v.y, sq = dx * dx + dy * dy;  // as mark_fast, to the bit
+    const double other = std::sqrt(sq == sq1 ? sq2 : sq1);
+    if (std::sqrt(sq) + other <= selection().reach(k, e)) continue;
+    c.push_back({std::min(p.x, p.x + dx), std::max(p.x, p.x + dx) + k.box[e].width, std::min(p.y, p.y + dy),
+                 std::max(p.y, p.y + dy) + k.box[e].height, e});
+  }
+  std::sort(c.begin(), c.end(), [](const SweptBox& a, const SweptBox& b) { return a.x0 < b.x0 || (a.x0 == b.x0 && a.e < b.e); });
+  const auto side = [&](EntityId e) { return static_cast<double>(std::min(k.box[e].width, k.box[e].height)); };
+  for (std::size_t i = 0; i < c.size(); ++i)
+    for (std::size_t j = i + 1; j < c.size() && c[j].x0 < c[i].x1; ++j) {
+      if (!(c[j].y0 < c[i].y1 && c[i].y0 < c[j].y1)) continue;
+      const EntityId a = c[i].e, b = c[j].e;
+      const Vector d = h * (k.velocity[a] - k.velocity[b]);
+      const double limit = 0.5 * (side(a) + side(b));
+      if (Vector::dot(d, d) <= limit * limit) continue;
+      fast_count_ += !fast_[a] + !fast_[b];
+      fast_[a] = fast_[b] = 1;
+    }
+}
+
+void AutoMode::keep(const Components& k, std::span<const EntityId> bodies) {
+  if (!trial_) return;
+  kept_.clear();
+  for (const EntityId e : bodies) kept_.push_back({k.position[e], k.velocity[e]});
+}
+
+// The solver takes all the impacts of a substep together: a body with two
+// contacts that pushed it, one of them a bounce, has them solved at once and the bounce
+// relaxed again (Poisson's restitution with the after-bounce pass), which
+// loses energy (a fast e = 1 gas of 8 px blocks at 2 px/ms: 60 % in 3000
+// frames; each isolated pair keeps it to rounding). CCD takes them one after
+// the other, exactly, but costs more where such chains are rare (the matrix's
+// 1 px blocks): so the solver is tried, and its substep undone when it had
+// a chain.
+bool AutoMode::roll_back(Components& k, std::span<const EntityId> bodies,
+                         std::span<const ContactConstraint> contacts) {
+  if (!trial_) return false;
+  contacts_of_.assign(k.size(), 0);
+  bool chain = false;
+  for (const ContactConstraint& ct : contacts) {
+    if (!(ct.lambda + ct.lambda2 > 0.0)) continue;  // no impulse: it changed nothing
+    const std::uint8_t bounce = !ct.resting && ct.restitution > 0.0 ? 2 : 1;  // 2: a bounce, 1: any contact
+    for (const EntityId e : {ct.c, ct.b}) {
+      if (!std::isfinite(k.mass[e])) continue;
+      chain = chain || (contacts_of_[e] != 0 && (contacts_of_[e] | bounce) > 1);
+      contacts_of_[e] = std::max(contacts_of_[e], bounce);
+    }
+  }
+  if (!chain) return false;
+  for (std::size_t i = 0; i < bodies.size(); ++i) k.position[bodies[i]] = kept_[i].first, k.velocity[bodies[i]] = kept_[i].second;
+  --stats.solver_substeps, ++stats.course_substeps;
+  ++stats.rolled_back;
+  solver_path_ = false;
+  sweep_left_ = hold;
+  sweep_all(bodies);
+  return true;
+}
+
+void AutoMode::sweep_all(std::span<const EntityId> bodies) {
+  for (const EntityId e : bodies) fast_[e] = 1, start_[e] = 0.0;
+  fast_count_ = bodies.size();
 }
 
 void AutoMode::after_solver(const Components& k, std::span<const EntityId> bodies,
@@ -130,6 +225,7 @@ void AutoMode::count_pressed() {
 AutoState AutoMode::state() const {
   AutoState s;
   s.hold = hold_left_;
+  s.sweep = sweep_left_;
   for (const auto& [key, run] : runs_)
     s.pressed.push_back({{static_cast<EntityId>(key >> 32), static_cast<EntityId>(key & 0xFFFFFFFFu)}, run});
   return s;
@@ -137,6 +233,7 @@ AutoState AutoMode::state() const {
 
 void AutoMode::restore(const AutoState& s) {
   hold_left_ = s.hold;
+  sweep_left_ = s.sweep;
   runs_.clear();
   for (const AutoState::Run& r : s.pressed) runs_.emplace_back(r.pair.key(), r.substeps);
   std::sort(runs_.begin(), runs_.end());

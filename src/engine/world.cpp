@@ -142,9 +142,12 @@ void World::auto_before_move(std::span<const EntityId> bodies, double h) {
   if (automatic.plan(components, bodies, h, params.gravity)) {
     SolverSettings s = solver_settings(params);
     s.impacts = true;
+    automatic.keep(components, bodies);
     contact_solver.solve_velocities(components, bodies, h, params.gravity, s, broadphase, times);
-    record_solver_contacts();
-    automatic.after_solver(components, bodies, contact_solver.constraints(), h);
+    if (!automatic.roll_back(components, bodies, contact_solver.constraints())) {
+      record_solver_contacts();
+      automatic.after_solver(components, bodies, contact_solver.constraints(), h);
+    }
   }
   if (automatic.fast_count() == 0) return;
   automatic.stats.swept += static_cast<std::int64_t>(automatic.fast_count());
