@@ -206,7 +206,7 @@ BOOST_AUTO_TEST_CASE(a_fast_elastic_gas_keeps_its_energy_and_its_walls) {
   for (int f = 0; f < 600; ++f) Game::step(w);
   BOOST_TEST(std::abs(w.kinetic_energy() - e0) < 1e-9 * e0);
   BOOST_TEST(w.health.escaped == 0);
-  BOOST_TEST(w.automatic.stats.rolled_back > 0);
+  BOOST_TEST(w.automatic.stats.undone > 0);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -24,14 +24,8 @@ bool AutoMode::plan(const Components& k, std::span<const EntityId> bodies, doubl
   const bool g = !Vector::is_zero(gravity);
   solver_path_ = first_ || hold_left_ > 0 || (g && (fast_count_ > 0 || bouncy(k, bodies)));
   // Many fast bodies without gravity: the solver's path too, on trial (see
-  // roll_back), unless a trial failed in the last `hold` substeps: then every
-  // body is swept, as with `ccd` on.
+  // roll_back).
   trial_ = !solver_path_ && fast_count_ > many_fast;
-  if (trial_ && sweep_left_ > 0) {
-    --sweep_left_;
-    trial_ = false;
-    sweep_all(bodies);
-  }
   solver_path_ = solver_path_ || trial_;
   ++(solver_path_ ? stats.solver_substeps : stats.course_substeps);
   return solver_path_;
@@ -116,55 +110,74 @@ void AutoMode::mark_closing(const Components& k, std::span<const EntityId> bodie
     }
 }
 
-void AutoMode::keep(const Components& k, std::span<const EntityId> bodies) {
+void AutoMode::keep(const Components& k) {
   if (!trial_) return;
-  kept_.clear();
-  for (const EntityId e : bodies) kept_.push_back({k.position[e], k.velocity[e]});
+  kept_position_ = k.position;
+  kept_velocity_ = k.velocity;
 }
 
-// The solver takes all the impacts of a substep together: a body with two
-// contacts that pushed it, one of them a bounce, has them solved at once and the bounce
-// relaxed again (Poisson's restitution with the after-bounce pass), which
-// loses energy (a fast e = 1 gas of 8 px blocks at 2 px/ms: 60 % in 3000
-// frames; each isolated pair keeps it to rounding). CCD takes them one after
-// the other, exactly, but costs more where such chains are rare (the matrix's
-// 1 px blocks): so the solver is tried, and its substep undone when it had
-// a chain.
-bool AutoMode::roll_back(Components& k, std::span<const EntityId> bodies,
-                         std::span<const ContactConstraint> contacts) {
-  if (!trial_) return false;
-  contacts_of_.assign(k.size(), 0);
-  bool chain = false;
+// The solver takes the impacts of a substep together: a body with two
+// contacts that pushed it, one of them a bounce, has them solved at once and
+// the bounce relaxed again (Poisson's restitution with the after-bounce
+// pass), which loses energy (a fast e = 1 gas of 8 px blocks at 2 px/ms lost
+// 60 % in 3000 frames; an isolated pair keeps it to rounding), and its energy
+// guard scales back the bounces of a whole island. CCD takes impacts one
+// after the other, exactly, but costs more where such chains are rare (the
+// matrix's 1 px blocks). So the solver is tried, and the islands (bodies
+// joined by the solver's contacts, as its guard joins them: through finite
+// bodies) that had such a chain, or whose energy changed though all their
+// contacts have e = 1, are put back as they were and swept from the start.
+void AutoMode::roll_back(Components& k, std::span<const EntityId> bodies, std::span<const ContactConstraint> contacts) {
+  if (any_undone_) std::fill(undone_.begin(), undone_.end(), 0), any_undone_ = false;
+  if (!trial_) return;
+  undone_.resize(k.size(), 0);
+  root_.resize(k.size());
+  islands_.resize(k.size());
+  for (const EntityId e : bodies) root_[e] = e, islands_[e] = {};
+  const auto find = [&](EntityId e) {
+    while (root_[e] != e) e = root_[e] = root_[root_[e]];
+    return e;
+  };
+  for (const ContactConstraint& ct : contacts)
+    if (ct.wc > 0.0 && ct.wb > 0.0) root_[find(ct.c)] = find(ct.b);
+  // Per body, its pushing contacts (1: one, 2: a bounce among them, 3: a chain).
   for (const ContactConstraint& ct : contacts) {
     if (!(ct.lambda + ct.lambda2 > 0.0)) continue;  // no impulse: it changed nothing
-    const std::uint8_t bounce = !ct.resting && ct.restitution > 0.0 ? 2 : 1;  // 2: a bounce, 1: any contact
-    for (const EntityId e : {ct.c, ct.b}) {
-      if (!std::isfinite(k.mass[e])) continue;
-      chain = chain || (contacts_of_[e] != 0 && (contacts_of_[e] | bounce) > 1);
-      contacts_of_[e] = std::max(contacts_of_[e], bounce);
-    }
+    const std::uint8_t kind = !ct.resting && ct.restitution > 0.0 ? 2 : 1;
+    for (const EntityId e : {ct.c, ct.b})
+      if (std::isfinite(k.mass[e])) undone_[e] = undone_[e] != 0 && (undone_[e] | kind) > 1 ? 3 : std::max(undone_[e], kind);
+    if (ct.restitution < 1.0) islands_[find(std::isfinite(k.mass[ct.c]) ? ct.c : ct.b)].elastic = false;
   }
-  if (!chain) return false;
-  for (std::size_t i = 0; i < bodies.size(); ++i) k.position[bodies[i]] = kept_[i].first, k.velocity[bodies[i]] = kept_[i].second;
-  --stats.solver_substeps, ++stats.course_substeps;
-  ++stats.rolled_back;
-  solver_path_ = false;
-  sweep_left_ = hold;
-  sweep_all(bodies);
-  return true;
-}
-
-void AutoMode::sweep_all(std::span<const EntityId> bodies) {
-  for (const EntityId e : bodies) fast_[e] = 1, start_[e] = 0.0;
-  fast_count_ = bodies.size();
+  for (const EntityId e : bodies) {
+    if (!std::isfinite(k.mass[e])) continue;
+    Island& i = islands_[find(e)];
+    i.chain = i.chain || undone_[e] == 3;
+    i.before += 0.5 * k.mass[e] * Vector::dot(kept_velocity_[e], kept_velocity_[e]);
+    i.after += 0.5 * k.mass[e] * Vector::dot(k.velocity[e], k.velocity[e]);
+  }
+  std::size_t count = 0;
+  for (const EntityId e : bodies) {
+    const Island& i = islands_[find(e)];
+    undone_[e] = std::isfinite(k.mass[e]) && (i.chain || (i.elastic && std::abs(i.after - i.before) > 1e-12 * i.before));
+    if (!undone_[e]) continue;
+    k.position[e] = kept_position_[e], k.velocity[e] = kept_velocity_[e];
+    fast_count_ += !fast_[e];
+    fast_[e] = 1, start_[e] = 0.0;
+    ++count;
+  }
+  any_undone_ = count > 0;
+  stats.undone += static_cast<std::int64_t>(count);
 }
 
 void AutoMode::after_solver(const Components& k, std::span<const EntityId> bodies,
                             std::span<const ContactConstraint> contacts, double h) {
   stats.contacts += static_cast<std::int64_t>(contacts.size());
   pressed_.clear();
+  // On trial, impacts do not count: a fast gas's pairs meet again and again,
+  // and holding the solver for them would give it their chains.
   for (const ContactConstraint& ct : contacts)
-    if (ct.wc > 0.0 && ct.wb > 0.0 && ct.lambda + ct.lambda2 > 0.0) pressed_.push_back(Pair{ct.c, ct.b}.key());
+    if (ct.wc > 0.0 && ct.wb > 0.0 && ct.lambda + ct.lambda2 > 0.0 && !(trial_ && !ct.resting))
+      pressed_.push_back(Pair{ct.c, ct.b}.key());
   count_pressed();
   if (first_ && !pressed_.empty()) hold_left_ = hold;  // a pile from the start
   // The solver's contacts were found along each body's whole swept path
@@ -174,7 +187,7 @@ void AutoMode::after_solver(const Components& k, std::span<const EntityId> bodie
   // so that its line from then on is its motion; the earliest of its
   // impacts, as there).
   mark_fast(k, bodies, h);
-  if (fast_count_ == 0) return;
+  if (fast_count_ == 0 && !trial_) return;  // on trial, roll_back may sweep bodies beside the impacted ones
   impacted_.assign(k.size(), 0);
   for (const ContactConstraint& ct : contacts) {
     if (ct.resting) continue;
@@ -225,7 +238,6 @@ void AutoMode::count_pressed() {
 AutoState AutoMode::state() const {
   AutoState s;
   s.hold = hold_left_;
-  s.sweep = sweep_left_;
   for (const auto& [key, run] : runs_)
     s.pressed.push_back({{static_cast<EntityId>(key >> 32), static_cast<EntityId>(key & 0xFFFFFFFFu)}, run});
   return s;
@@ -233,7 +245,6 @@ AutoState AutoMode::state() const {
 
 void AutoMode::restore(const AutoState& s) {
   hold_left_ = s.hold;
-  sweep_left_ = s.sweep;
   runs_.clear();
   for (const AutoState::Run& r : s.pressed) runs_.emplace_back(r.pair.key(), r.substeps);
   std::sort(runs_.begin(), runs_.end());

@@ -45,8 +45,7 @@ struct AutoState {
     int substeps;  // in a row, up to now
     friend bool operator==(const Run&, const Run&) = default;
   };
-  int hold = 0;   // substeps the solver is still held for
-  int sweep = 0;  // substeps every body is still swept for, after a chain on the solver's trial
+  int hold = 0;  // substeps the solver is still held for
   std::vector<Run> pressed;
   friend bool operator==(const AutoState&, const AutoState&) = default;
 };
@@ -56,7 +55,7 @@ struct AutoStats {
   std::int64_t solver_substeps = 0;  // substeps resolved by the stable solver
   std::int64_t swept = 0;            // bodies swept by CCD, summed over substeps
   std::int64_t contacts = 0;         // contacts the stable solver iterated, summed over substeps
-  std::int64_t rolled_back = 0;      // solver substeps undone for a chain of impacts (AutoMode::roll_back)
+  std::int64_t undone = 0;           // bodies whose solver substep was undone and swept instead (roll_back), summed
 };
 
 class AutoMode {
@@ -82,12 +81,14 @@ class AutoMode {
   // resolved by the pass before too (switches to the solver).
   void after_course_pass(const Components& k, std::span<const Contact> contacts);
 
-  // Around the solver on trial (many fast bodies, no gravity): keep() the
-  // bodies before it; roll_back() undoes its substep if a finite body had a
-  // bounce and another contact in it (true: then every body is swept, and the
-  // course's pass follows Move).
-  void keep(const Components& k, std::span<const EntityId> bodies);
-  bool roll_back(Components& k, std::span<const EntityId> bodies, std::span<const ContactConstraint> contacts);
+  // Around the solver on trial (more than many_fast fast bodies, no
+  // gravity): keep() the bodies before it; after after_solver(), roll_back()
+  // puts the islands where a body had a bounce and another contact back as
+  // they were and sweeps them instead. undone(e): e's solver contacts were
+  // undone this substep (its events are CCD's).
+  void keep(const Components& k);
+  void roll_back(Components& k, std::span<const EntityId> bodies, std::span<const ContactConstraint> contacts);
+  bool undone(EntityId e) const { return e < undone_.size() && undone_[e] == 1; }
 
   // The state a saved world keeps; restore() also marks the world as
   // started (no first-substep look with the solver).
@@ -105,7 +106,6 @@ class AutoMode {
   void mark_fast(const Components& k, std::span<const EntityId> bodies, double h);
   void mark_closing(const Components& k, std::span<const EntityId> bodies, double h, double sq1, double sq2);
   static bool bouncy(const Components& k, std::span<const EntityId> bodies);
-  void sweep_all(std::span<const EntityId> bodies);
 
   std::vector<std::uint8_t> fast_;  // by entity id
   std::vector<double> start_;       // by entity id, ms
@@ -119,10 +119,16 @@ class AutoMode {
   std::vector<std::uint64_t> pressed_;  // keys of the pairs of finite bodies pressed together this substep
   std::vector<std::pair<std::uint64_t, int>> runs_, next_runs_;  // (key, substeps in a row), sorted
   int hold_left_ = 0;
-  int sweep_left_ = 0;  // substeps every body is still swept for (roll_back)
   bool trial_ = false;  // the solver's path is on trial this substep
-  std::vector<std::pair<Vector, Vector>> kept_;  // keep(): position and velocity, in the order of the bodies
-  std::vector<std::uint8_t> contacts_of_;         // roll_back(), by entity id
+  bool any_undone_ = false;
+  std::vector<Vector> kept_position_, kept_velocity_;  // keep(), by entity id
+  struct Island {  // roll_back()'s, at its root
+    bool chain = false, elastic = true;
+    double before = 0, after = 0;  // kinetic energy
+  };
+  std::vector<EntityId> root_;        // roll_back()'s islands (union-find), by entity id
+  std::vector<Island> islands_;       // by entity id (of the root)
+  std::vector<std::uint8_t> undone_;  // by entity id
   bool solver_path_ = false;
   bool first_ = false;      // the scene's first substep, under gravity
   bool started_ = false;    // a substep was planned (or a saved state restored)

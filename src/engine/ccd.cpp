@@ -128,11 +128,14 @@ class ImpactQueue {
     const EntityId c = entities_[ev.ic], b = entities_[ev.ib];
     const bool c_fixed = !std::isfinite(k_.mass[c]), b_fixed = !std::isfinite(k_.mass[b]);
     const bool again_c = swept(c, ev.t), again_b = swept(b, ev.t);
+    // A body left unswept still meets the swept ones on its new line (their
+    // impacts with it were predicted on the old one).
+    const auto sweeps = [&](bool again, std::uint32_t j) { return again || (sel_ && sel_->fast[entities_[j]]); };
     for (std::uint32_t j = 0; j < entities_.size(); ++j) {
       const bool j_fixed = !std::isfinite(k_.mass[entities_[j]]);
-      if (again_c && j != ev.ic && !(c_fixed && j_fixed) && (!with_rules || solvable(k_, c, entities_[j], h_)))
+      if (sweeps(again_c, j) && j != ev.ic && !(c_fixed && j_fixed) && (!with_rules || solvable(k_, c, entities_[j], h_)))
         predict(ev.ic, j, ev.t);
-      if (again_b && j != ev.ib && !(again_c && j == ev.ic) && !(b_fixed && j_fixed) &&
+      if (sweeps(again_b, j) && j != ev.ib && !(sweeps(again_c, ev.ib) && j == ev.ic) && !(b_fixed && j_fixed) &&
           (!with_rules || solvable(k_, b, entities_[j], h_)))
         predict(ev.ib, j, ev.t);
     }

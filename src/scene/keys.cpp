@@ -502,7 +502,7 @@ const GK game_rows[] = {
 const KeyDoc state_docs[] = {
     {".frame", "integer", ">= 0", "0", "the frame it was saved after"},
     {".warm_start", "array of [c, b, axis, jn, jt]", "", "[]", "the stable solver's warm-start impulses, by body id"},
-    {".auto", "`{hold, sweep, pressed: [[c, b, substeps], ...]}`", "", "–", "with solver `\"auto\"`: its choice's state"},
+    {".auto", "`{hold, pressed: [[c, b, substeps], ...]}`", "", "–", "with solver `\"auto\"`: its choice's state"},
 };
 
 

@@ -108,7 +108,7 @@ std::string to_json(const SceneSpec& s) {
     if (s.state->automatic) {
       ojson pressed = ojson::array();
       for (const AutoState::Run& r : s.state->automatic->pressed) pressed.push_back({r.pair.c, r.pair.b, r.substeps});
-      o["state"]["auto"] = {{"hold", s.state->automatic->hold}, {"sweep", s.state->automatic->sweep}, {"pressed", pressed}};
+      o["state"]["auto"] = {{"hold", s.state->automatic->hold}, {"pressed", pressed}};
     }
   }
   std::string out;
