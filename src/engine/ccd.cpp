@@ -167,6 +167,29 @@ class ImpactQueue {
   std::priority_queue<Event, std::vector<Event>, Later> queue_;
 };
 
+// Out of budget (an inelastic collapse, a squeeze: impacts without end at
+// one place): each body still to meet something stops at its next impact,
+// for the rest of the substep, and every other body moves on, so the scene's
+// time keeps going. A body that stops keeps the velocity it has at that time:
+// the part of the substep's gravity kick after it is taken back (Forces gave
+// the whole of it), else a pile stopped every substep would gather speed
+// without moving, and its energy would grow (6 300 times with the stable
+// solver, e = 1). Nothing passes through anything and nothing gains energy;
+// the impacts left are the next substep's.
+template <class Queue>
+void stop_at_next_impacts(Components& k, Queue& queue, Event first, std::span<const EntityId> entities, double h,
+                          Vector gravity) {
+  std::vector<std::uint8_t> stopped(k.size(), 0);
+  const auto stop = [&](EntityId e, double t) {
+    if (stopped[e] || !std::isfinite(k.mass[e])) return;  // a moving platform keeps its course
+    stopped[e] = 1;
+    const Vector v = k.velocity[e], v2 = v - (h - t) * gravity;
+    k.position[e] = k.position[e] + t * v - h * v2;  // Move's x + h·v2 is where its line is at t
+    k.velocity[e] = v2;
+  };
+  for (std::optional<Event> ev = first; ev; ev = queue.next()) stop(entities[ev->ic], ev->t), stop(entities[ev->ib], ev->t);
+}
+
 }  // namespace
 
 void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h, Vector gravity,
@@ -184,12 +207,8 @@ void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h, V
   std::int64_t resolved = 0;
   while (const auto ev = queue.next()) {
     if (resolved == budget) {
-      // Out of budget: stop every body where it is at this event's time for
-      // the rest of the substep (Move will bring it exactly there). Nothing
-      // passes through anything and no impulse is invented; the price is
-      // that the scene loses h - t of motion in this substep.
       ++stats.capped_substeps;
-      for (const EntityId e : entities) k.position[e] = k.position[e] + (ev->t - h) * k.velocity[e];
+      stop_at_next_impacts(k, queue, *ev, entities, h, gravity);
       break;
     }
     const EntityId c = entities[ev->ic], b = entities[ev->ib];
