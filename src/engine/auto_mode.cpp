@@ -16,7 +16,7 @@ bool AutoMode::plan(const Components& k, std::span<const EntityId> bodies, doubl
   started_ = true;
   if (hold_left_ > 0) --hold_left_;
   if (start_set_ || start_.size() != k.size()) start_.assign(k.size(), 0.0), start_set_ = false;
-  mark_fast(k, bodies, h);
+  mark_fast(k, bodies, h, true);
   // Under gravity, the solver too when bodies bounce (the course's pass
   // reflects the whole substep's kick: the e = 1 long run's energy creeps
   // up) or when a body is fast: what it lands on may be a pile, and CCD
@@ -42,8 +42,9 @@ bool AutoMode::bouncy(const Components& k, std::span<const EntityId> bodies) {
 // from. Sides do not change from one substep to the next, so one pass uses
 // the last substep's thinnest and checks it, and runs again only when it
 // changed (the first substep, a thinner body added, the thinnest removed).
-// Then the pairs of bodies that close faster than that (mark_closing).
-void AutoMode::mark_fast(const Components& k, std::span<const EntityId> bodies, double h) {
+// Then, if `closing`, the pairs of bodies that close faster than that
+// (mark_closing).
+void AutoMode::mark_fast(const Components& k, std::span<const EntityId> bodies, double h, bool closing) {
   fast_.resize(k.size());
   // Raw pointers: a byte store may alias anything, and through the vectors
   // every iteration would load their data pointers again.
@@ -73,7 +74,7 @@ void AutoMode::mark_fast(const Components& k, std::span<const EntityId> bodies, 
   }
   // Two bodies that are not fast close at most sqrt(d1) + sqrt(d2), and a
   // pair tunnels only past half its two sides, at least the thinnest.
-  if (std::sqrt(d1) + std::sqrt(d2) > thinnest_) mark_closing(k, bodies, h, d1, d2);
+  if (closing && std::sqrt(d1) + std::sqrt(d2) > thinnest_) mark_closing(k, bodies, h, d1, d2);
 }
 
 // Closing speeds: two bodies, each within its reach, may still approach each
@@ -129,7 +130,7 @@ void AutoMode::keep(const Components& k) {
 // contacts have e = 1, are put back as they were and swept from the start.
 void AutoMode::roll_back(Components& k, std::span<const EntityId> bodies, std::span<const ContactConstraint> contacts) {
   if (any_undone_) std::fill(undone_.begin(), undone_.end(), 0), any_undone_ = false;
-  if (!trial_) return;
+  if (!trial_ || bodies.size() > undo_bodies) return;
   undone_.resize(k.size(), 0);
   root_.resize(k.size());
   islands_.resize(k.size());
@@ -185,8 +186,9 @@ void AutoMode::after_solver(const Components& k, std::span<const EntityId> bodie
   // had one and is still fast may meet something else within the substep.
   // It is swept from its impact time on (the solver's impact_time shifted it
   // so that its line from then on is its motion; the earliest of its
-  // impacts, as there).
-  mark_fast(k, bodies, h);
+  // impacts, as there). Pairs closing fast are not looked for again: the
+  // solver's speculative contacts took their first impact too.
+  mark_fast(k, bodies, h, false);
   if (fast_count_ == 0 && !trial_) return;  // on trial, roll_back may sweep bodies beside the impacted ones
   impacted_.assign(k.size(), 0);
   for (const ContactConstraint& ct : contacts) {
