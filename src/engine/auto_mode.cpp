@@ -27,6 +27,7 @@ bool AutoMode::plan(const Components& k, std::span<const EntityId> bodies, doubl
   // roll_back).
   trial_ = !solver_path_ && fast_count_ > many_fast;
   solver_path_ = solver_path_ || trial_;
+  trial_ = trial_ && bodies.size() <= undo_bodies;  // beyond, the trial is the solver's path as it is
   ++(solver_path_ ? stats.solver_substeps : stats.course_substeps);
   return solver_path_;
 }
@@ -130,7 +131,7 @@ void AutoMode::keep(const Components& k) {
 // contacts have e = 1, are put back as they were and swept from the start.
 void AutoMode::roll_back(Components& k, std::span<const EntityId> bodies, std::span<const ContactConstraint> contacts) {
   if (any_undone_) std::fill(undone_.begin(), undone_.end(), 0), any_undone_ = false;
-  if (!trial_ || bodies.size() > undo_bodies) return;
+  if (!trial_) return;
   undone_.resize(k.size(), 0);
   root_.resize(k.size());
   islands_.resize(k.size());
