@@ -89,6 +89,8 @@ void print_summary(std::ostream& out, const World& w, const Summary& s, const st
     << std::setprecision(4) << "physics ms/step: " << w.times.total_ms_per_step() << " total, " << stage_times(w)
     << "\n";
   if (w.params.solver == Solver::automatic) o << "auto:            " << auto_line(w) << "\n";
+  if (const auto n = w.ccd.stats.capped_substeps; n > 0)  // Ccd::resolve: the bodies still to meet something stopped
+    o << "ccd:             " << n << " substeps over budget (bodies stopped where they met for the rest of the substep; docs/numerics.md)\n";
   if (const std::string a = advice(w); !a.empty()) o << "note:            " << a << "\n";
   out << o.str();
 }

@@ -16,13 +16,18 @@ bool AutoMode::plan(const Components& k, std::span<const EntityId> bodies, doubl
   started_ = true;
   if (hold_left_ > 0) --hold_left_;
   if (start_set_ || start_.size() != k.size()) start_.assign(k.size(), 0.0), start_set_ = false;
-  mark_fast(k, bodies, h);
+  mark_fast(k, bodies, h, true);
   // Under gravity, the solver too when bodies bounce (the course's pass
   // reflects the whole substep's kick: the e = 1 long run's energy creeps
   // up) or when a body is fast: what it lands on may be a pile, and CCD
   // alone would carry it down the pile one impact at a time, without end.
   const bool g = !Vector::is_zero(gravity);
-  solver_path_ = first_ || hold_left_ > 0 || fast_count_ > many_fast || (g && (fast_count_ > 0 || bouncy(k, bodies)));
+  solver_path_ = first_ || hold_left_ > 0 || (g && (fast_count_ > 0 || bouncy(k, bodies)));
+  // Many fast bodies without gravity: the solver's path too, on trial (see
+  // roll_back).
+  trial_ = !solver_path_ && fast_count_ > many_fast;
+  solver_path_ = solver_path_ || trial_;
+  trial_ = trial_ && bodies.size() <= undo_bodies;  // beyond, the trial is the solver's path as it is
   ++(solver_path_ ? stats.solver_substeps : stats.course_substeps);
   return solver_path_;
 }
@@ -38,38 +43,143 @@ bool AutoMode::bouncy(const Components& k, std::span<const EntityId> bodies) {
 // from. Sides do not change from one substep to the next, so one pass uses
 // the last substep's thinnest and checks it, and runs again only when it
 // changed (the first substep, a thinner body added, the thinnest removed).
-void AutoMode::mark_fast(const Components& k, std::span<const EntityId> bodies, double h) {
+// Then, if `closing`, the pairs of bodies that close faster than that
+// (mark_closing).
+void AutoMode::mark_fast(const Components& k, std::span<const EntityId> bodies, double h, bool closing) {
   fast_.resize(k.size());
   // Raw pointers: a byte store may alias anything, and through the vectors
   // every iteration would load their data pointers again.
   const Rect* box = k.box.data();
   const Vector* velocity = k.velocity.data();
   std::uint8_t* fast = fast_.data();
+  double d1 = 0, d2 = 0;  // the two largest squared displacements of the bodies that are not fast
   for (;;) {
     const double world_thinnest = thinnest_;
     int thinnest = std::numeric_limits<int>::max();
     std::size_t count = 0;
+    d1 = d2 = 0;
     for (const EntityId e : bodies) {
       const int side = std::min(box[e].width, box[e].height);
       thinnest = std::min(thinnest, side);
       const double reach = CcdSelection::reach(side, world_thinnest);
       const double dx = h * velocity[e].x, dy = h * velocity[e].y;
-      const bool is_fast = dx * dx + dy * dy > reach * reach;  // squared: no root per body
+      const double d = dx * dx + dy * dy;
+      const bool is_fast = d > reach * reach;  // squared: no root per body
       fast[e] = is_fast;
       count += is_fast;
+      if (!is_fast && d > d2) (d > d1 ? d2 = d1, d1 = d : d2 = d);
     }
     fast_count_ = count;
-    if (static_cast<double>(thinnest) == thinnest_ || bodies.empty()) return;
+    if (static_cast<double>(thinnest) == thinnest_ || bodies.empty()) break;
     thinnest_ = thinnest;
   }
+  // Two bodies that are not fast close at most sqrt(d1) + sqrt(d2), and a
+  // pair tunnels only past half its two sides, at least the thinnest.
+  if (closing && std::sqrt(d1) + std::sqrt(d2) > thinnest_) mark_closing(k, bodies, h, d1, d2);
+}
+
+// Closing speeds: two bodies, each within its reach, may still approach each
+// other by more than half their two sides in a substep (head on, each at
+// their reach: twice it), and pass through each other. The bodies that may
+// be in such a pair (their displacement plus the largest other one exceeds
+// their reach) are the candidates; of them, the pairs whose swept boxes meet
+// and whose relative displacement h·|v_c - v_b| exceeds half their thinnest
+// sides are marked fast, both bodies (a sort on x and a sweep, not all pairs).
+// sq1 and sq2: the two largest squared displacements of the bodies not fast.
+void AutoMode::mark_closing(const Components& k, std::span<const EntityId> bodies, double h, double sq1, double sq2) {
+  std::vector<SweptBox>& c = closing_;
+  c.clear();
+  for (const EntityId e : bodies) {
+    if (fast_[e]) continue;
+    const Vector v = k.velocity[e], p = k.position[e];
+    const double dx = h * v.x, dy = h * v.y, sq = dx * dx + dy * dy;  // as mark_fast, to the bit
+    const double other = std::sqrt(sq == sq1 ? sq2 : sq1);
+    if (std::sqrt(sq) + other <= selection().reach(k, e)) continue;
+    c.push_back({std::min(p.x, p.x + dx), std::max(p.x, p.x + dx) + k.box[e].width, std::min(p.y, p.y + dy),
+                 std::max(p.y, p.y + dy) + k.box[e].height, e});
+  }
+  std::sort(c.begin(), c.end(), [](const SweptBox& a, const SweptBox& b) { return a.x0 < b.x0 || (a.x0 == b.x0 && a.e < b.e); });
+  const auto side = [&](EntityId e) { return static_cast<double>(std::min(k.box[e].width, k.box[e].height)); };
+  for (std::size_t i = 0; i < c.size(); ++i)
+    for (std::size_t j = i + 1; j < c.size() && c[j].x0 < c[i].x1; ++j) {
+      if (!(c[j].y0 < c[i].y1 && c[i].y0 < c[j].y1)) continue;
+      const EntityId a = c[i].e, b = c[j].e;
+      const Vector d = h * (k.velocity[a] - k.velocity[b]);
+      const double limit = 0.5 * (side(a) + side(b));
+      if (Vector::dot(d, d) <= limit * limit) continue;
+      fast_count_ += !fast_[a] + !fast_[b];
+      fast_[a] = fast_[b] = 1;
+    }
+}
+
+void AutoMode::keep(const Components& k) {
+  if (!trial_) return;
+  kept_position_ = k.position;
+  kept_velocity_ = k.velocity;
+}
+
+// The solver takes the impacts of a substep together: a body with two
+// contacts that pushed it, one of them a bounce, has them solved at once and
+// the bounce relaxed again (Poisson's restitution with the after-bounce
+// pass), which loses energy (a fast e = 1 gas of 8 px blocks at 2 px/ms lost
+// 60 % in 3000 frames; an isolated pair keeps it to rounding), and its energy
+// guard scales back the bounces of a whole island. CCD takes impacts one
+// after the other, exactly, but costs more where such chains are rare (the
+// matrix's 1 px blocks). So the solver is tried, and the islands (bodies
+// joined by the solver's contacts, as its guard joins them: through finite
+// bodies) that had such a chain, or whose energy changed though all their
+// contacts have e = 1, are put back as they were and swept from the start.
+void AutoMode::roll_back(Components& k, std::span<const EntityId> bodies, std::span<const ContactConstraint> contacts) {
+  if (any_undone_) std::fill(undone_.begin(), undone_.end(), 0), any_undone_ = false;
+  if (!trial_) return;
+  undone_.resize(k.size(), 0);
+  root_.resize(k.size());
+  islands_.resize(k.size());
+  for (const EntityId e : bodies) root_[e] = e, islands_[e] = {};
+  const auto find = [&](EntityId e) {
+    while (root_[e] != e) e = root_[e] = root_[root_[e]];
+    return e;
+  };
+  for (const ContactConstraint& ct : contacts)
+    if (ct.wc > 0.0 && ct.wb > 0.0) root_[find(ct.c)] = find(ct.b);
+  // Per body, its pushing contacts (1: one, 2: a bounce among them, 3: a chain).
+  for (const ContactConstraint& ct : contacts) {
+    if (!(ct.lambda + ct.lambda2 > 0.0)) continue;  // no impulse: it changed nothing
+    const std::uint8_t kind = !ct.resting && ct.restitution > 0.0 ? 2 : 1;
+    for (const EntityId e : {ct.c, ct.b})
+      if (std::isfinite(k.mass[e])) undone_[e] = undone_[e] != 0 && (undone_[e] | kind) > 1 ? 3 : std::max(undone_[e], kind);
+    if (ct.restitution < 1.0) islands_[find(std::isfinite(k.mass[ct.c]) ? ct.c : ct.b)].elastic = false;
+  }
+  for (const EntityId e : bodies) {
+    if (!std::isfinite(k.mass[e])) continue;
+    Island& i = islands_[find(e)];
+    i.chain = i.chain || undone_[e] == 3;
+    i.before += 0.5 * k.mass[e] * Vector::dot(kept_velocity_[e], kept_velocity_[e]);
+    i.after += 0.5 * k.mass[e] * Vector::dot(k.velocity[e], k.velocity[e]);
+  }
+  std::size_t count = 0;
+  for (const EntityId e : bodies) {
+    const Island& i = islands_[find(e)];
+    undone_[e] = std::isfinite(k.mass[e]) && (i.chain || (i.elastic && std::abs(i.after - i.before) > 1e-12 * i.before));
+    if (!undone_[e]) continue;
+    k.position[e] = kept_position_[e], k.velocity[e] = kept_velocity_[e];
+    fast_count_ += !fast_[e];
+    fast_[e] = 1, start_[e] = 0.0;
+    ++count;
+  }
+  any_undone_ = count > 0;
+  stats.undone += static_cast<std::int64_t>(count);
 }
 
 void AutoMode::after_solver(const Components& k, std::span<const EntityId> bodies,
                             std::span<const ContactConstraint> contacts, double h) {
   stats.contacts += static_cast<std::int64_t>(contacts.size());
   pressed_.clear();
+  // On trial, impacts do not count: a fast gas's pairs meet again and again,
+  // and holding the solver for them would give it their chains.
   for (const ContactConstraint& ct : contacts)
-    if (ct.wc > 0.0 && ct.wb > 0.0 && ct.lambda + ct.lambda2 > 0.0) pressed_.push_back(Pair{ct.c, ct.b}.key());
+    if (ct.wc > 0.0 && ct.wb > 0.0 && ct.lambda + ct.lambda2 > 0.0 && !(trial_ && !ct.resting))
+      pressed_.push_back(Pair{ct.c, ct.b}.key());
   count_pressed();
   if (first_ && !pressed_.empty()) hold_left_ = hold;  // a pile from the start
   // The solver's contacts were found along each body's whole swept path
@@ -77,9 +187,10 @@ void AutoMode::after_solver(const Components& k, std::span<const EntityId> bodie
   // had one and is still fast may meet something else within the substep.
   // It is swept from its impact time on (the solver's impact_time shifted it
   // so that its line from then on is its motion; the earliest of its
-  // impacts, as there).
-  mark_fast(k, bodies, h);
-  if (fast_count_ == 0) return;
+  // impacts, as there). Pairs closing fast are not looked for again: the
+  // solver's speculative contacts took their first impact too.
+  mark_fast(k, bodies, h, false);
+  if (fast_count_ == 0 && !trial_) return;  // on trial, roll_back may sweep bodies beside the impacted ones
   impacted_.assign(k.size(), 0);
   for (const ContactConstraint& ct : contacts) {
     if (ct.resting) continue;

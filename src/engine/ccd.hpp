@@ -65,9 +65,12 @@ class Ccd {
   // Collision system's, in registration order), as described above. A
   // substep resolves at most 16·n + 128 impacts; past that (an inelastic
   // collapse in a resting stack, a light body squeezed between two heavy
-  // ones, which takes ~π·sqrt(M/m) impacts) every body stops where it is at
-  // that moment for the rest of the substep: no tunnelling, no energy or
-  // momentum error, but lost time, counted in stats.capped_substeps.
+  // ones, which takes ~π·sqrt(M/m) impacts) each body still to meet
+  // something stops at its next impact for the rest of the substep, with the
+  // velocity it has then (the gravity kick after it taken back), and the
+  // others move on: no tunnelling, no energy gained, but time lost for the
+  // stopped ones, counted in stats.capped_substeps (the headless summary's
+  // `ccd: N substeps over budget`).
   // Each impact is reported to `events` (which keeps it only if enabled).
   // With a selection, only the pairs of a selected body are swept.
   void resolve(Components& k, std::span<const EntityId> entities, double h, Vector gravity, BroadPhase& broadphase,

@@ -142,9 +142,11 @@ void World::auto_before_move(std::span<const EntityId> bodies, double h) {
   if (automatic.plan(components, bodies, h, params.gravity)) {
     SolverSettings s = solver_settings(params);
     s.impacts = true;
+    automatic.keep(components);
     contact_solver.solve_velocities(components, bodies, h, params.gravity, s, broadphase, times);
-    record_solver_contacts();
     automatic.after_solver(components, bodies, contact_solver.constraints(), h);
+    automatic.roll_back(components, bodies, contact_solver.constraints());
+    record_solver_contacts();
   }
   if (automatic.fast_count() == 0) return;
   automatic.stats.swept += static_cast<std::int64_t>(automatic.fast_count());
@@ -173,6 +175,7 @@ void World::record_solver_contacts() {
   const auto constraints = contact_solver.constraints();
   for (std::size_t i = 0; i < constraints.size(); ++i) {
     const ContactConstraint& ct = constraints[i];
+    if (params.solver == Solver::automatic && (automatic.undone(ct.c) || automatic.undone(ct.b))) continue;
     const double jn = ct.lambda + ct.lambda2 + (ct.resting ? 0.0 : ct.restitution * ct.lambda);
     const double jt = rows.empty() ? 0.0 : rows[i].lambda + rows[i].lambda2;
     if (jn > 0.0) events.touch(ct.c, ct.b, axis_normal[ct.axis], jn, jt);

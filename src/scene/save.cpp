@@ -43,7 +43,9 @@ SceneSpec scene_of(const World& w, const SceneSpec& from, std::span<const BlockR
     imp.pair = {new_id[imp.pair.c], new_id[imp.pair.b]};
     state.warm_start.push_back(imp);
   }
-  if (w.params.solver == Solver::automatic) {
+  // Before its first frame auto has no state yet: its first substep looks with
+  // the solver (AutoMode::plan), which a restored state would skip.
+  if (w.params.solver == Solver::automatic && w.frame > 0) {
     AutoState a = w.automatic.state();
     std::erase_if(a.pressed, [&](const AutoState::Run& r) { return !w.alive(r.pair.c) || !w.alive(r.pair.b); });
     for (AutoState::Run& r : a.pressed) r.pair = {new_id[r.pair.c], new_id[r.pair.b]};

@@ -7,7 +7,8 @@
 // systems, game), each body's part in a game (tag, strength, a platform's
 // travel, with where it started and its direction, so that it turns back
 // where it would have) and a "state" key with the frame and whatever the
-// next step reads beyond the bodies: the stable solver's warm-start impulses.
+// next step reads beyond the bodies: the stable solver's warm-start impulses
+// and, after the first frame, the auto mode's choice state.
 // Loading it and running k frames gives, bit for bit, the dump of running
 // on k frames without stopping, in every mode (tests/test_save.cpp).
 // Destroyed bodies are left out: the others' ids close up, in order.
