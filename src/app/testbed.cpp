@@ -437,11 +437,12 @@ Vector Testbed::fling(Vector pull) {
 
 // Where a block launched from `from` at `v` would be, every preview_ms, as
 // the course's integrator moves it (v += g·h, then x += v·h) under gravity
-// alone, until it leaves the world: the aiming preview (no collision, no
-// drag). None for a click.
+// alone, until it reaches the walls or leaves the world: the aiming preview
+// (no collision, no drag). None for a click.
 std::vector<Vector> Testbed::trajectory(Vector from, Vector v) const {
   if (Vector::is_zero(v)) return {};
   const Params& p = world_->params;
+  const double t = scene().walls ? wall_thickness : 0.0;
   const double h = p.substep();
   const int every = std::max(1, static_cast<int>(std::lround(preview_ms / h)));
   std::vector<Vector> dots;
@@ -449,7 +450,7 @@ std::vector<Vector> Testbed::trajectory(Vector from, Vector v) const {
   for (int i = 1; i * h <= preview_span_ms; ++i) {
     v = v + h * p.gravity;
     x = x + h * v;
-    if (x.x < 0 || x.y < 0 || x.x > scene().width || x.y > scene().height) break;
+    if (x.x < t || x.y < t || x.x > scene().width - t || x.y > scene().height - t) break;
     if (i % every == 0) dots.push_back(x);
   }
   return dots;
