@@ -474,7 +474,7 @@ WEB_FLAGS     := --target=wasm32-wasi -std=c++20 $(WEB_OPT) -fwasm-exceptions -W
                  -Isrc -Itests -isystem $(WEB)/include -DJSON_HAS_FILESYSTEM=0 -DJSON_HAS_EXPERIMENTAL_FILESYSTEM=0 -MMD -MP
 # (src/scene/save.cpp: the save key S of the command line, with std::filesystem.)
 WEB_APP_SRC   := src/app/testbed.cpp src/app/testbed_replay.cpp src/app/style.cpp src/app/input_log.cpp \
-                 src/app/headless.cpp src/app/dump.cpp src/app/overlay.cpp
+                 src/app/headless.cpp src/app/dump.cpp src/app/overlay.cpp src/app/camera.cpp
 WEB_SRC       := $(CORE_SRC) $(filter-out src/scene/save.cpp,$(SCENE_SRC)) $(GAMES_SRC) $(WEB_APP_SRC) $(wildcard web/*.cpp)
 WEB_OBJ       := $(WEB_SRC:%.cpp=$(WEB)/obj/%.o)
 # The exception runtime outside the link-time optimiser: clang 14's inlines

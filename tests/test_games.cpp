@@ -96,6 +96,31 @@ BOOST_AUTO_TEST_CASE(the_player_runs_and_collects_a_coin_on_contact) {
   BOOST_TEST(position(platformer(tb).player()).x > 150.0);
 }
 
+// docs/games.md: take the coins, then the flag. Running into the flag with
+// a coin still out wins nothing (the HUD says why); with every coin taken
+// on the way, the same run wins.
+BOOST_AUTO_TEST_CASE(the_flag_wins_only_once_every_coin_is_taken) {
+  const auto run = [](const char* coin_pos, int frames) {
+    const std::string text = std::string(R"({"game": {"kind": "platformer"}, "world": {"gravity": [0, 0.0015], "walls": false, "restitution": 0},
+      "blocks": [{"pos": [0, 560], "size": [800, 40], "mass": "inf"},
+                 {"pos": [40, 528], "size": [24, 32], "mass": 1, "tag": "player"},
+                 {"pos": )") + coin_pos + R"(, "size": [16, 16], "mass": "inf", "sensor": true, "tag": "coin"},
+                 {"pos": [300, 500], "size": [24, 60], "mass": "inf", "sensor": true, "tag": "goal"}]})";
+    Testbed tb({parse_scene(text, "flag.json")}, 0);
+    play(tb, frames, {{0, press(key::right)}});
+    return tb;
+  };
+  const Testbed at_flag = run("[600, 300]", 63);  // out of reach; the player in the flag
+  BOOST_TEST(at_flag.outcome() == Level::Outcome::playing);
+  BOOST_TEST(has(at_flag.level()->hud().front(), "the flag wants every coin first"), at_flag.level()->hud().front());
+  const Testbed missing = run("[600, 300]", 120);  // past it
+  BOOST_TEST(missing.outcome() == Level::Outcome::playing);
+  BOOST_TEST(platformer(missing).coins() == 0);
+  const Testbed taken = run("[150, 540]", 120);  // on the way
+  BOOST_TEST(platformer(taken).coins() == 1);
+  BOOST_TEST(taken.outcome() == Level::Outcome::won);
+}
+
 BOOST_AUTO_TEST_CASE(the_player_jumps_only_from_the_ground) {
   Testbed tb = level("platformer");
   play(tb, 10);

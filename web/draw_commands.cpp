@@ -24,10 +24,10 @@ int Commands::text(const std::string& s, int x, int y, Color c) {
   return web::line_height;
 }
 
-void render(const World& world, const View& view, int width, Commands& out) {
+void render(const World& world, const View& view, Commands& out) {
   out.clear();
   if (world.declares(SystemId::draw)) Overlay::bodies(world, view, out);
-  Overlay::over(world, view, width, out);
+  Overlay::over(world, view, out);
 }
 
 }  // namespace physics::web

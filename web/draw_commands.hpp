@@ -18,6 +18,7 @@ namespace physics::web {
 
 enum Op { fill = 1, stroke = 2, line = 3, text = 4 };
 inline constexpr int line_height = 17;  // px, 14 px DejaVu Sans Mono's line skip
+inline constexpr double char_width = 8.5;  // px, its advance (8.43), rounded up
 
 // The overlays' primitives (app/overlay.hpp) as commands.
 class Commands final : public Painter {
@@ -28,6 +29,7 @@ class Commands final : public Painter {
   void line(Vector a, Vector b, Color c) override;
   int text(const std::string& s, int x, int y, Color c) override;
   int line_height() const override { return web::line_height; }
+  double char_width() const override { return web::char_width; }
   const std::vector<float>& ops() const { return ops_; }
   const std::string& texts() const { return texts_; }  // one line per text command, '\n' after each
 
@@ -39,7 +41,7 @@ class Commands final : public Painter {
 };
 
 // The window's picture of `world` and `view` (Window::render: app/overlay's
-// drawing) on a width-wide canvas, into `out` (cleared first).
-void render(const World& world, const View& view, int width, Commands& out);
+// drawing, through the view's camera) into `out` (cleared first).
+void render(const World& world, const View& view, Commands& out);
 
 }  // namespace physics::web

@@ -10,13 +10,14 @@ const ctx = canvas.getContext('2d');
 const select = document.getElementById('scene');
 const status = document.getElementById('status');
 const errorBox = document.getElementById('error');
-const Kind = { quit: 0, key: 1, mouse_down: 2, mouse_up: 3, mouse_move: 4, key_up: 5 };  // InputEvent::Kind
+const Kind = { quit: 0, key: 1, mouse_down: 2, mouse_up: 3, mouse_move: 4, key_up: 5, wheel: 6 };  // InputEvent::Kind
 
 // KeyboardEvent.key to SDL's key codes (input/keys.hpp): letters and digits
 // are their lower-case ASCII.
 const SPECIAL = { Escape: 27, Tab: 9, ' ': 32, Enter: 13, ArrowRight: 0x4000004f, ArrowLeft: 0x40000050,
                   ArrowDown: 0x40000051, ArrowUp: 0x40000052 };
 function sdlKey(e) {
+  if (e.key === 'Shift') return e.code === 'ShiftRight' ? 0x400000e5 : 0x400000e1;  // Shift+drag pans
   if (e.key in SPECIAL) return SPECIAL[e.key];
   return e.key.length === 1 ? e.key.toLowerCase().charCodeAt(0) : 0;
 }
@@ -129,6 +130,9 @@ canvas.addEventListener('keyup', (e) => { const k = sdlKey(e); if (k) e.preventD
 canvas.addEventListener('mousedown', (e) => { canvas.focus(); send(Kind.mouse_down, 0, ...at(e), e.button + 1); e.preventDefault(); });
 canvas.addEventListener('mouseup', (e) => send(Kind.mouse_up, 0, ...at(e), e.button + 1));
 canvas.addEventListener('mousemove', (e) => send(Kind.mouse_move, 0, ...at(e)));
+// The wheel zooms the testbed's camera about the pointer, a notch a step.
+canvas.addEventListener('wheel', (e) => { e.preventDefault(); if (e.deltaY) send(Kind.wheel, e.deltaY < 0 ? 1 : -1, ...at(e)); },
+                        { passive: false });
 canvas.addEventListener('contextmenu', (e) => e.preventDefault());
 select.addEventListener('change', () => open(select.value));
 

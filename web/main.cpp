@@ -170,7 +170,7 @@ WEB_EXPORT(web_advance) int web_advance(double elapsed_ms) { return page.tb->adv
 
 // The frame's drawing commands (web/draw_commands.hpp): their floats' count.
 WEB_EXPORT(web_draw) int web_draw(double fps, double draw_ms) {
-  web::render(page.tb->world(), page.tb->view(fps, draw_ms), page.tb->scene().width, page.commands);
+  web::render(page.tb->world(), page.tb->view(fps, draw_ms), page.commands);
   return static_cast<int>(page.commands.ops().size());
 }
 WEB_EXPORT(web_ops) const float* web_ops() { return page.commands.ops().data(); }

@@ -48,8 +48,9 @@ Overlays overlays(const std::string& s) {
     else if (item == "contacts") o.contacts = true;
     else if (item == "help") o.help = true;
     else if (item == "nohud") o.hud = false;
+    else if (item == "times") o.times = true;
     else if (item == "all") o.aabb = o.velocity = o.contacts = true;
-    else bad("--overlays", "must be a comma-separated list of aabb, velocity, contacts, help, nohud, all", s);
+    else bad("--overlays", "must be a comma-separated list of aabb, velocity, contacts, help, nohud, times, all", s);
   }
   return o;
 }
@@ -116,7 +117,7 @@ po::options_description descriptions() {
        "same physics bit for bit; the scene is the log's unless --scene is given; --frames N stops after N steps")
       ("strict", "exit with code 3 when a body leaves the world (a non-finite value always does)")
       ("overlays", po::value<std::string>()->value_name("LIST"),
-       "window overlays at start: aabb,velocity,contacts,help,nohud or all")
+       "window overlays at start: aabb,velocity,contacts,help,nohud,times or all")
       ("style", po::value<std::string>()->value_name("plain|speed|sprite"),
        "drawing style (window and screenshots): the course's boxes (plain), movable blocks coloured by speed "
        "from blue at rest to red at 1 px/ms and above (speed), or a shape in each box by its tag (sprite)");

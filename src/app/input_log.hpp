@@ -12,7 +12,9 @@
 //   35,key_up,1073741903,0,0,0
 //   812,end,0,0,0,0
 //
-// kind: key, key_up, mouse_down, mouse_up, mouse_move, quit; the last line is
+// x, y: a mouse event's world point, px (the testbed maps the window's
+// through its camera first: Testbed::live). kind: key, key_up, mouse_down,
+// mouse_up, mouse_move, quit (never wheel: the camera's); the last line is
 // `end`, the tick the recording stopped at. Ticks never decrease, and are at
 // most max_log_ticks.
 #pragma once

@@ -59,6 +59,7 @@ int run_window(Cli::Session& s) {
     throw Cli::NoWindow(e.what());
   }
   if (!win->hud_warning().empty()) *s.err << "warning: " << win->hud_warning() << "\n";
+  tb.set_viewport({double(win->width()), double(win->height())});
   Cli::Recorder& rec = *s.recorder;
   rec.start(tb.world());
   tb.on_step = [&](const World& w) { rec.after_step(w); };

@@ -18,12 +18,59 @@ constexpr Color penetration_colour{0, 120, 255, 255};
 constexpr Color contact_colour{255, 200, 0, 255};  // the shared edge
 constexpr Color ray_colour{0, 150, 150, 255};
 constexpr Color sling_colour{255, 140, 0, 255};
+constexpr Color preview_colour{120, 60, 0, 255};
+constexpr Color beyond_colour{200, 200, 205, 255};  // the window outside the world
+constexpr Color panel_colour{255, 255, 240, 225};
+constexpr Color panel_edge{60, 60, 60, 255};
+constexpr int margin = 8, pad = 6;  // px: a panel from the window's edge, its text from its own
 constexpr Color ink{20, 20, 20, 255};
 constexpr Color white{255, 255, 255, 255};
 
 constexpr double velocity_scale = 100.0;   // px of arrow per px/ms: the distance covered in 100 ms
 constexpr double normal_length = 24.0;     // px
 constexpr double penetration_scale = 4.0;  // penetrations are a few px: drawn 4x
+
+std::string top_speed_text() {
+  char top[32];
+  std::snprintf(top, sizeof top, ">= %g px/ms", Styles::top_speed);
+  return top;
+}
+
+// Text metrics of the monospace HUD font.
+int text_px(const Painter& p, std::size_t chars) { return static_cast<int>(std::ceil(chars * p.char_width())); }
+std::size_t text_chars(const Painter& p, int width) {
+  return static_cast<std::size_t>(std::max(0.0, (width - 2 * margin - 2 * pad) / p.char_width()));
+}
+std::vector<std::string> wrap_all(const std::vector<std::string>& lines, std::size_t chars) {
+  std::vector<std::string> out;
+  for (const std::string& l : lines)
+    for (std::string& w : wrap(l, chars)) out.push_back(std::move(w));
+  return out;
+}
+std::size_t longest(const std::vector<std::string>& lines) {
+  std::size_t n = 0;
+  for (const std::string& l : lines) n = std::max(n, l.size());
+  return n;
+}
+
+struct Box {
+  int x, y, w, h;
+};
+// `lines` on a panel with its top-left corner at (x, y), at least `min_w`
+// wide, with `extra_h` px left free under them; returns the panel.
+Box panel(Painter& p, const std::vector<std::string>& lines, int x, int y, int min_w, int extra_h) {
+  const int lh = p.line_height();
+  const Box b{x, y, std::max(min_w, text_px(p, longest(lines))) + 2 * pad,
+              static_cast<int>(lines.size()) * lh + 2 * pad + extra_h};
+  p.fill_box(b.x, b.y, b.w, b.h, panel_colour);
+  p.stroke_box(b.x, b.y, b.w, b.h, panel_edge);
+  int ty = y + pad;
+  for (const std::string& s : lines) {
+    p.text(s, x + pad, ty, ink);
+    ty += lh;
+  }
+  return b;
+}
 
 // Far-away bodies are not drawn (a renderer's float coordinates overflow).
 bool drawable(Vector p) { return std::abs(p.x) < 1e6 && std::abs(p.y) < 1e6; }
@@ -94,49 +141,111 @@ void ray(const RayView& r, Painter& p) {
   p.fill_box(end.x - 3, end.y - 3, 7, 7, ray_colour);
 }
 
-// The speed style's key, under the HUD lines: the ramp (Styles::speed_color)
+// The speed style's key, in the HUD panel: the ramp (Styles::speed_color)
 // as a bar from 0 to its top speed, with the end values. Returns the y below it.
+constexpr int bar_w = 160, bar_h = 12;
 int speed_legend(Painter& p, int x, int y) {
-  constexpr int bar_w = 160, bar_h = 12;
   const int left = p.text("speed 0", x, y, ink);
   const int bx = x + 70;
   for (int i = 0; i < bar_w; ++i)
     p.fill_rect({double(bx + i), double(y + 2)}, {1, bar_h}, Styles::speed_color(Styles::top_speed * i / (bar_w - 1)));
-  char top[32];
-  std::snprintf(top, sizeof top, ">= %g px/ms", Styles::top_speed);
-  const int right = p.text(top, bx + bar_w + 6, y, ink);
+  const int right = p.text(top_speed_text(), bx + bar_w + 6, y, ink);
   return y + std::max({left, right, bar_h + 4}) + 2;
 }
 
-// The HUD lines at the top left, then the key list in a panel at the right,
-// below them, so that neither hides the other.
-void texts(const View& view, int width, Painter& p) {
-  int y = 44;
-  for (const std::string& s : view.hud) y += p.text(s, 48, y, ink) + 2;
-  if (view.style == Style::speed && view.overlays.hud) y = speed_legend(p, 48, y + 2);
+// The HUD panel at the top left, then the key list's at the right, below
+// it, so that neither hides the other; both inside the view.
+void texts(const View& view, Painter& p) {
+  const int width = static_cast<int>(view.camera.view.x);
+  const std::size_t chars = text_chars(p, width);
+  const bool legend = view.style == Style::speed && view.overlays.hud;
+  int y = margin;
+  if (!view.hud.empty() || legend) {
+    const std::vector<std::string> lines = wrap_all(view.hud, chars);
+    const int lw = legend ? 76 + bar_w + text_px(p, top_speed_text().size()) : 0;
+    const Box b = panel(p, lines, margin, y, lw, legend ? p.line_height() + 6 : 0);
+    if (legend) speed_legend(p, margin + pad, b.y + b.h - pad - p.line_height() - 4);
+    y = b.y + b.h + margin;
+  }
   if (view.help.empty()) return;
-  const int px = width - 460, py = y + 8, ph = static_cast<int>(view.help.size()) * p.line_height() + 16;
-  p.fill_box(px, py, 410, ph, Color{255, 255, 240, 225});
-  p.stroke_box(px, py, 410, ph, Color{60, 60, 60, 255});
-  int hy = py + 8;
-  for (const std::string& s : view.help) hy += p.text(s, px + 10, hy, ink);
+  const std::vector<std::string> keys = wrap_all(view.help, chars);
+  const int w = std::min(width - 2 * margin, text_px(p, longest(keys)) + 2 * pad);
+  panel(p, keys, width - margin - w, y, 0, 0);
+}
+
+// The drag: the rubber band from the sling's two prongs to the pull, the
+// pouch there, and the dots of the aiming preview (a few screen px each,
+// whatever the zoom).
+void sling(const View& view, Painter& world, Painter& screen) {
+  const auto [from, to] = *view.sling;
+  const double half = Testbed::spawn_size / 2.0;
+  world.stroke_box(from.x - half, from.y - half, Testbed::spawn_size, Testbed::spawn_size, sling_colour);
+  line(world, from + Vector{-half, -half}, to, sling_colour);
+  line(world, from + Vector{half, -half}, to, sling_colour);
+  const Vector pouch = view.camera.to_screen(to);
+  if (drawable(pouch)) screen.fill_box(pouch.x - 3, pouch.y - 3, 7, 7, sling_colour);
+  for (const Vector d : view.preview)
+    if (const Vector s = view.camera.to_screen(d); drawable(s)) screen.fill_box(s.x - 2, s.y - 2, 4, 4, preview_colour);
 }
 
 }  // namespace
 
-void bodies(const World& world, const View& view, Painter& p) { Styles::draw_world(world, view.style, view.roles, p); }
-
-void over(const World& world, const View& view, int width, Painter& p) {
-  if (world.declares(SystemId::draw)) boxes_and_velocities(world, view, p);
-  contacts(view, p);
-  if (view.sling) {
-    const auto [from, to] = *view.sling;
-    line(p, from, to, sling_colour);
-    p.stroke_box(from.x - Testbed::spawn_size / 2.0, from.y - Testbed::spawn_size / 2.0, Testbed::spawn_size,
-                 Testbed::spawn_size, sling_colour);
+std::vector<std::string> wrap(const std::string& text, std::size_t chars) {
+  chars = std::max<std::size_t>(chars, 16);  // a continuation always moves on past its indent
+  std::vector<std::string> out;
+  std::string s = text;
+  while (s.size() > chars) {
+    std::size_t cut = s.rfind(' ', chars);
+    if (cut == std::string::npos || cut <= 2) cut = chars;
+    out.push_back(s.substr(0, cut));
+    s = "  " + s.substr(s[cut] == ' ' ? cut + 1 : cut);
   }
-  if (view.ray) ray(*view.ray, p);
-  if (p.line_height() > 0) texts(view, width, p);
+  out.push_back(s);
+  return out;
+}
+
+void bodies(const World& world, const View& view, Painter& p) {
+  // Around a world smaller than the view (centred), its edges show.
+  const Camera& c = view.camera;
+  const Vector lo = c.to_screen({0, 0}), hi = c.to_screen(c.world);
+  if (lo.x > 0 || lo.y > 0 || hi.x < c.view.x || hi.y < c.view.y) {
+    p.fill_box(0, 0, c.view.x, c.view.y, beyond_colour);
+    p.fill_box(lo.x, lo.y, hi.x - lo.x, hi.y - lo.y, white);
+  }
+  CameraPainter cp(view.camera, p);
+  Styles::draw_world(world, view.style, view.roles, cp);
+}
+
+void over(const World& world, const View& view, Painter& p) {
+  CameraPainter cp(view.camera, p);
+  if (world.declares(SystemId::draw)) boxes_and_velocities(world, view, cp);
+  contacts(view, cp);
+  if (view.sling) sling(view, cp, p);
+  if (view.ray) ray(*view.ray, cp);
+  if (p.line_height() > 0) texts(view, p);
 }
 
 }  // namespace physics::Overlay
+
+namespace physics {
+
+bool CameraPainter::seen(double x, double y, double w, double h) const {
+  return x + w >= 0 && y + h >= 0 && x <= c_.view.x && y <= c_.view.y;
+}
+
+void CameraPainter::fill_box(double x, double y, double w, double h, Color c) {
+  const Vector s = c_.to_screen({x, y});
+  if (seen(s.x, s.y, w * c_.scale, h * c_.scale)) p_.fill_box(s.x, s.y, w * c_.scale, h * c_.scale, c);
+}
+
+void CameraPainter::stroke_box(double x, double y, double w, double h, Color c) {
+  const Vector s = c_.to_screen({x, y});
+  if (seen(s.x, s.y, w * c_.scale, h * c_.scale)) p_.stroke_box(s.x, s.y, w * c_.scale, h * c_.scale, c);
+}
+
+void CameraPainter::line(Vector a, Vector b, Color c) {
+  const Vector sa = c_.to_screen(a), sb = c_.to_screen(b);
+  if (seen(std::min(sa.x, sb.x), std::min(sa.y, sb.y), std::abs(sb.x - sa.x), std::abs(sb.y - sa.y))) p_.line(sa, sb, c);
+}
+
+}  // namespace physics

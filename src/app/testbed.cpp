@@ -13,24 +13,6 @@
 namespace physics {
 
 namespace {
-// The stable solver's seven stages do not fit one HUD line of an 800 px
-// window: break a "a 1, b 2, ..." list after a comma once a line passes
-// `width` characters.
-std::vector<std::string> wrap(const std::string& text, std::string_view sep = ", ", std::size_t width = 88) {
-  std::vector<std::string> lines{""};
-  std::size_t from = 0;
-  while (from < text.size()) {
-    std::size_t to = text.find(sep, from);
-    to = to == std::string::npos ? text.size() : to + sep.size();
-    const std::string item = text.substr(from, to - from);
-    if (!lines.back().empty() && lines.back().size() + item.size() > width) lines.emplace_back("  ");
-    lines.back() += item;
-    from = to;
-  }
-  return lines;
-}
-}  // namespace
-namespace {
 
 constexpr Color spawn_color{255, 140, 0, 255};
 
@@ -84,6 +66,7 @@ Testbed::Testbed(std::vector<SceneSpec> scenes, std::size_t current, Overrides o
       overlays_(overlays), make_(make) {
   install(with_overrides(scenes_.at(current_), overrides_));
   record_contacts();
+  reframe();
 }
 
 // The world of `spec`, its bodies' roles and its game's level (SceneError if
@@ -129,6 +112,7 @@ void Testbed::restarted() {
   last_regions_.clear();
   acc_ms_ = 0.0;
   press_.reset();
+  reframe();
   if (on_reset) on_reset(*world_);
 }
 
@@ -175,6 +159,7 @@ void Testbed::step() {
   ++ticks_;
   after_step();
   if (level_ && outcome_ == Level::Outcome::playing) after_level_step();
+  if (const std::optional<Vec2> f = level_ ? level_->focus() : std::nullopt; f && following_) camera_.follow({f->x, f->y});
   if (world_->health.non_finite) {
     paused_ = true;
     say("stopped: " + Headless::non_finite_line(*world_) + " (R: reset)", false);
@@ -310,12 +295,7 @@ Testbed::Action Testbed::handle(const InputEvent& e) {
       const Vector from = *press_;
       press_.reset();
       // Slingshot: the block leaves from where the drag began, opposite to the drag.
-      const Vector pull = from - Vector{double(e.x), double(e.y)};
-      Vector v{};
-      if (Vector::norm(pull) > click_radius) {
-        v = fling_scale * pull;
-        if (const double speed = Vector::norm(v); speed > max_fling) v = (max_fling / speed) * v;
-      }
+      const Vector v = fling(from - Vector{double(e.x), double(e.y)});
       if (level_ && level_->launch(game_view_->id(), {from.x, from.y}, {v.x, v.y})) {
         roles_.resize(world_->components.size(), level_->role_of_new_body());
         return Action::none;
@@ -329,6 +309,7 @@ Testbed::Action Testbed::handle(const InputEvent& e) {
     case Kind::key_up:
       if (level_) level_->key(e.key, false);
       return Action::none;
+    case Kind::wheel: return Action::none;  // the camera's (live)
   }
   const int k = (e.key >= 'A' && e.key <= 'Z') ? e.key - 'A' + 'a' : e.key;
   switch (k) {
@@ -357,6 +338,7 @@ Testbed::Action Testbed::handle(const InputEvent& e) {
       if (!overlays_.contacts) last_contacts_.clear(), last_regions_.clear();
       break;
     case 'i': overlays_.hud = !overlays_.hud; break;
+    case 't': overlays_.times = !overlays_.times; break;
     case 's': slow_ = !slow_; break;
     case 'h': overlays_.help = !overlays_.help; break;
     default:
@@ -371,7 +353,7 @@ std::vector<std::string> Testbed::key_list(std::size_t scene_count) {
   // file given with --scene (it joins the list as the ninth).
   const std::size_t n = std::clamp<std::size_t>(scene_count, 1, 9);
   std::string digits = n == 1 ? "1      " : "1-" + std::to_string(n) + "    ";
-  return {"Space  pause / resume (also P; in the platformer, Space and the arrows are its keys)",
+  return {"Space  pause / resume (also P; the platformer's jump)",
           "N, ->  one step",
           "R      reset the scene",
           digits + (n == 9 ? "scene (9: the --scene file); Tab: next" : "choose a scene, Tab: next scene"),
@@ -381,7 +363,11 @@ std::vector<std::string> Testbed::key_list(std::size_t scene_count) {
           "A      AABBs",
           "V      velocity vectors",
           "C      contact normals and penetration vectors",
+          "wheel  zoom about the cursor",
+          "middle drag or Shift+drag: pan",
+          "F      camera: fit the world (or follow the player)",
           "I      HUD on/off",
+          "T      stage times on the HUD",
           "S      slow motion (x1/4)",
           "H      this list",
           "Enter  a game's next level, after a win",
@@ -397,11 +383,10 @@ void Testbed::add_measures(View& v, double fps, double draw_ms) const {
   std::snprintf(draw, sizeof draw, "  draw %.3f ms/frame", draw_ms);
   v.hud.push_back(options_line(world_->params, overlays_));
   const bool drawn = world_->declares(SystemId::draw);
-  for (std::string& line : wrap("ms/step: " + Headless::stage_times(*world_) + (drawn ? draw : "  draw off")))
-    v.hud.push_back(std::move(line));
+  // Long lines are wrapped to the window's width where they are drawn (app/overlay).
+  if (overlays_.times) v.hud.push_back("ms/step: " + Headless::stage_times(*world_) + (drawn ? draw : "  draw off"));
   if (v.ray && v.ray->hit) v.hud.push_back(ray_line(*v.ray->hit));
-  if (const std::string note = Headless::advice(*world_); !note.empty())
-    for (std::string& line : wrap("note: " + note, " ")) v.hud.push_back(std::move(line));
+  if (const std::string note = Headless::advice(*world_); !note.empty()) v.hud.push_back("note: " + note);
 }
 
 View Testbed::view(double fps, double draw_ms) const {
@@ -415,6 +400,7 @@ View Testbed::view(double fps, double draw_ms) const {
     const std::optional<Vec2> point = level_ ? level_->launch_point() : std::nullopt;
     const std::optional<Vector> origin = point ? std::optional<Vector>(Vector{point->x, point->y}) : std::nullopt;
     v.sling = origin ? std::pair{*origin, *origin + (mouse_ - *press_)} : std::pair{*press_, mouse_};
+    v.preview = trajectory(v.sling->first, fling(*press_ - mouse_));
   }
   if (ray_from_) {
     // Cast on every view: the bodies move under a ray held still.
@@ -438,7 +424,95 @@ View Testbed::view(double fps, double draw_ms) const {
     if (!message_.empty()) v.hud.push_back(message_);
   }
   if (overlays_.help) v.help = key_list(scenes_.size());
+  v.camera = camera_;
   return v;
+}
+
+Vector Testbed::fling(Vector pull) {
+  if (!(Vector::norm(pull) > click_radius)) return {};
+  const Vector v = fling_scale * pull;
+  const double speed = Vector::norm(v);
+  return speed > max_fling ? (max_fling / speed) * v : v;
+}
+
+// Where a block launched from `from` at `v` would be, every preview_ms, as
+// the course's integrator moves it (v += g·h, then x += v·h) under gravity
+// alone, until it reaches the walls or leaves the world: the aiming preview
+// (no collision, no drag). None for a click.
+std::vector<Vector> Testbed::trajectory(Vector from, Vector v) const {
+  if (Vector::is_zero(v)) return {};
+  const Params& p = world_->params;
+  const double t = scene().walls ? wall_thickness : 0.0;
+  const double h = p.substep();
+  const int every = std::max(1, static_cast<int>(std::lround(preview_ms / h)));
+  std::vector<Vector> dots;
+  Vector x = from;
+  for (int i = 1; i * h <= preview_span_ms; ++i) {
+    v = v + h * p.gravity;
+    x = x + h * v;
+    if (x.x < t || x.y < t || x.x > scene().width - t || x.y > scene().height - t) break;
+    if (i % every == 0) dots.push_back(x);
+  }
+  return dots;
+}
+
+void Testbed::set_viewport(Vector size) {
+  viewport_ = size;
+  reframe();
+}
+
+// The camera of a new world: its player followed at scale 1 (if the game
+// has one and F has not been undone by a pan), else the whole world fitted.
+void Testbed::reframe() {
+  const Vector world{double(scene().width), double(scene().height)};
+  const Vector view = viewport_.value_or(world);
+  const std::optional<Vec2> f = level_ ? level_->focus() : std::nullopt;
+  camera_ = f && following_ ? Camera::on({f->x, f->y}, world, view) : Camera::fit(world, view);
+}
+
+// The wheel, a pan (middle drag, or Shift and a left drag) and F: the
+// camera's, handled live only (the picture, never logged). Shift is only
+// watched: its key still goes on.
+bool Testbed::camera_input(const InputEvent& e) {
+  using Kind = InputEvent::Kind;
+  const Vector at{double(e.x), double(e.y)};
+  switch (e.kind) {
+    case Kind::wheel: camera_.zoom_about(at, std::pow(Camera::wheel_step, e.key)); return true;
+    case Kind::key:
+    case Kind::key_up:
+      if (e.key == key::lshift || e.key == key::rshift) shift_ = e.kind == Kind::key;
+      if (e.kind == Kind::key && (e.key == 'f' || e.key == 'F')) {
+        following_ = true;
+        reframe();
+        return true;
+      }
+      return false;
+    case Kind::mouse_down:
+      if (e.button != 2 && !(e.button == 1 && shift_)) return false;
+      pan_from_ = at, pan_button_ = e.button;
+      return true;
+    case Kind::mouse_move:
+      if (!pan_from_) return false;
+      camera_.pan(at - *pan_from_);
+      pan_from_ = at, following_ = false;
+      return true;
+    case Kind::mouse_up:
+      if (!pan_from_ || e.button != pan_button_) return false;
+      pan_from_.reset();
+      return true;
+    case Kind::quit: return false;
+  }
+  return false;
+}
+
+// A window event with its mouse point in world px (rounded: what the log
+// keeps, so the live click and its replay land on the same point).
+InputEvent Testbed::in_world(InputEvent e) const {
+  using Kind = InputEvent::Kind;
+  if (e.kind != Kind::mouse_down && e.kind != Kind::mouse_up && e.kind != Kind::mouse_move) return e;
+  const Vector w = camera_.to_world({double(e.x), double(e.y)});
+  e.x = static_cast<int>(std::lround(w.x)), e.y = static_cast<int>(std::lround(w.y));
+  return e;
 }
 
 }  // namespace physics

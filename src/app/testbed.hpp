@@ -8,7 +8,8 @@
 //   left click   spawn a block             left drag  fling it opposite to the drag (slingshot)
 //   right drag   a ray from the press point to the mouse: the first body it enters, point and normal
 //   A  AABBs     V  velocity vectors       C  contact normals and penetrations
-//   I  HUD on/off    S  slow motion (x1/4)   H  this key list     Esc/Q  quit
+//   I  HUD on/off    T  stage times on the HUD   S  slow motion (x1/4)   H  this key list   Esc/Q  quit
+//   wheel  zoom about the cursor   middle drag or Shift+drag  pan   F  camera back to fit (or follow the player)
 #pragma once
 
 #include <cstdint>
@@ -25,6 +26,7 @@
 #include "scene/scene.hpp"
 #include "engine/query.hpp"
 #include "api/view.hpp"
+#include "app/camera.hpp"
 #include "games/level.hpp"
 #include "engine/world.hpp"
 
@@ -34,8 +36,10 @@ namespace physics {
 struct InputEvent {
   // key: a key pressed (or repeated while held); key_up: released (the games
   // hold keys down; the testbed's own keys act on the press).
-  enum class Kind { quit, key, mouse_down, mouse_up, mouse_move, key_up } kind;
-  int key = 0;  // Kind::key, Kind::key_up
+  // wheel: the mouse wheel at (x, y), `key` notches (up > 0); the camera's
+  // only, never logged.
+  enum class Kind { quit, key, mouse_down, mouse_up, mouse_move, key_up, wheel } kind;
+  int key = 0;  // Kind::key, Kind::key_up; Kind::wheel: notches
   int x = 0, y = 0;
   int button = 0;  // 1 left, 2 middle, 3 right (SDL's numbering)
 };
@@ -44,6 +48,7 @@ struct InputLog;  // app/input_log.hpp: events with their ticks (--record, --rep
 
 struct Overlays {
   bool aabb = false, velocity = false, contacts = false, hud = true, help = false;
+  bool times = false;  // the stages' times on the HUD (T): off, a compact HUD
 };
 
 // Where a contact of the last step is: the overlap of the two boxes' x and
@@ -66,12 +71,14 @@ struct View {
   Overlays overlays;
   std::span<const Contact> contacts;  // the last step's collisions (none if it had none), if shown
   std::span<const ContactRegion> contact_regions;  // where each one is, in the same order
-  std::optional<std::pair<Vector, Vector>> sling;  // drag: from the press point to the mouse
+  std::optional<std::pair<Vector, Vector>> sling;  // drag: from the press point (a game's sling) to the pull
+  std::vector<Vector> preview;                     // a drag's flight under gravity, dots every preview_ms
   std::optional<RayView> ray;                      // right drag
   std::vector<std::string> hud;   // lines, top left
   std::vector<std::string> help;  // the key list, when H is on
   std::span<const BlockRole> roles;  // each body's part in a game (tag, strength), by entity id
   Style style = Style::plain;        // how the blocks are drawn (app/style.hpp)
+  Camera camera;                     // world to screen for all of the above but the HUD and key list
 };
 
 class Testbed {
@@ -84,6 +91,8 @@ class Testbed {
   static constexpr double max_fling = 2.0;      // px/ms: below a wall's 40 px per frame
   static constexpr int click_radius = 4;        // px: a shorter drag is a click
   static constexpr double message_ms = 2000.0;  // real ms a "no room there" stays on the HUD
+  static constexpr double preview_ms = 40.0;    // between two dots of the aiming preview
+  static constexpr double preview_span_ms = 2000.0;  // how far ahead it looks
 
   // `scenes` is the list keys 1-9 and Tab walk through; `overrides` (the
   // command line's values) apply to each of them; `make` builds each world
@@ -139,6 +148,14 @@ class Testbed {
   const Overlays& overlays() const { return overlays_; }
   const std::string& message() const { return message_; }
 
+  // The window's size, screen px (by default the world's: scale 1). The
+  // camera starts again from it: the world fitted, or its player followed.
+  void set_viewport(Vector size);
+  const Camera& camera() const { return camera_; }
+  // A slingshot drag's velocity (the pull: press point minus release
+  // point, world px): none for a click, at most max_fling.
+  static Vector fling(Vector pull);
+
   // Spawns a block centred on (x, y) with velocity v, unless it would
   // overlap a wall or another body or leave the world (then a message says
   // "no room there" for message_ms). Returns whether it did.
@@ -154,6 +171,10 @@ class Testbed {
 
  private:
   void rebuild();
+  void reframe();
+  bool camera_input(const InputEvent& e);
+  InputEvent in_world(InputEvent e) const;
+  std::vector<Vector> trajectory(Vector from, Vector v) const;
   void install(const SceneSpec& spec);
   void restarted();
   void add_measures(View& v, double fps, double draw_ms) const;
@@ -176,6 +197,13 @@ class Testbed {
   std::optional<Vector> press_;      // left button down: the slingshot
   std::optional<Vector> ray_from_;   // right button down: the ray
   Vector mouse_{};
+  // The camera (picture only): the view's size, whether it follows the
+  // game's player (F; a pan stops it), a pan's last point and button, Shift.
+  Camera camera_;
+  std::optional<Vector> viewport_;
+  bool following_ = true, shift_ = false;
+  std::optional<Vector> pan_from_;
+  int pan_button_ = 0;
   void pump();  // replay: handles the logged events due at this tick
   void record_event(const InputEvent& e);
   std::int64_t ticks_ = 0;

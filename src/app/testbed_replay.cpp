@@ -29,7 +29,11 @@ void Testbed::pump() {
   }
 }
 
-Testbed::Action Testbed::live(const InputEvent& e) {
+// The window's events: the camera's first (live or replaying), then the
+// rest with the mouse in world px, as handle() and the log take them.
+Testbed::Action Testbed::live(const InputEvent& window_event) {
+  if (camera_input(window_event)) return Action::none;
+  const InputEvent e = in_world(window_event);
   if (!replay_) return handle(e);
   const bool quit = e.kind == InputEvent::Kind::quit ||
                     (e.kind == InputEvent::Kind::key && (e.key == key::escape || e.key == 'q' || e.key == 'Q'));

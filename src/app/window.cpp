@@ -19,7 +19,7 @@ namespace physics {
 // input/keys.hpp's key codes are SDL's.
 static_assert(key::escape == SDLK_ESCAPE && key::tab == SDLK_TAB && key::space == SDLK_SPACE &&
               key::enter == SDLK_RETURN && key::right == SDLK_RIGHT && key::left == SDLK_LEFT && key::up == SDLK_UP &&
-              'a' == SDLK_a && '1' == SDLK_1);
+              'a' == SDLK_a && '1' == SDLK_1 && key::lshift == SDLK_LSHIFT && key::rshift == SDLK_RSHIFT);
 
 namespace {
 
@@ -66,11 +66,21 @@ struct Window::Impl {
   int width, height;
 };
 
-Window::Window(int width, int height, const std::string& title) : impl_(std::make_unique<Impl>()) {
+// The screen's room for a window: its usable bounds (without the task
+// bars), less a title bar's height; unknown, the world's size.
+Vector usable_area(int world_width, int world_height) {
+  SDL_Rect r;
+  if (SDL_GetDisplayUsableBounds(0, &r) != 0 || r.w <= 0 || r.h <= 0) return {double(world_width), double(world_height)};
+  constexpr int title_bar = 32;
+  return {double(r.w), double(std::max(1, r.h - title_bar))};
+}
+
+Window::Window(int world_width, int world_height, const std::string& title) : impl_(std::make_unique<Impl>()) {
   Impl& w = *impl_;
-  w.width = width;
-  w.height = height;
-  w.window.reset(SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, width, height,
+  const Vector size = window_size({double(world_width), double(world_height)}, usable_area(world_width, world_height));
+  w.width = static_cast<int>(size.x);
+  w.height = static_cast<int>(size.y);
+  w.window.reset(SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, w.width, w.height,
                                   SDL_WINDOW_SHOWN));
   if (!w.window) throw WindowError(std::string("cannot open a window: ") + SDL_GetError());
   w.renderer.reset(SDL_CreateRenderer(w.window.get(), -1, SDL_RENDERER_ACCELERATED | SDL_RENDERER_PRESENTVSYNC));
@@ -88,6 +98,8 @@ Window::Window(int width, int height, const std::string& title) : impl_(std::mak
 Window::~Window() = default;
 
 const std::string& Window::hud_warning() const { return impl_->hud_warning; }
+int Window::width() const { return impl_->width; }
+int Window::height() const { return impl_->height; }
 
 double Window::seconds() const {
   return static_cast<double>(SDL_GetPerformanceCounter()) / static_cast<double>(SDL_GetPerformanceFrequency());
@@ -108,6 +120,13 @@ std::vector<InputEvent> Window::poll_events() {
         out.push_back({InputEvent::Kind::mouse_up, 0, ev.button.x, ev.button.y, ev.button.button});
         break;
       case SDL_MOUSEMOTION: out.push_back({InputEvent::Kind::mouse_move, 0, ev.motion.x, ev.motion.y}); break;
+      case SDL_MOUSEWHEEL: {
+        int x = 0, y = 0;  // the wheel's event has no position before SDL 2.26
+        SDL_GetMouseState(&x, &y);
+        const int notches = ev.wheel.direction == SDL_MOUSEWHEEL_FLIPPED ? -ev.wheel.y : ev.wheel.y;
+        if (notches != 0) out.push_back({InputEvent::Kind::wheel, notches, x, y});
+        break;
+      }
       default: break;
     }
   }
@@ -151,6 +170,11 @@ class SdlPainter final : public Painter {
     return surf->h;
   }
   int line_height() const override { return font_ ? TTF_FontLineSkip(font_) : 0; }
+  double char_width() const override {
+    int advance = 0;
+    if (!font_ || TTF_GlyphMetrics(font_, 'M', nullptr, nullptr, nullptr, nullptr, &advance) != 0) return 9.0;
+    return advance;
+  }
 
  private:
   void colour(Color c) { SDL_SetRenderDrawColor(r_, c.r, c.g, c.b, c.a); }
@@ -178,7 +202,7 @@ double Window::render(const World& world, const View& view) {
     draw_ms = 1000.0 * static_cast<double>(SDL_GetPerformanceCounter() - t0) /
               static_cast<double>(SDL_GetPerformanceFrequency());
   }
-  Overlay::over(world, view, impl_->width, painter);
+  Overlay::over(world, view, painter);
   return draw_ms;
 }
 

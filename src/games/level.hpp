@@ -43,6 +43,9 @@ class Level {
   // Where its launches leave from, if not from the press point (the
   // testbed draws the drag from there).
   virtual std::optional<Vec2> launch_point() const { return std::nullopt; }
+  // What the testbed's camera follows in a world larger than the window
+  // (the player), if anything.
+  virtual std::optional<Vec2> focus() const { return std::nullopt; }
 };
 
 // A body of the scene's and its role; `index` is its place in creation order.

@@ -71,11 +71,13 @@ void Platformer::before_step(WorldId) {
 // aside.
 void Platformer::find_contacts(WorldId w) {
   ground_.reset();
+  touching_goal_ = false;
   wall_left_ = wall_right_ = false;
   for (const Touching& t : touching(w)) {
     const bool a = t.a == player_, b = t.b == player_;
     if (!a && !b) continue;
     const BodyId other = a ? t.b : t.a;
+    if (std::find(goals_.begin(), goals_.end(), other) != goals_.end()) touching_goal_ = true;
     if (is_sensor(other)) continue;
     const Vec2 push = a ? t.normal : -1.0 * t.normal;  // the normal pushes a away from b
     if (push.y < -0.5) ground_ = other;
@@ -93,8 +95,12 @@ Level::Outcome Platformer::after_step(WorldId w) {
       destroy_body(other);
       ++collected_;
     }
-    if (std::find(goals_.begin(), goals_.end(), other) != goals_.end()) won_ = true;
+    if (std::find(goals_.begin(), goals_.end(), other) != goals_.end()) touching_goal_ = true;
   }
+  // The flag wins once every coin is taken, whether the player reached it
+  // last or takes the last coin while touching it.
+  at_goal_ = touching_goal_ && collected_ < coins_total();
+  if (touching_goal_ && !at_goal_) won_ = true;
   if (won_) return Outcome::won;
   const double y = position(player_).y;
   return std::isfinite(y) && y < bottom_ ? Outcome::playing : Outcome::lost;
@@ -103,7 +109,13 @@ Level::Outcome Platformer::after_step(WorldId w) {
 std::vector<std::string> Platformer::hud() const {
   std::string line = "coins " + std::to_string(collected_) + "/" + std::to_string(coins_.size());
   line += won_ ? "   GOAL! level won" : ground_ ? "   on ground" : "   in the air";
+  if (at_goal_) line += "   the flag wants every coin first";
   return {line, "arrows: run   Space/Up: jump   R: restart"};
+}
+
+std::optional<Vec2> Platformer::focus() const {
+  const Vec2 s = size(player_);
+  return position(player_) + Vec2{s.x / 2.0, s.y / 2.0};
 }
 
 }  // namespace physics

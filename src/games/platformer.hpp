@@ -3,7 +3,8 @@
 // (or Up) only while it stands on something, which the world's contact
 // events tell (a touching pair whose normal pushes the player up). Blocks
 // tagged "coin" (sensors) are collected when the player's contact with them
-// begins, then removed; touching a block tagged "goal" wins the level;
+// begins, then removed; touching a block tagged "goal" once every coin is
+// collected wins the level (before, the HUD says what is missing);
 // falling below the world loses it (the testbed restarts it). A block tagged
 // "platform" moves with its velocity and turns back after "travel" px, and
 // carries the player by friction.
@@ -27,6 +28,7 @@ class Platformer final : public Level {
   void before_step(WorldId w) override;
   Outcome after_step(WorldId w) override;
   std::vector<std::string> hud() const override;
+  std::optional<Vec2> focus() const override;  // the player's centre
 
   BodyId player() const { return player_; }
   int coins() const { return collected_; }
@@ -51,7 +53,7 @@ class Platformer final : public Level {
   std::optional<BodyId> ground_;  // what the player stands on
   bool wall_left_ = false, wall_right_ = false;  // a solid side face touches the player there
   int collected_ = 0;
-  bool won_ = false;
+  bool won_ = false, at_goal_ = false, touching_goal_ = false;  // at_goal_: touching a goal, coins still missing
 };
 
 }  // namespace physics

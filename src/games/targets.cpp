@@ -20,9 +20,10 @@ Targets::Targets(const SceneSpec& s, WorldId w, std::span<const BlockRole> roles
 }
 
 // The shot leaves from the sling whatever the press point: the drag only
-// aims (its velocity is the testbed's slingshot's).
+// aims (its velocity is the testbed's slingshot's). A click (no drag, no
+// velocity) aims nowhere and spends nothing.
 bool Targets::launch(WorldId w, Vec2, Vec2 v) {
-  if (shots_left_ == 0) return true;
+  if (shots_left_ == 0 || (v.x == 0.0 && v.y == 0.0)) return true;
   const double half = shot_size / 2.0;
   BodyDef shot = default_body_def();
   shot.position = {sling_.x - half, sling_.y - half};
