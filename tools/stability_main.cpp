@@ -11,6 +11,7 @@
 #include <iostream>
 #include <stdexcept>
 #include <string_view>
+#include <vector>
 
 #include "numerics/family.hpp"
 #include "numerics/stability.hpp"
@@ -220,8 +221,19 @@ int main(int argc, char** argv) {
     std::erase_if(modes, [&](const Mode& m) { return m.name != only; });
   if (argc > 1 && std::string_view(argv[1]).starts_with("--family"))
     return family_command(std::vector<std::string_view>(argv + 1, argv + argc), modes);
-  const std::string out_path = argc > 1 ? argv[1] : "report/STABILITY.md";
-  const bool quick = argc > 2 && std::string(argv[2]) == "--quick";  // skip the long cases
+  // A flag where the output file goes (--help, a typo) would have been taken
+  // for the file's name, and the whole matrix run into it.
+  const std::vector<std::string_view> args(argv + 1, argv + argc);
+  const bool quick = args.size() == 2 && args[1] == "--quick";  // skip the long cases
+  if (args.size() > 2 || (args.size() == 2 && !quick) || (!args.empty() && args[0].starts_with("-"))) {
+    const bool help = !args.empty() && (args[0] == "--help" || args[0] == "-h");
+    (help ? std::cout : std::cerr)
+        << "usage: build/stability [OUT.md [--quick]]   the matrix and the family (default report/STABILITY.md)\n"
+           "       build/stability --family NAME|all [--seed S] [--mode M]   replay a family's draws\n"
+           "       build/stability --family-expected   the test subset's failing draws\n";
+    return help ? 0 : 2;
+  }
+  const std::string out_path = args.empty() ? "report/STABILITY.md" : std::string(args[0]);
   const auto cases = stability_cases();
   std::ofstream md(out_path);
   if (!md) {
