@@ -56,13 +56,35 @@ BOOST_AUTO_TEST_CASE(a_frictionless_slide_over_touching_floor_blocks_keeps_its_s
   }
 }
 
+// Under a ceiling of touching blocks, gravity up, e = 0: auto took the
+// course's pass there (no pair of finite bodies pressed together), which at
+// a seam pushes the slider out sideways (the family's seam-slide seed 17 ended
+// 734 px short); a seamed surface under gravity now puts it on the solver.
+BOOST_AUTO_TEST_CASE(auto_slides_under_a_ceiling_of_touching_blocks_as_under_one) {
+  for (const bool touching : {true, false}) {
+    World w = make_world(automatic, {0, -g});
+    const EntityId s = block(w, 0, 200, 20, 20, 1.0, {0.5, 0}, 0.0);
+    if (touching)
+      for (int i = 0; i < 40; ++i) block(w, 40.0 * i, 160, 40, 40, infinity, {}, 0.0);
+    else
+      block(w, 0, 160, 1600, 40, infinity, {}, 0.0);
+    for (int f = 0; f < 63; ++f) Game::step(w);
+    BOOST_TEST_INFO(touching);
+    BOOST_TEST(std::abs(w.components.position[s].x - 525.0) < 1e-9);
+    BOOST_TEST(std::abs(w.components.position[s].y - 200.0) < 0.05);
+  }
+}
+
 // With friction 0.5 the slide stops after v0²/(2 mu g) = 250 px (within the
 // matrix's 3 %: the error is v0·dt/2), the same as on one flat floor (it
-// stopped after 20 px at the first seam).
+// stopped after 20 px at the first seam). Auto takes the solver on a floor of
+// touching blocks (a seamed surface) and the course's pass on one flat
+// floor, so its slide over the seams is the solver's over one floor.
 BOOST_AUTO_TEST_CASE(a_friction_slide_over_touching_floor_blocks_stops_where_it_does_on_one_floor) {
   for (const Mode& m : {stable, stable_ccd, automatic}) {
     BOOST_TEST_INFO(m.name);
-    const double seams = slide(m, true, 0.5, 120), flat = slide(m, false, 0.5, 120);
+    const Mode& on_one_floor = m.solver == Solver::automatic ? stable : m;
+    const double seams = slide(m, true, 0.5, 120), flat = slide(on_one_floor, false, 0.5, 120);
     BOOST_TEST(std::abs(seams - 250.0) < 0.03 * 250.0);
     BOOST_TEST(std::abs(seams - flat) < 1e-9);
   }

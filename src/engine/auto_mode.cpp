@@ -22,7 +22,7 @@ bool AutoMode::plan(const Components& k, std::span<const EntityId> bodies, doubl
   // up) or when a body is fast: what it lands on may be a pile, and CCD
   // alone would carry it down the pile one impact at a time, without end.
   const bool g = !Vector::is_zero(gravity);
-  solver_path_ = first_ || hold_left_ > 0 || (g && (fast_count_ > 0 || bouncy(k, bodies)));
+  solver_path_ = first_ || hold_left_ > 0 || (g && (fast_count_ > 0 || bouncy(k, bodies) || seamed(k, bodies, gravity)));
   // Many fast bodies without gravity: the solver's path too, on trial (see
   // roll_back).
   trial_ = !solver_path_ && fast_count_ > many_fast;
@@ -35,6 +35,32 @@ bool AutoMode::plan(const Components& k, std::span<const EntityId> bodies, doubl
 bool AutoMode::bouncy(const Components& k, std::span<const EntityId> bodies) {
   return std::any_of(bodies.begin(), bodies.end(),
                      [&](EntityId e) { return std::isfinite(k.mass[e]) && k.restitution[e] > 0.0; });
+}
+
+// Whether two fixed bodies lie side by side, touching, along a face that
+// gravity presses bodies onto (a floor of touching blocks under gravity
+// down, a wall of them under gravity sideways). A body resting on such a
+// surface crosses the seams, and the course's pass, which takes each pair
+// alone by its shortest way out, pushes it sideways there (a ghost
+// collision: it stops at the seam); the solver's contact axis follows the
+// faces already touching. The course's four walls have no such seam.
+bool AutoMode::seamed(const Components& k, std::span<const EntityId> bodies, Vector g) {
+  const auto any_seam = [&](bool vertical_axis, bool low_side) {
+    faces_.clear();
+    for (const EntityId e : bodies) {
+      if (std::isfinite(k.mass[e]) || !Vector::is_zero(k.velocity[e])) continue;  // moving platforms aside
+      const Vector p = k.position[e];
+      const double w = k.box[e].width, h = k.box[e].height;
+      if (vertical_axis) faces_.push_back({low_side ? p.y : p.y + h, p.x, p.x + w});  // a floor or a ceiling
+      else faces_.push_back({low_side ? p.x : p.x + w, p.y, p.y + h});                // a wall's face
+    }
+    std::sort(faces_.begin(), faces_.end());  // by level, then where it starts
+    for (std::size_t i = 1; i < faces_.size(); ++i)
+      if (faces_[i][0] == faces_[i - 1][0] && std::abs(faces_[i][1] - faces_[i - 1][2]) <= 1e-9) return true;
+    return false;
+  };
+  // Gravity down (y grows downwards) presses bodies onto top faces, and so on.
+  return (g.y != 0.0 && any_seam(true, g.y > 0.0)) || (g.x != 0.0 && any_seam(false, g.x > 0.0));
 }
 
 // Fast: Move's displacement, h·|v| (the velocity after Forces), exceeds

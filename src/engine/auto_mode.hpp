@@ -26,6 +26,7 @@
 // The CCD flag of Params is not read: auto decides which bodies to sweep.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <utility>
@@ -113,6 +114,8 @@ class AutoMode {
   void mark_fast(const Components& k, std::span<const EntityId> bodies, double h, bool closing);
   void mark_closing(const Components& k, std::span<const EntityId> bodies, double h, double sq1, double sq2);
   static bool bouncy(const Components& k, std::span<const EntityId> bodies);
+  bool seamed(const Components& k, std::span<const EntityId> bodies, Vector gravity);
+  std::vector<std::array<double, 3>> faces_;  // seamed's scratch: each fixed body's face (level, from, to)
 
   std::vector<std::uint8_t> fast_;  // by entity id
   std::vector<double> start_;       // by entity id, ms
