@@ -100,6 +100,17 @@ Mode with_dt(const Mode& m, double dt) {
 
 // ---- approaching bodies ----------------------------------------------------------
 
+// Runs w (open space) for `frames`, the 1-D order looked at every frame,
+// and judges order, momentum and energy (kept for e = 1): head-on and squeeze.
+Outcome order_momentum_energy(const Mode& m, World& w, int frames, Order order, double e) {
+  const double E0 = step_energy(w), play = energy_in_play(w);
+  const Track t = run(m, w, frames, false, {}, 1, [&](const World& x) { order.check(x); });
+  if (!t.finite) return nan_outcome();
+  const double loss = energy_loss(w, E0, play);
+  return finish(order.kept && t.momentum_drift < momentum_tolerance && energy_ok(t, loss, e == 1.0),
+                order_text(order.kept) + fmt(", dp %.2g, ", t.momentum_drift) + energy_text(t, loss), w);
+}
+
 // Two blocks closing on each other, head on or one catching up with the
 // other, in open space: order, momentum, energy.
 Draw head_on(Random& r) {
@@ -116,13 +127,8 @@ Draw head_on(Random& r) {
             const double s = mirror ? -1 : 1, ca = 400 - s * (gap / 2 + sa / 2.0), cb = 400 + s * (gap / 2 + sb / 2.0);
             const EntityId a = block(w, ca - sa / 2.0, 300 - sa / 2.0, sa, sa, a_heavy ? ratio : 1, {s * va, 0}, e);
             const EntityId b = block(w, cb - sb / 2.0, 300 - sb / 2.0, sb, sb, a_heavy ? 1 : ratio, {s * vb, 0}, e);
-            Order order{mirror ? std::vector<EntityId>{b, a} : std::vector<EntityId>{a, b}};
-            const double E0 = step_energy(w), play = energy_in_play(w);
-            const Track t = run(m, w, frames, false, {}, 1, [&](const World& x) { order.check(x); });
-            if (!t.finite) return nan_outcome();
-            const double loss = energy_loss(w, E0, play);
-            return finish(order.kept && t.momentum_drift < momentum_tolerance && energy_ok(t, loss, e == 1.0),
-                          order_text(order.kept) + fmt(", dp %.2g, ", t.momentum_drift) + energy_text(t, loss), w);
+            const Order order{mirror ? std::vector<EntityId>{b, a} : std::vector<EntityId>{a, b}};
+            return order_momentum_energy(m, w, frames, order, e);
           }};
 }
 
@@ -167,13 +173,7 @@ Draw squeeze(Random& r) {
             const EntityId l = block(w, 400 - sl / 2.0, y - sl / 2.0, sl, sl, 1.0, {}, e);
             const EntityId a = block(w, 400 - sl / 2.0 - gap_a - sh, y - sh / 2.0, sh, sh, ratio, {va, 0}, e);
             const EntityId b = block(w, 400 + sl / 2.0 + gap_b, y - sh / 2.0, sh, sh, ratio, {-vb, 0}, e);
-            Order order{{a, l, b}};
-            const double E0 = step_energy(w), play = energy_in_play(w);
-            const Track t = run(m, w, 300, false, {}, 1, [&](const World& x) { order.check(x); });
-            if (!t.finite) return nan_outcome();
-            const double loss = energy_loss(w, E0, play);
-            return finish(order.kept && t.momentum_drift < momentum_tolerance && energy_ok(t, loss, e == 1.0),
-                          order_text(order.kept) + fmt(", dp %.2g, ", t.momentum_drift) + energy_text(t, loss), w);
+            return order_momentum_energy(m, w, 300, Order{{a, l, b}}, e);
           }};
 }
 
