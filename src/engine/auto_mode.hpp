@@ -22,7 +22,10 @@
 //    starts after the solver, from each body's impact time: the solver stops
 //    a fast body's first impact (and a heavy one landing on a stack, which
 //    CCD's one-impact-at-a-time cannot: the impacts down the stack never
-//    end), CCD the ones after it within the substep.
+//    end), CCD the ones after it within the substep;
+//  - under gravity with every restitution 1 (and masses within
+//    elastic_mass_ratio), the solver's path is stable+ccd's: the solver
+//    keeps the resting contacts and CCD sweeps every body (sweep_all).
 // The CCD flag of Params is not read: auto decides which bodies to sweep.
 #pragma once
 
@@ -77,6 +80,9 @@ class AutoMode {
   // re-predicts each impact against every body, and sweeping the undone
   // islands of a 10 000-body gas took its step from 5 to 23 ms.
   static constexpr std::size_t undo_bodies = 2048;
+  // The largest ratio of two finite masses for which an elastic scene under
+  // gravity is swept whole (sweep_all, elastic).
+  static constexpr double elastic_mass_ratio = 1e3;
 
   // Before the substep's velocities: which path it takes (true: the stable
   // solver) and which bodies are fast, from the velocities after Forces.
@@ -104,6 +110,16 @@ class AutoMode {
   void restore(const AutoState& s);
 
   bool solver_path() const { return solver_path_; }
+  // Under gravity with every restitution 1 (and masses within
+  // elastic_mass_ratio), the solver's path is stable+ccd's:
+  // the solver holds the resting contacts and CCD sweeps every body and
+  // takes every impact. The solver takes a substep's impacts together, which
+  // in an e = 1 pile loses or gains energy in chains and lets a light body
+  // that a heavy one throws out through the walls (the family's pile and
+  // fast-in-pile draws: sinks of 2-10 px, bodies out, energy up 1e-7); CCD's
+  // one impact at a time keeps e = 1 exactly, and without an inelastic pair
+  // it has no collapse to run out of budget on.
+  bool sweep_all() const { return sweep_all_; }
   // The bodies to sweep this substep, and how many (valid until the next plan()).
   CcdSelection selection() { return {fast_, start_, thinnest_}; }
   std::size_t fast_count() const { return fast_count_; }
@@ -114,6 +130,7 @@ class AutoMode {
   void mark_fast(const Components& k, std::span<const EntityId> bodies, double h, bool closing);
   void mark_closing(const Components& k, std::span<const EntityId> bodies, double h, double sq1, double sq2);
   static bool bouncy(const Components& k, std::span<const EntityId> bodies);
+  static bool elastic(const Components& k, std::span<const EntityId> bodies);
   bool seamed(const Components& k, std::span<const EntityId> bodies, Vector gravity);
   std::vector<std::array<double, 3>> faces_;  // seamed's scratch: each fixed body's face (level, from, to)
 
@@ -130,6 +147,7 @@ class AutoMode {
   std::vector<std::pair<std::uint64_t, int>> runs_, next_runs_;  // (key, substeps in a row), sorted
   int hold_left_ = 0;
   bool trial_ = false;  // the solver's path is on trial this substep
+  bool sweep_all_ = false;  // sweep_all()
   bool any_undone_ = false;
   std::vector<Vector> kept_position_, kept_velocity_;  // keep(), by entity id
   struct Island {  // roll_back()'s, at its root

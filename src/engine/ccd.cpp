@@ -34,24 +34,19 @@ struct Later {
 };
 
 // The course's impulse at an impact at time t of the substep (the engine's
-// one contact law), restitution the smaller of the pair's.
-//
-// Gravity: Forces gave the whole substep's kick g·h at its start, but the
-// impact happens at t; the kick after t must not be reflected. The normal
-// velocity after the substep is -e·v_n + (1+e)(a·n)(h - t), a the pair's
-// relative acceleration (g against a fixed body, 0 between two free ones).
-// Without this, a body resting on the floor with e = 1 hops g·h every
-// substep and each bounce gains or loses m(g·n)(v·n)(h - 2t) of energy, a
-// random walk that drifts up; with it, it rests. Never enough to turn the
+// one contact law), restitution the smaller of the pair's, with the gravity
+// after t as contact.hpp's gravity_after_impact says (else an e = 1 bounce
+// on the floor gains or loses energy every time). Never enough to turn the
 // pair back towards each other.
 // Returns the normal and tangential impulses.
-std::pair<double, double> impact(Components& k, EntityId c, EntityId b, Vector n, double t, double h, Vector gravity) {
+std::pair<double, double> impact(Components& k, EntityId c, EntityId b, Vector n, double t, double h, Vector gravity,
+                                 bool exact_motion) {
   const Vector vc = k.velocity[c], vb = k.velocity[b];
   const double vn = Vector::dot(vc - vb, n);
   const double e = std::min(k.restitution[c], k.restitution[b]);
   const Vector ac = std::isfinite(k.mass[c]) ? gravity : Vector{};
   const Vector ab = std::isfinite(k.mass[b]) ? gravity : Vector{};
-  const double kick = std::max((1.0 + e) * Vector::dot(ac - ab, n) * (h - t), e * vn);
+  const double kick = std::max(gravity_after_impact(e, Vector::dot(ac - ab, n), h, t, exact_motion), e * vn);
   const double dv = -(1.0 + e) * vn + kick;
   Vector vc2 = vc, vb2 = vb;
   const double wc = inverse_mass(k.mass[c]), wb = inverse_mass(k.mass[b]);
@@ -278,9 +273,21 @@ void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h, V
   ImpactQueue queue(k, entities, h, sel);
   for (const Pair& p : pairs_) queue.predict(p);
   const bool rules = k.any_rules();
+  // The budget is per stretch of time, not per substep: a jam (an inelastic
+  // collapse, a squeeze) piles its impacts up at one instant, while a body
+  // that really meets many things in a substep (a bullet bouncing between
+  // the walls hundreds of times) spreads them over it. A stretch begins at
+  // the first impact past the last one's end and lasts h/64, so a substep
+  // holds at most 65 of them, and a jam is still cut after one budget.
   const std::int64_t budget = 16 * static_cast<std::int64_t>(entities.size()) + 128;
+  const double stretch = h / 64.0;
+  double stretch_end = -1.0;
   std::int64_t resolved = 0;
   while (const auto ev = queue.next()) {
+    if (ev->t >= stretch_end) {
+      stretch_end = ev->t + stretch;
+      resolved = 0;
+    }
     if (resolved == budget) {
       ++stats.capped_substeps;
       if (rules)
@@ -295,7 +302,7 @@ void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h, V
     const auto hit = time_of_impact(k, c, b, ev->t, h);
     if (!hit || hit->t != ev->t) continue;
     sense.piece(c, ev->t), sense.piece(b, ev->t);
-    const auto [jn, jt] = impact(k, c, b, hit->n, ev->t, h, gravity);
+    const auto [jn, jt] = impact(k, c, b, hit->n, ev->t, h, gravity, exact_motion);
     events.touch(c, b, hit->n, jn, jt);
     ++resolved;
     ++stats.impacts;

@@ -63,7 +63,8 @@ class Ccd {
  public:
   // Resolves the impacts of the next h ms between the given bodies (the
   // Collision system's, in registration order), as described above. A
-  // substep resolves at most 16·n + 128 impacts; past that (an inelastic
+  // substep resolves at most 16·n + 128 impacts within any h/64 of it
+  // (a stretch: see resolve); past that (an inelastic
   // collapse in a resting stack, a light body squeezed between two heavy
   // ones, which takes ~π·sqrt(M/m) impacts) each body still to meet
   // something stops at its next impact for the rest of the substep, with the
@@ -84,6 +85,9 @@ class Ccd {
   static std::optional<Impact> time_of_impact(const Components& k, EntityId c, EntityId b, double t0, double t1);
 
   CcdStats stats;
+  // Whether Move's motion is the exact integrator's (gravity_after_impact),
+  // set by World each substep from Params::integrator.
+  bool exact_motion = false;
 
  private:
   std::vector<Pair> pairs_;

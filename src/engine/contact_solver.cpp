@@ -183,7 +183,7 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
   times.time(Stage::warm_start, [&] { warm_start(k); });
   times.time(Stage::relax, [&] { relax<false>(k, g, s); });
   times.time(Stage::restitution, [&] { restitution(k, g, s); });
-  times.time(Stage::impact_time, [&] { impact_time(k, h, g); });
+  times.time(Stage::impact_time, [&] { impact_time(k, h, g, s.exact_motion); });
   times.time(Stage::store, [&] { store(); });
 }
 
@@ -499,19 +499,18 @@ void ContactSolver::restitution(Components& k, Vector g, const SolverSettings& s
 // happens up to |v|·h early, and under gravity each such bounce gains energy
 // (g·v·h).
 //
-// And, as in Ccd, the part of the substep's gravity kick that comes after the
-// impact is not reflected: against a fixed body the normal velocity gets
-// (1+e)(a·n)(h - toi), never enough to turn the pair back. A body landing on
-// the floor then rests instead of hopping g·h, and bounces do not drift the
-// energy up.
-void ContactSolver::impact_time(Components& k, double h, Vector g) {
+// And, as in Ccd, the gravity after the impact as gravity_after_impact says
+// (contact.hpp), never enough to turn the pair back. A body landing on the
+// floor then rests instead of hopping g·h, and an e = 1 bounce keeps its
+// energy.
+void ContactSolver::impact_time(Components& k, double h, Vector g, bool exact_motion) {
   for (const std::uint32_t i : impacts_) {
     const ContactConstraint& ct = contacts_[i];
     const Vector n = axis_normal[ct.axis];
     const Vector a = (ct.wc > 0.0 ? g : Vector{}) - (ct.wb > 0.0 ? g : Vector{});
     const double vn = Vector::dot(k.velocity[ct.c] - k.velocity[ct.b], n);
-    const double extra = std::max((1.0 + ct.restitution) * Vector::dot(a, n) * (h - ct.toi), -vn);
-    if (extra >= 0.0) continue;
+    const double extra = std::max(gravity_after_impact(ct.restitution, Vector::dot(a, n), h, ct.toi, exact_motion), -vn);
+    if (extra == 0.0) continue;
     change_normal_velocity(k.velocity[ct.c], k.velocity[ct.b], n, extra, ct.wc, ct.wb);
   }
   // The shift uses each body's net velocity change (a light block lying on

@@ -64,6 +64,7 @@ struct SolverSettings {
   double projection = 0.8;    // share of the overlap beyond slop removed per position iteration
   bool shock_propagation = true;
   bool impacts = true;        // false with CCD on: impacts are left to it
+  bool exact_motion = false;  // Params::integrator is exact (gravity_after_impact)
 };
 
 // A resting contact's impulses at the end of a substep: what the next
@@ -152,7 +153,7 @@ class ContactSolver {
   void guard_energy(Components& k);
   bool any_body_gained(const Components& k) const;
   void island_energies(const Components& k);
-  void impact_time(Components& k, double h, Vector g);
+  void impact_time(Components& k, double h, Vector g, bool exact_motion);
   void store();
   void contact_axes(const Components& k, const SolverSettings& s);
   std::vector<ContactAxis> axes_;    // by pair: its normal (contact_axes())

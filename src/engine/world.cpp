@@ -102,6 +102,7 @@ SolverSettings solver_settings(const Params& p) {
   SolverSettings s;
   s.iterations = p.iterations;
   s.impacts = !p.ccd;  // with CCD on, impacts are its business
+  s.exact_motion = p.integrator == Integrator::exact;
   return s;
 }
 }  // namespace
@@ -115,16 +116,12 @@ void World::before_move(double h) {
   if (exact) exact_.after_forces(components, bodies(SystemId::move));
   if (declares(SystemId::collision)) {
     const auto colliding = bodies(SystemId::collision);
+    ccd.exact_motion = exact_motion();
     if (params.solver == Solver::automatic) {
       auto_before_move(colliding, h);
     } else {
-      if (params.solver == Solver::stable) {
-        contact_solver.solve_velocities(components, colliding, h, params.gravity, solver_settings(params), broadphase,
-                                        times);
-        record_solver_contacts();
-      }
-      if (params.ccd)
-        times.time(Stage::ccd, [&] { ccd.resolve(components, colliding, h, params.gravity, broadphase, events); });
+      if (params.solver == Solver::stable) solve_velocities(colliding, h, solver_settings(params));
+      if (params.ccd) sweep(colliding, h);
     }
   }
   // Last, so that it sees which velocities the solver and CCD changed, and
@@ -141,7 +138,13 @@ void World::auto_before_move(std::span<const EntityId> bodies, double h) {
   // scene's step, more than the choice itself (an O(n) look at velocities).
   if (automatic.plan(components, bodies, h, params.gravity)) {
     SolverSettings s = solver_settings(params);
-    s.impacts = true;
+    s.impacts = !automatic.sweep_all();
+    if (automatic.sweep_all()) {
+      solve_velocities(bodies, h, s);
+      automatic.stats.contacts += static_cast<std::int64_t>(contact_solver.constraints().size());
+      automatic.stats.swept += static_cast<std::int64_t>(bodies.size());
+      return sweep(bodies, h);
+    }
     automatic.keep(components);
     contact_solver.solve_velocities(components, bodies, h, params.gravity, s, broadphase, times);
     automatic.after_solver(components, bodies, contact_solver.constraints(), h);
@@ -152,6 +155,15 @@ void World::auto_before_move(std::span<const EntityId> bodies, double h) {
   automatic.stats.swept += static_cast<std::int64_t>(automatic.fast_count());
   CcdSelection selection = automatic.selection();
   times.time(Stage::ccd, [&] { ccd.resolve(components, bodies, h, params.gravity, broadphase, events, &selection); });
+}
+
+void World::solve_velocities(std::span<const EntityId> bodies, double h, const SolverSettings& s) {
+  contact_solver.solve_velocities(components, bodies, h, params.gravity, s, broadphase, times);
+  record_solver_contacts();
+}
+
+void World::sweep(std::span<const EntityId> bodies, double h) {
+  times.time(Stage::ccd, [&] { ccd.resolve(components, bodies, h, params.gravity, broadphase, events); });
 }
 
 void World::enable_events() {

@@ -162,6 +162,9 @@ struct World {
   static std::size_t index(SystemId s) { return static_cast<std::size_t>(s); }
   void record_solver_contacts();  // before_move's, after the stable solver's velocities
   void auto_before_move(std::span<const EntityId> bodies, double h);
+  // The stable solver's velocities (and their contacts' events); CCD over all the bodies.
+  void solve_velocities(std::span<const EntityId> bodies, double h, const SolverSettings& s);
+  void sweep(std::span<const EntityId> bodies, double h);
   ExactIntegrator exact_;  // Params::integrator == Integrator::exact
   std::array<std::optional<std::vector<EntityId>>, all_systems.size()> stages_;  // by SystemId
   std::vector<std::uint8_t> destroyed_;  // by id; shorter than the arrays until a body is destroyed
