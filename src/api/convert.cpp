@@ -12,7 +12,8 @@ void require(bool ok, const char* what, const char* rule, double got) {
 }
 
 void require(bool ok, const char* what, const char* rule, Vec2 got) {
-  if (!ok) throw Error(std::string(what) + " must be " + rule + " (got (" + format_g(got.x) + ", " + format_g(got.y) + "))");
+  if (!ok)
+    throw Error(std::string(what) + " must be " + rule + " (got (" + format_g(got.x) + ", " + format_g(got.y) + "))");
 }
 
 void check_finite(Vec2 v, const char* what) {

@@ -45,7 +45,9 @@ std::string stage_times(const World& w) {
     if (!runs(w, s)) continue;
     // The stable solver replaces the course's Collision pass.
     if (s == Stage::collision && w.params.solver == Solver::stable) continue;
-    out += std::string(first ? "" : ", ") + std::string(name(s)) + ' ';
+    out += first ? "" : ", ";
+    out += name(s);
+    out += ' ';
     first = false;
     // A system the scene left out has no time at all, not a time of zero.
     const bool off = (s == Stage::forces && !w.declares(SystemId::forces)) ||
