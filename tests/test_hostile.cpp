@@ -169,7 +169,7 @@ BOOST_AUTO_TEST_CASE(a_nul_byte_is_refused) {
   BOOST_CHECK_EXCEPTION(parse_scene("{\"blocks\": []}\n\0garbage"s, "n.json"), SceneError, [](const SceneError& e) {
     return std::string(e.what()) == "n.json:2:1: a NUL byte: a scene file is text";
   });
-  std::istringstream log("# scene: many\0x\ntick,kind,key,x,y,button\n5,end,0,0,0,0\n"s);
+  const std::string log = "# scene: many\0x\ntick,kind,key,x,y,button\n5,end,0,0,0,0\n"s;
   BOOST_CHECK_EXCEPTION(parse_input_log(log, "n.log"), InputLogError, [](const InputLogError& e) {
     return std::string(e.what()) == "n.log:1: a NUL byte: an input log is text";
   });

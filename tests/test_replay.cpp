@@ -41,10 +41,7 @@ InputEvent down(int x, int y, int b = 1) { return {Kind::mouse_down, 0, x, y, b}
 InputEvent move(int x, int y) { return {Kind::mouse_move, 0, x, y, 0}; }
 InputEvent up(int x, int y, int b = 1) { return {Kind::mouse_up, 0, x, y, b}; }
 
-InputLog parse(const std::string& text) {
-  std::istringstream in(text);
-  return parse_input_log(in, "t.log");
-}
+InputLog parse(const std::string& text) { return parse_input_log(text, "t.log"); }
 
 std::string written(const InputLog& log) {
   std::ostringstream out;

@@ -6,10 +6,8 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <iostream>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <string>
 
 #include "app/dump.hpp"
@@ -38,6 +36,10 @@ std::vector<SceneSpec> scenes_for(const std::string& name, std::size_t& current)
   return scenes;
 }
 
+// Text to stdout: no iostreams in the module (their locale machinery was a
+// quarter of it, docs/web.md).
+void print(const std::string& text) { std::fwrite(text.data(), 1, text.size(), stdout); }
+
 std::string hex(std::uint64_t h) {
   char buf[24];
   std::snprintf(buf, sizeof buf, "0x%016llx", static_cast<unsigned long long>(h));
@@ -51,12 +53,12 @@ int play_log(const InputLog& log, const std::string& scene) {
   Testbed tb(scenes_for(scene, current), current);
   tb.replay(log);
   tb.play();
-  std::cout << "replay: " << tb.replayed() << " events over " << tb.ticks() << " ticks, ended at frame "
-            << tb.world().frame << "\n";
-  if (tb.level()) std::cout << "game: " << (tb.outcome() == Level::Outcome::won ? "won" : "not won") << "\n";
-  std::cout << "state " << hex(determinism::state_hash(tb.world().components)) << "\n";
-  Dump::write_state(std::cout, tb.world());
-  std::cout.flush();
+  print("replay: " + std::to_string(tb.replayed()) + " events over " + std::to_string(tb.ticks()) +
+        " ticks, ended at frame " + std::to_string(tb.world().frame) + "\n");
+  if (tb.level()) print(std::string("game: ") + (tb.outcome() == Level::Outcome::won ? "won" : "not won") + "\n");
+  print("state " + hex(determinism::state_hash(tb.world().components)) + "\n");
+  print(Dump::state(tb.world()));
+  std::fflush(stdout);
   return 0;
 }
 
@@ -131,9 +133,9 @@ WEB_EXPORT(web_headless) int web_headless(const char* name, int frames) {
     }
     World w = make_world(spec, false);
     const Headless::Summary s = Headless::run(w, frames);
-    Headless::print_summary(std::cout, w, s, "the web build's headless run", spec.name);
-    Dump::write_state(std::cout, w);
-    std::cout.flush();
+    print(Headless::summary(w, s, "the web build's headless run", spec.name));
+    print(Dump::state(w));
+    std::fflush(stdout);
     return 0;
   });
 }
@@ -181,18 +183,18 @@ WEB_EXPORT(web_texts) const char* web_texts() { return page.commands.texts().c_s
 WEB_EXPORT(web_state) const char* web_state() {
   const Testbed& tb = *page.tb;
   const World& w = tb.world();
-  std::ostringstream o;
   const char* outcome = tb.outcome() == Level::Outcome::won    ? "won"
                         : tb.outcome() == Level::Outcome::lost ? "lost"
                                                                : "playing";
   std::size_t alive = 0;
   for (std::size_t e = 0; e < w.components.size(); ++e) alive += w.alive(static_cast<EntityId>(e));
-  o << "{\"scene\":\"" << tb.scene().name << "\",\"index\":" << tb.current() << ",\"width\":" << tb.scene().width
-    << ",\"height\":" << tb.scene().height << ",\"frame\":" << w.frame << ",\"ticks\":" << tb.ticks()
-    << ",\"paused\":" << (tb.paused() ? "true" : "false") << ",\"bodies\":" << alive << ",\"hash\":\""
-    << hex(determinism::state_hash(w.components)) << "\",\"game\":" << (tb.level() ? "true" : "false")
-    << ",\"outcome\":\"" << outcome << "\"}";
-  page.state = o.str();
+  using std::to_string;
+  page.state = "{\"scene\":\"" + tb.scene().name + "\",\"index\":" + to_string(tb.current()) +
+               ",\"width\":" + to_string(tb.scene().width) + ",\"height\":" + to_string(tb.scene().height) +
+               ",\"frame\":" + to_string(w.frame) + ",\"ticks\":" + to_string(tb.ticks()) +
+               ",\"paused\":" + (tb.paused() ? "true" : "false") + ",\"bodies\":" + to_string(alive) +
+               ",\"hash\":\"" + hex(determinism::state_hash(w.components)) + "\",\"game\":" +
+               (tb.level() ? "true" : "false") + ",\"outcome\":\"" + outcome + "\"}";
   return page.state.c_str();
 }
 

@@ -4,9 +4,9 @@
 // for the WebAssembly build, the archive member that holds them (d2fixed.o)
 // is never linked: the same digits through musl's printf, which is exact
 // (correctly rounded at any precision), as Ryu's d2fixed is. The member's
-// other functions come along: __d2exp_buffered_n (the precision overloads,
-// which the build does not use) and the two digit writers of float's
-// to_chars. The dumps are checked against the native build's byte for byte
+// other functions come along: __d2exp_buffered_n (the precision overloads:
+// format_g's general format, engine/format.hpp) and the two digit writers of
+// float's to_chars. The dumps are checked against the native build's byte for byte
 // (make web-test); web/test/to_chars_check.cpp checks these against libc++'s.
 #include <charconv>
 #include <cstdint>

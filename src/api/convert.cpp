@@ -1,26 +1,19 @@
 #include "api/convert.hpp"
 
 #include <cmath>
-#include <sstream>
 
+#include "engine/format.hpp"
 #include "engine/limits.hpp"
 
 namespace physics::api {
 
-namespace {
-std::string show(double v) {
-  std::ostringstream o;
-  o << v;
-  return o.str();
-}
-}  // namespace
-
 void require(bool ok, const char* what, const char* rule, double got) {
-  if (!ok) throw Error(std::string(what) + " must be " + rule + " (got " + show(got) + ")");
+  if (!ok) throw Error(std::string(what) + " must be " + rule + " (got " + format_g(got) + ")");
 }
 
 void require(bool ok, const char* what, const char* rule, Vec2 got) {
-  if (!ok) throw Error(std::string(what) + " must be " + rule + " (got (" + show(got.x) + ", " + show(got.y) + "))");
+  if (!ok)
+    throw Error(std::string(what) + " must be " + rule + " (got (" + format_g(got.x) + ", " + format_g(got.y) + "))");
 }
 
 void check_finite(Vec2 v, const char* what) {

@@ -1,9 +1,9 @@
 #include "app/headless.hpp"
 
 #include <cstdio>
-#include <iomanip>
 #include <ostream>
-#include <sstream>
+
+#include "engine/format.hpp"
 
 namespace physics::Headless {
 
@@ -38,61 +38,60 @@ bool runs(const World& w, Stage s) {
 }  // namespace
 
 std::string stage_times(const World& w) {
-  std::ostringstream out;
-  out << std::setprecision(4);
+  std::string out;
   bool first = true;
   for (std::size_t i = 0; i < stage_count; ++i) {
     const Stage s = static_cast<Stage>(i);
     if (!runs(w, s)) continue;
     // The stable solver replaces the course's Collision pass.
     if (s == Stage::collision && w.params.solver == Solver::stable) continue;
-    out << (first ? "" : ", ") << name(s) << ' ';
+    out += first ? "" : ", ";
+    out += name(s);
+    out += ' ';
     first = false;
     // A system the scene left out has no time at all, not a time of zero.
     const bool off = (s == Stage::forces && !w.declares(SystemId::forces)) ||
                      (s == Stage::move && !w.declares(SystemId::move)) ||
                      (s == Stage::collision && !w.declares(SystemId::collision));
-    if (off) out << "off";
-    else out << w.times.ms_per_step(s);
+    out += off ? "off" : format_g(w.times.ms_per_step(s), 4);
   }
-  return out.str();
+  return out;
 }
 
-void print_summary(std::ostream& out, const World& w, const Summary& s, const std::string& why,
-                   const std::string& scene) {
-  const auto vec = [](Vector v) {
-    std::ostringstream o;
-    o << std::setprecision(6) << "(" << v.x << ", " << v.y << ")";
-    return o.str();
-  };
-  std::ostringstream o;
-  o << "ran headless: " << why << "\n";
+std::string summary(const World& w, const Summary& s, const std::string& why, const std::string& scene) {
+  using std::to_string;
+  const auto vec = [](Vector v) { return "(" + format_g(v.x) + ", " + format_g(v.y) + ")"; };
+  std::string o = "ran headless: " + why + "\n";
   if (!scene.empty()) {
     SystemSet physics_systems = w.declared();
     physics_systems.draw = false;
     const std::string names = physics_systems.to_string();
-    o << "scene:           " << printable(scene) << " (systems: " << (names.empty() ? "none" : names) << ")\n";
+    o += "scene:           " + printable(scene) + " (systems: " + (names.empty() ? "none" : names) + ")\n";
   }
-  o << "frames:          " << s.frames << " (dt = " << w.params.dt << " ms, " << w.params.substeps << " substep(s)"
-    << (w.params.integrator == Integrator::exact ? ", exact integrator" : "") << ")\n"
-    << "bodies:          " << s.bodies << " (" << s.mobile << " mobile)\n"
-    << std::setprecision(9);
+  o += "frames:          " + to_string(s.frames) + " (dt = " + format_g(w.params.dt) + " ms, " +
+       to_string(w.params.substeps) + " substep(s)" +
+       (w.params.integrator == Integrator::exact ? ", exact integrator" : "") + ")\n" +
+       "bodies:          " + to_string(s.bodies) + " (" + to_string(s.mobile) + " mobile)\n";
   if (s.frames == 0) {
     // No frame ran: the state is the initial one (forces still pending).
-    o << "kinetic energy:  " << s.ke_end << " (no frame ran)\n"
-      << "momentum:        " << vec(s.p_end) << " (no frame ran)\n";
+    o += "kinetic energy:  " + format_g(s.ke_end, 9) + " (no frame ran)\n" +
+         "momentum:        " + vec(s.p_end) + " (no frame ran)\n";
   } else {
-    o << "kinetic energy:  " << s.ke_start << " after frame 1, " << s.ke_end << " at the end\n"
-      << "momentum:        " << vec(s.p_start) << " after frame 1, " << vec(s.p_end) << " at the end\n";
+    o += "kinetic energy:  " + format_g(s.ke_start, 9) + " after frame 1, " + format_g(s.ke_end, 9) + " at the end\n" +
+         "momentum:        " + vec(s.p_start) + " after frame 1, " + vec(s.p_end) + " at the end\n";
   }
-  o << "escaped:         " << escape_line(w) << "\n"
-    << std::setprecision(4) << "physics ms/step: " << w.times.total_ms_per_step() << " total, " << stage_times(w)
-    << "\n";
-  if (w.params.solver == Solver::automatic) o << "auto:            " << auto_line(w) << "\n";
+  o += "escaped:         " + escape_line(w) + "\n" + "physics ms/step: " + format_g(w.times.total_ms_per_step(), 4) +
+       " total, " + stage_times(w) + "\n";
+  if (w.params.solver == Solver::automatic) o += "auto:            " + auto_line(w) + "\n";
   if (const auto n = w.ccd.stats.capped_substeps; n > 0)  // Ccd::resolve: the bodies still to meet something stopped
-    o << "ccd:             " << n << " substeps over budget (bodies stopped where they met for the rest of the substep; docs/numerics.md)\n";
-  if (const std::string a = advice(w); !a.empty()) o << "note:            " << a << "\n";
-  out << o.str();
+    o += "ccd:             " + to_string(n) + " substeps over budget (bodies stopped where they met for the rest of the substep; docs/numerics.md)\n";
+  if (const std::string a = advice(w); !a.empty()) o += "note:            " + a + "\n";
+  return o;
+}
+
+void print_summary(std::ostream& out, const World& w, const Summary& s, const std::string& why,
+                   const std::string& scene) {
+  out << summary(w, s, why, scene);
 }
 
 // What the auto mode used: "course pass 590 substeps, stable solver 10
@@ -108,10 +107,8 @@ std::string auto_line(const World& w) {
 std::string non_finite_line(const World& w) {
   if (w.health.finite()) return "";
   const NonFinite& b = *w.health.non_finite;
-  std::ostringstream o;
-  o << "body " << b.id << " has a non-finite " << (b.velocity ? "velocity" : "position") << " (" << b.value.x << ", "
-    << b.value.y << ") after frame " << b.frame;
-  return o.str();
+  return "body " + std::to_string(b.id) + " has a non-finite " + (b.velocity ? "velocity" : "position") + " (" +
+         format_g(b.value.x) + ", " + format_g(b.value.y) + ") after frame " + std::to_string(b.frame);
 }
 
 std::string escape_line(const World& w) {

@@ -22,6 +22,9 @@ struct Summary {
 Summary run(World& w, std::int64_t frames);
 template <class AfterStep>
 Summary run(World& w, std::int64_t frames, AfterStep&& after_step);
+// The summary the command line prints after a headless run; `summary` is its
+// text (the browser build, which links no stream, prints that: docs/web.md).
+std::string summary(const World& w, const Summary& s, const std::string& why, const std::string& scene = "");
 void print_summary(std::ostream& out, const World& w, const Summary& s, const std::string& why,
                    const std::string& scene = "");
 

@@ -1,5 +1,6 @@
 #include "app/input_log.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <charconv>
@@ -7,7 +8,6 @@
 #include <fstream>
 #include <optional>
 #include <ostream>
-#include <sstream>
 #include <string_view>
 
 #include "engine/limits.hpp"
@@ -79,13 +79,15 @@ bool LoggedEvent::operator==(const LoggedEvent& o) const {
          event.y == o.event.y && event.button == o.event.button;
 }
 
-InputLog parse_input_log(std::istream& in, const std::string& name) {
+InputLog parse_input_log(std::string_view text, const std::string& name) {
   InputLog log;
   bool seen_header = false, ended = false;
   std::size_t n = 0;
-  for (std::string text; std::getline(in, text);) {
+  for (std::size_t from = 0; from < text.size();) {  // the lines, as std::getline reads them
     ++n;
-    std::string_view line = text;
+    const std::size_t end = std::min(text.find('\n', from), text.size());
+    std::string_view line = text.substr(from, end - from);
+    from = end + 1;
     if (line.ends_with('\r')) line.remove_suffix(1);  // written on Windows
     if (line.find('\0') != std::string_view::npos) LineReader(name, n).fail("a NUL byte: an input log is text");
     if (line.starts_with(scene_prefix)) log.scene = std::string(line.substr(scene_prefix.size()));
@@ -128,13 +130,13 @@ InputLog parse_input_log(std::istream& in, const std::string& name) {
 }
 
 InputLog read_input_log(const std::string& path) {
-  std::istringstream in;
+  std::string text;
   try {
-    in.str(read_input_file(path, "input log"));  // 64 MB at most, a device or a pipe too
+    text = read_input_file(path, "input log");  // 64 MB at most, a device or a pipe too
   } catch (const SceneError& e) {
     throw InputLogError(e.what());
   }
-  return parse_input_log(in, path);
+  return parse_input_log(text, path);
 }
 
 void write_input_log(std::ostream& out, const InputLog& log) {

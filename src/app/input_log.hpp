@@ -23,6 +23,7 @@
 #include <iosfwd>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "app/testbed.hpp"
@@ -52,8 +53,8 @@ struct InputLogError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// `name` is the file name the messages give.
-InputLog parse_input_log(std::istream& in, const std::string& name);
+// `text` is the log's; `name` is the file name the messages give.
+InputLog parse_input_log(std::string_view text, const std::string& name);
 InputLog read_input_log(const std::string& path);  // throws InputLogError
 
 void write_input_log(std::ostream& out, const InputLog& log);

@@ -5,20 +5,15 @@
 #pragma once
 
 #include <cmath>
-#include <sstream>
 #include <string>
 
+#include "engine/format.hpp"
 #include "scene/scene.hpp"
 
 namespace physics::scene_check {
 
 // "%g"-like text for messages: short, and exact enough to find the value.
-inline std::string num(double v) {
-  std::ostringstream o;
-  o.precision(10);
-  o << v;
-  return o.str();
-}
+inline std::string num(double v) { return format_g(v, 10); }
 
 inline std::string entry_path(std::size_t i) { return "blocks[" + std::to_string(i) + "]"; }
 

@@ -10,7 +10,6 @@
 #include <cstdint>
 #include <initializer_list>
 #include <span>
-#include <sstream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -22,6 +21,7 @@
 #define JSON_ASSERT(x) static_cast<void>(0)
 #include <nlohmann/json.hpp>
 
+#include "engine/format.hpp"
 #include "scene/scene.hpp"
 
 namespace physics::scene_io {
@@ -51,12 +51,7 @@ inline std::string quote(std::string_view s) {
   return out + "\"";
 }
 
-inline std::string short_text(double v) {
-  std::ostringstream o;
-  o.precision(10);
-  o << v;
-  return o.str();
-}
+inline std::string short_text(double v) { return format_g(v, 10); }
 
 // A key path ("blocks[3].size[0]"), built only for a message: a scene's
 // thousands of blocks pass their checks without a string being made. A Path

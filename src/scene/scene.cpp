@@ -7,7 +7,6 @@
 #include <atomic>
 #include <iterator>
 #include <cmath>
-#include <sstream>
 
 #include "engine/broadphase.hpp"
 #include "api/view.hpp"

@@ -5,10 +5,11 @@
 // by their tables (keys.hpp); and the file I/O.
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <limits>
+#include <memory>
 #include <optional>
 
 #include "scene/json_parse.hpp"
@@ -293,7 +294,12 @@ std::string read_input_file(const std::string& path, const std::string& what) {
   const auto status = std::filesystem::status(path, ec);
   if (ec || !std::filesystem::exists(status)) throw SceneError(cannot + "no such file");
   if (std::filesystem::is_directory(status)) throw SceneError(cannot + "it is a directory");
-  std::ifstream in(path, std::ios::binary);
+  // A C file, not a stream: the browser build links no iostreams (docs/web.md).
+  struct Close {
+    void operator()(std::FILE* f) const { std::fclose(f); }
+  };
+  const std::unique_ptr<std::FILE, Close> file(std::fopen(path.c_str(), "rb"));
+  std::FILE* const in = file.get();
   if (!in) throw SceneError(cannot + std::strerror(errno));
   const std::string too_large = cannot + "larger than " + std::to_string(max_file_size >> 20) + " MB";
   auto size = std::filesystem::is_regular_file(status) ? std::filesystem::file_size(path, ec) : 0;
@@ -304,14 +310,11 @@ std::string read_input_file(const std::string& path, const std::string& what) {
   // (a device, a pipe, a file that grew) is read on in chunks, one byte past
   // the limit at most: /dev/zero is refused at 64 MB, not after 2 GB.
   std::string text(static_cast<std::size_t>(size), '\0');
-  in.read(text.data(), static_cast<std::streamsize>(text.size()));
-  text.resize(static_cast<std::size_t>(in.gcount()));
-  for (char buf[65536]; in && !in.eof() && text.size() <= max_file_size;) {
-    in.read(buf, sizeof buf);
-    text.append(buf, static_cast<std::size_t>(in.gcount()));
-  }
+  text.resize(std::fread(text.data(), 1, text.size(), in));
+  for (char buf[65536]; !std::ferror(in) && !std::feof(in) && text.size() <= max_file_size;)
+    text.append(buf, std::fread(buf, 1, sizeof buf, in));
   if (text.size() > max_file_size) throw SceneError(too_large);
-  if (in.bad()) throw SceneError(cannot + "read error");
+  if (std::ferror(in)) throw SceneError(cannot + "read error");
   return text;
 }
 

@@ -65,6 +65,9 @@ void put(std::to_chars_result r, char* buf) {
     put(std::to_chars(buf, buf + sizeof buf, any_double(), std::chars_format::scientific, p), buf);
     const double v = std::ldexp(static_cast<double>(next() >> 12), static_cast<int>(next() % 60) - 30);
     put(std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, p), buf);
+    // The general format (format_g: messages, the summary, the dumps' sizes), through both helpers.
+    put(std::to_chars(buf, buf + sizeof buf, any_double(), std::chars_format::general, p % 18), buf);
+    put(std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, p % 18), buf);
   }
 }
 
