@@ -53,7 +53,7 @@ bool AutoMode::elastic(const Components& k, std::span<const EntityId> bodies) {
     lightest = std::min(lightest, k.mass[e]);
     heaviest = std::max(heaviest, k.mass[e]);
   }
-  return heaviest <= elastic_mass_ratio * lightest;
+  return heaviest < elastic_mass_ratio * lightest;
 }
 
 // Whether two fixed bodies lie side by side, touching, along a face that

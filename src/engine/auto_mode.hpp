@@ -80,7 +80,7 @@ class AutoMode {
   // re-predicts each impact against every body, and sweeping the undone
   // islands of a 10 000-body gas took its step from 5 to 23 ms.
   static constexpr std::size_t undo_bodies = 2048;
-  // The largest ratio of two finite masses for which an elastic scene under
+  // The ratio of two finite masses below which an elastic scene under
   // gravity is swept whole (sweep_all, elastic).
   static constexpr double elastic_mass_ratio = 1e3;
 
