@@ -89,6 +89,34 @@ void World::add(SystemId s, EntityId e) {
   if (auto* list = stage(s)) list->push_back(e);
 }
 
+EntityId World::add_tile_layer(Vector position, TileGrid grid) {
+  if (const std::string bad = check(grid); !bad.empty()) throw std::invalid_argument(bad);
+  const EntityId e = components.create();
+  components.position[e] = position;
+  components.box[e] = Rect{grid.cell * grid.columns, grid.cell * grid.rows};
+  components.mass[e] = infinity;
+  tiles.add(TileLayer(e, std::move(grid)));
+  return e;
+}
+
+// The strips near the Collision stage's bodies, as proxies listed before
+// them. The reach covers every stage that pairs bodies in this substep: the
+// course pass's margin (1 px), the stable solver's (0.5 px), contact
+// events' (0.25 px), CCD's sweep (the swept box), and gravity's kick, which
+// Forces gave before this.
+void World::gather_tiles(double h) {
+  created_.clear();
+  tiles.gather(components, bodies(SystemId::collision), h, 2.0, proxies_, created_);
+  if (!created_.empty()) {
+    destroyed_.resize(components.size(), 0);
+    for (const EntityId e : created_) destroyed_[e] = 2;
+    events.owner.assign(tiles.owners().begin(), tiles.owners().end());
+  }
+  colliding_.assign(proxies_.begin(), proxies_.end());
+  const auto list = bodies(SystemId::collision);
+  colliding_.insert(colliding_.end(), list.begin(), list.end());
+}
+
 void World::destroy(EntityId e) {
   if (e >= components.size() || !alive(e)) return;
   for (auto& list : stages_)
@@ -114,7 +142,8 @@ void World::before_move(double h) {
   const bool exact = exact_motion() && declares(SystemId::move);
   if (exact) exact_.after_forces(components, bodies(SystemId::move));
   if (declares(SystemId::collision)) {
-    const auto colliding = bodies(SystemId::collision);
+    if (!tiles.empty()) gather_tiles(h);
+    const auto colliding = this->colliding();
     if (params.solver == Solver::automatic) {
       auto_before_move(colliding, h);
     } else {
@@ -183,7 +212,7 @@ void World::record_solver_contacts() {
 }
 
 void World::finish_events() {
-  if (events.enabled && declares(SystemId::collision)) events.finish(components, bodies(SystemId::collision), frame);
+  if (events.enabled && declares(SystemId::collision)) events.finish(components, colliding(), frame);
 }
 
 void World::end_frame() {
@@ -195,7 +224,7 @@ void World::end_frame() {
 
 void World::after_move() {
   if (!declares(SystemId::collision) || !solver_step()) return;
-  contact_solver.solve_positions(components, bodies(SystemId::collision), params.gravity, solver_settings(params),
+  contact_solver.solve_positions(components, colliding(), params.gravity, solver_settings(params),
                                  broadphase, times);
 }
 
@@ -233,7 +262,7 @@ void World::check_health() {
 }
 
 BroadPhase::CoursePairs World::course_pairs() {
-  return broadphase.course_pairs(components, bodies(SystemId::collision), params.substep());
+  return broadphase.course_pairs(components, colliding(), params.substep());
 }
 
 double World::kinetic_energy() const {

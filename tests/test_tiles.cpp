@@ -1,0 +1,196 @@
+// Tile layers (engine/tiles.hpp; docs/game-physics.md, "Tile layers"): a
+// box slides over a floor of 1000 tiles at every speed and in every solver
+// as over one flat body, rests on tiles, passes one-way tiles from below and
+// lands on them from above, and stops at a wall of tiles where it hits it.
+// Each case against its closed form.
+#include <string>
+
+#include "helpers.hpp"
+#include "numerics/scenes.hpp"
+
+using namespace physics;
+using namespace physics::numerics;
+
+namespace {
+
+const Mode course{"course", 1, false, Solver::course, 8};
+const Mode stable{"stable", 1, false, Solver::stable, 8};
+const Mode automatic{"auto", 1, false, Solver::automatic, 8};
+const Mode modes[] = {course, stable, automatic};
+
+constexpr double g = 0.001;
+
+// A grid of `columns` x `rows` cells of 16 px, all of kind t.
+TileGrid filled(int columns, int rows, Tile t) {
+  TileGrid grid{16, columns, rows, {}};
+  grid.cells.assign(static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows), static_cast<std::uint8_t>(t));
+  return grid;
+}
+
+// The grid of rows like "#..=", '#' solid, '=' one-way, '.' empty.
+TileGrid drawn(std::initializer_list<std::string> rows) {
+  TileGrid grid{16, static_cast<int>(rows.begin()->size()), static_cast<int>(rows.size()), {}};
+  for (const std::string& r : rows)
+    for (const char ch : r)
+      grid.cells.push_back(static_cast<std::uint8_t>(ch == '#' ? Tile::solid : ch == '=' ? Tile::one_way_up : Tile::empty));
+  return grid;
+}
+
+// Bodies the solvers see that are alive (the scene's), as a dump lists them.
+std::size_t alive_count(const World& w) {
+  std::size_t n = 0;
+  for (EntityId e = 0; e < w.components.size(); ++e) n += w.alive(e);
+  return n;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(tiles)
+
+// A floor of 1000 cells, its top at y = 200, and a 20 x 20 box resting on it
+// at x = 7 sliding at v: x = 7 + v t exactly as on one body (frictionless),
+// y = 180 throughout. Tiles of 16 px: at 10 px/ms the box crosses ten seams a frame.
+BOOST_AUTO_TEST_CASE(a_box_slides_over_a_floor_of_1000_tiles_at_every_speed_in_every_solver) {
+  for (const Mode& m : modes)
+    for (const double v : {0.01, 0.1, 1.0, 10.0}) {
+      World w = make_world(m, {0, g});
+      w.add_tile_layer({0, 200}, filled(1000, 2, Tile::solid));
+      const EntityId s = block(w, 7, 180, 20, 20, 1.0, {v, 0}, 0.0);
+      const int frames = std::min(600, static_cast<int>(15000 / (v * course_dt)));
+      double worst_y = 0;
+      for (int f = 0; f < frames; ++f) {
+        Game::step(w);
+        worst_y = std::max(worst_y, std::abs(w.components.position[s].y - 180));
+      }
+      BOOST_TEST_CONTEXT(m.name << " at " << v << " px/ms, " << frames << " frames") {
+        BOOST_TEST(std::abs(w.components.position[s].x - (7 + v * course_dt * frames)) < 1.0);
+        BOOST_TEST(worst_y < 0.05);
+        BOOST_TEST(w.components.velocity[s].x == v);
+      }
+    }
+}
+
+// Dropped from 40 px above, the box rests on the tiles: overlap below 1 px
+// (the stable solver's slop, the course's g h² a step at most), at rest.
+BOOST_AUTO_TEST_CASE(a_box_dropped_on_tiles_rests_on_them) {
+  for (const Mode& m : modes) {
+    World w = make_world(m, {0, g});
+    w.add_tile_layer({0, 200}, filled(50, 3, Tile::solid));
+    const EntityId s = block(w, 100, 140, 30, 20, 2.0, {}, 0.0);
+    double deepest = 0;
+    for (int f = 0; f < 300; ++f) {
+      Game::step(w);
+      if (f > 60) deepest = std::max(deepest, w.components.position[s].y + 20 - 200);
+    }
+    BOOST_TEST_CONTEXT(m.name) {
+      BOOST_TEST(deepest < 1.0);
+      BOOST_TEST(std::abs(w.components.position[s].y - 180) < 1.0);
+      BOOST_TEST(std::abs(w.components.velocity[s].y) < 2 * g * course_dt);
+      BOOST_TEST(w.components.position[s].x == 100);
+    }
+  }
+}
+
+// One-way cells: thrown up from below, the box passes through them, falls
+// back and lands on their top; dropped from above, it stays on top.
+BOOST_AUTO_TEST_CASE(one_way_tiles_pass_from_below_and_hold_from_above) {
+  for (const Mode& m : modes) {
+    for (const bool below : {true, false}) {
+      World w = make_world(m, {0, g});
+      w.add_tile_layer({0, 200}, filled(50, 1, Tile::one_way_up));
+      const EntityId s = below ? block(w, 100, 260, 20, 20, 1.0, {0, -0.6}, 0.0) : block(w, 100, 120, 20, 20, 1.0, {}, 0.0);
+      double highest = 1e9;
+      for (int f = 0; f < 400; ++f) Game::step(w), highest = std::min(highest, w.components.position[s].y);
+      BOOST_TEST_CONTEXT(m.name << (below ? " from below" : " from above")) {
+        if (below) BOOST_TEST(highest < 180.0);  // it went through
+        BOOST_TEST(std::abs(w.components.position[s].y - 180) < 1.0);
+        BOOST_TEST(std::abs(w.components.velocity[s].y) < 2 * g * course_dt);
+      }
+    }
+  }
+}
+
+// A wall of tiles, one column 40 cells high at x = 400: a box thrown at it
+// across a seam between two of its cells (y = 108: rows 6 and 7) stops with
+// its right side on the wall, y unchanged (no gravity: nothing else moves it).
+BOOST_AUTO_TEST_CASE(a_wall_of_tiles_stops_a_box_without_pushing_it_along_the_seam) {
+  for (const Mode& m : modes)
+    for (const double v : {0.1, 1.0, 5.0}) {
+      World w = make_world(m);
+      w.add_tile_layer({400, 0}, filled(1, 40, Tile::solid));
+      const EntityId s = block(w, 300, 108, 20, 20, 1.0, {v, 0}, 0.0);
+      for (int f = 0; f < 120; ++f) Game::step(w);
+      BOOST_TEST_CONTEXT(m.name << " at " << v << " px/ms") {
+        BOOST_TEST(std::abs(w.components.position[s].x - 380) < 1.0);
+        BOOST_TEST(w.components.position[s].y == 108);
+        BOOST_TEST(w.components.velocity[s].y == 0);
+        BOOST_TEST(w.components.velocity[s].x <= 1e-9);
+      }
+    }
+}
+
+// A box pushed along a floor into a wall of tiles standing on it (a corner)
+// stops at the wall and stays on the floor.
+BOOST_AUTO_TEST_CASE(a_box_slides_into_a_corner_of_tiles_and_stays_on_the_floor) {
+  for (const Mode& m : modes) {
+    World w = make_world(m, {0, g});
+    w.add_tile_layer({0, 0}, drawn({"..........#", "..........#", "..........#", "###########", "###########"}));
+    const EntityId s = block(w, 20, 28, 20, 20, 1.0, {0.5, 0}, 0.0);
+    for (int f = 0; f < 200; ++f) Game::step(w);
+    BOOST_TEST_CONTEXT(m.name) {
+      BOOST_TEST(std::abs(w.components.position[s].x - 140) < 1.0);
+      BOOST_TEST(std::abs(w.components.position[s].y - 28) < 0.05);
+    }
+  }
+}
+
+// Strips: a floor is one strip along its top; a platform one cell thick is
+// one box for its top and bottom; a lone cell one box; one-way cells only
+// their top, where nothing is above them.
+BOOST_AUTO_TEST_CASE(strips_merge_runs_of_exposed_faces) {
+  const TileLayer floor(0, filled(1000, 2, Tile::solid));
+  BOOST_TEST(floor.strips().size() == 4u);  // top, bottom, the two ends (two cells high)
+  const TileLayer lone(0, drawn({"...", ".#.", "..."}));
+  BOOST_TEST(lone.strips().size() == 1u);
+  const TileLayer platform(0, drawn({"....", ".##.", "...."}));
+  BOOST_TEST(platform.strips().size() == 3u);  // top and bottom (one box), the two ends
+  const TileLayer one_way(0, drawn({"==", "=="}));
+  BOOST_TEST(one_way.strips().size() == 1u);
+  BOOST_TEST(one_way.strips()[0].one_way);
+  BOOST_TEST(one_way.strips()[0].row == 0);
+}
+
+// A 1000 x 1000 map is its 1 MB of cells, and a box on it makes proxies for
+// the few strips near it only: what a step costs does not grow with the map.
+BOOST_AUTO_TEST_CASE(a_large_map_makes_proxies_only_near_the_bodies) {
+  TileGrid grid = filled(1000, 1000, Tile::empty);
+  for (int r = 0; r < 1000; r += 10)
+    for (int c = 0; c < 1000; ++c) grid.cells[static_cast<std::size_t>(r) * 1000 + static_cast<std::size_t>(c)] = 1;
+  World w = make_world(stable, {0, g});
+  w.add_tile_layer({0, 0}, grid);
+  BOOST_TEST(w.tiles.layers()[0].grid().cells.size() == 1'000'000u);
+  const EntityId s = block(w, 5000, 120, 20, 20, 1.0, {0.3, 0}, 0.0);
+  for (int f = 0; f < 120; ++f) Game::step(w);
+  BOOST_TEST(w.tiles.proxy_count() <= 4u);
+  BOOST_TEST(std::abs(w.components.position[s].y - 140) < 0.05);
+  BOOST_TEST(alive_count(w) == 2u);  // the layer and the box: proxies are not bodies
+}
+
+BOOST_AUTO_TEST_CASE(bad_grids_are_refused_with_one_line) {
+  World w = make_world(course);
+  TileGrid bad = filled(4, 2, Tile::solid);
+  bad.cells[5] = 7;
+  BOOST_CHECK_EXCEPTION(w.add_tile_layer({}, bad), std::invalid_argument, [](const std::invalid_argument& e) {
+    return std::string(e.what()) == "unknown tile kind 7 at column 1, row 1 (0 empty, 1 solid, 2 one-way up)";
+  });
+  TileGrid small = filled(4, 2, Tile::solid);
+  small.cells.pop_back();
+  BOOST_CHECK_THROW(w.add_tile_layer({}, small), std::invalid_argument);
+  BOOST_CHECK_THROW(w.add_tile_layer({}, filled(70000, 1, Tile::solid)), std::invalid_argument);
+  TileGrid zero = filled(4, 2, Tile::solid);
+  zero.cell = 0;
+  BOOST_CHECK_THROW(w.add_tile_layer({}, zero), std::invalid_argument);
+  BOOST_TEST(w.components.size() == 0u);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
