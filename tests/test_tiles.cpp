@@ -7,6 +7,8 @@
 
 #include "helpers.hpp"
 #include "numerics/scenes.hpp"
+#include "physics/physics.hpp"
+#include "scene/scene_json.hpp"
 
 using namespace physics;
 using namespace physics::numerics;
@@ -191,6 +193,114 @@ BOOST_AUTO_TEST_CASE(bad_grids_are_refused_with_one_line) {
   zero.cell = 0;
   BOOST_CHECK_THROW(w.add_tile_layer({}, zero), std::invalid_argument);
   BOOST_TEST(w.components.size() == 0u);
+}
+
+// Swept against tiles with no code of its own: a box falling at 3 px/ms (50
+// px a frame) onto a floor one cell (16 px) thick goes through it without
+// CCD and lands on it with CCD, in the course pass and in auto.
+BOOST_AUTO_TEST_CASE(ccd_sweeps_bodies_against_tiles) {
+  const Mode course_ccd{"course+ccd", 1, true, Solver::course, 8};
+  for (const Mode& m : {course, course_ccd, automatic}) {
+    World w = make_world(m);
+    w.add_tile_layer({0, 400}, filled(40, 1, Tile::solid));
+    const EntityId s = block(w, 100, 355, 10, 10, 1.0, {0, 3.0}, 0.0);
+    for (int f = 0; f < 30; ++f) Game::step(w);
+    BOOST_TEST_CONTEXT(m.name) {
+      if (m.ccd || m.solver == Solver::automatic) BOOST_TEST(std::abs(w.components.position[s].y - 390) < 0.05);
+      else BOOST_TEST(w.components.position[s].y > 416);  // through it
+    }
+  }
+}
+
+// Contact events name the layer's body, once per touch of the layer, never a proxy.
+BOOST_AUTO_TEST_CASE(contact_events_name_the_layer) {
+  for (const Mode& m : modes) {
+    World w = make_world(m, {0, g});
+    w.enable_events();
+    const EntityId s = block(w, 30, 150, 20, 20, 1.0, {}, 0.0);
+    const EntityId layer = w.add_tile_layer({0, 200}, drawn({"...#", "####"}));
+    int begins = 0;
+    for (int f = 0; f < 120; ++f) {
+      Game::step(w);
+      for (const ContactEvent& e : w.events.events()) {
+        BOOST_TEST(e.a == s);
+        BOOST_TEST(e.b == layer);
+        begins += e.kind == EventKind::begin;
+      }
+    }
+    BOOST_TEST_CONTEXT(m.name) {
+      BOOST_TEST(begins == 1);
+      BOOST_TEST(w.events.touching().size() == 1u);
+    }
+  }
+}
+
+// A scene file's "tiles": the layer is made after the blocks, the blocks
+// land on it, and bad rows, sizes and characters give one line each.
+BOOST_AUTO_TEST_CASE(a_scene_file_with_tiles_loads_and_bad_rows_give_one_line) {
+  const auto scene = [](const std::string& tiles) {
+    return R"({ "world": { "walls": false, "gravity": [0, 0.001], "restitution": 0 },
+                "blocks": [ { "pos": [40, 100], "size": [20, 20], "mass": 1 } ],
+                "tiles": [ )" + tiles + " ] }";
+  };
+  const SceneSpec s = parse_scene(scene(R"({ "pos": [0, 300], "cell": 20, "rows": ["....", "#=##"] })"), "t.json");
+  World w = make_world(s, false);
+  BOOST_TEST(w.tiles.layers().size() == 1u);
+  BOOST_TEST(w.tiles.layers()[0].body() == 1u);
+  BOOST_TEST(w.components.box[1].width == 80);
+  for (int f = 0; f < 200; ++f) Game::step(w);
+  BOOST_TEST(std::abs(w.components.position[0].y - 300) < 0.05);  // on the one-way cell of the second row
+  const std::pair<std::string, std::string> bad[] = {
+      {R"({ "pos": [0, 0], "rows": ["#x."] })", "t.json: tiles[0].rows[0]: unknown tile 'x' at column 1 ('#' solid, '=' one-way up, '.' empty)"},
+      {R"({ "pos": [0, 0], "rows": ["##", "###"] })", "t.json: tiles[0].rows[1]: has 3 cells, rows[0] 2 (every row the same length)"},
+      {R"({ "pos": [0, 0], "rows": [] })", "t.json: tiles[0].rows: must be a non-empty array of strings (got an array)"},
+      {R"({ "pos": [0, 0], "cell": 0, "rows": ["#"] })", "t.json: tiles[0].cell: must be > 0 (got 0)"},
+      {R"({ "pos": [700, 0], "cell": 40, "rows": ["####"] })",
+       "t.json: tiles[0]: the layer (160 x 40 px at [700, 0]) must lie inside the world (800 x 600)"},
+      {R"({ "rows": ["#"] })", "t.json: tiles[0]: missing key \"pos\" ([x, y], px)"},
+  };
+  for (const auto& [tiles, message] : bad) {
+    std::string got;
+    try {
+      parse_scene(scene(tiles), "t.json");
+    } catch (const SceneError& e) {
+      got = e.what();
+    }
+    BOOST_TEST(got == message);
+  }
+}
+
+// The public API: a layer is a body (listed, fixed, its size the grid's),
+// its cells readable; proxies are never listed; a bad def is refused.
+BOOST_AUTO_TEST_CASE(the_api_makes_tile_layers) {
+  WorldDef def = default_world_def();
+  def.gravity = {0, g};
+  def.solver = SolverKind::stable;
+  const WorldId world = create_world(def);
+  TileLayerDef t;
+  t.position = {0, 200};
+  t.columns = 3, t.rows = 1;
+  t.cells = {TileKind::solid, TileKind::one_way_up, TileKind::solid};
+  const BodyId layer = create_tile_layer(world, t);
+  BodyDef b = default_body_def();
+  b.position = {5, 150};
+  b.restitution = 0;
+  const BodyId box = create_body(world, b);
+  for (int f = 0; f < 120; ++f) step(world);
+  BOOST_TEST(std::abs(position(box).y - 190) < 0.05);
+  BOOST_TEST(bodies(world).size() == 2u);
+  BOOST_TEST(is_tile_layer(layer));
+  BOOST_TEST(!is_tile_layer(box));
+  BOOST_TEST(size(layer).x == 48);
+  BOOST_TEST(mass(layer) == fixed_mass);
+  BOOST_TEST((tile_at(layer, 1, 0) == TileKind::one_way_up));
+  BOOST_TEST((tile_at(layer, 5, 0) == TileKind::empty));
+  BOOST_CHECK_THROW(tile_at(box, 0, 0), Error);
+  t.cells.pop_back();
+  BOOST_CHECK_EXCEPTION(create_tile_layer(world, t), Error, [](const Error& e) {
+    return std::string(e.what()) == "bad TileLayerDef: a tile layer of 3 x 1 cells needs 3 cells (got 2)";
+  });
+  destroy_world(world);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

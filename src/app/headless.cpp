@@ -14,7 +14,7 @@ void start_measures(Summary& s, const World& w) {
 
 void end_measures(Summary& s, World& w, std::int64_t frames) {
   s.frames = frames;
-  s.bodies = w.components.size();
+  s.bodies = w.components.size() - w.tiles.proxy_count();  // a tile strip's proxy is no body
   s.mobile = w.finite_bodies();
   if (w.health.finite()) w.health.count_escapes(w.components, w.frame);  // the frames since the last count
   s.ke_end = w.kinetic_energy();
