@@ -6,6 +6,7 @@
 #include <string>
 
 #include "helpers.hpp"
+#include "engine/query.hpp"
 #include "numerics/scenes.hpp"
 #include "physics/physics.hpp"
 #include "scene/scene_json.hpp"
@@ -301,6 +302,63 @@ BOOST_AUTO_TEST_CASE(the_api_makes_tile_layers) {
     return std::string(e.what()) == "bad TileLayerDef: a tile layer of 3 x 1 cells needs 3 cells (got 2)";
   });
   destroy_world(world);
+}
+
+// Rays against a layer give, from outside its solid cells, exactly what rays
+// against one block per solid cell give (the same sweep), and name the cell;
+// one-way cells stop rays coming down only; box and point queries meet
+// open cells. Random layers and rays, against the blocks' answers.
+BOOST_AUTO_TEST_CASE(queries_hit_tiles_and_name_the_cell) {
+  Random rng(7);
+  for (int round = 0; round < 40; ++round) {
+    TileGrid grid = filled(12, 9, Tile::empty);
+    for (auto& c : grid.cells) c = rng.next() % 3 == 0 ? 1 : 0;
+    World tiles = make_world(course), blocks = make_world(course);
+    const Vector o{37, 21};
+    const EntityId layer = tiles.add_tile_layer(o, grid);
+    for (int r = 0; r < grid.rows; ++r)
+      for (int c = 0; c < grid.columns; ++c)
+        if (grid.at(c, r) == Tile::solid) block(blocks, o.x + 16 * c, o.y + 16 * r, 16, 16, infinity);
+    const QueryIndex ti(tiles), bi(blocks);
+    for (int k = 0; k < 50; ++k) {
+      const auto coord = [&](double span) { return rng.uniform(0, span); };
+      const Vector from{coord(260), coord(200)}, dir{coord(2) - 1, coord(2) - 1};
+      if (!ti.query_point(from).empty() || !bi.query_point(from).empty()) continue;  // from outside the solid
+      const auto a = ti.ray_cast(from, dir, 300), b = bi.ray_cast(from, dir, 300);
+      BOOST_TEST_INFO("from (" << from.x << ", " << from.y << ") dir (" << dir.x << ", " << dir.y << ") round " << round << " k " << k << (b ? " blocks hit " + std::to_string(b->fraction) : std::string()));
+      BOOST_TEST_REQUIRE(a.has_value() == b.has_value());
+      if (!a) continue;
+      BOOST_TEST(a->body == layer);
+      BOOST_TEST(a->fraction == b->fraction);
+      BOOST_TEST((a->normal == b->normal));
+      BOOST_TEST((a->point == b->point));
+      const Vector cell = blocks.components.position[b->body];
+      BOOST_TEST(a->column == static_cast<int>((cell.x - o.x) / 16));
+      BOOST_TEST(a->row == static_cast<int>((cell.y - o.y) / 16));
+    }
+  }
+  World w = make_world(course);
+  const EntityId layer = w.add_tile_layer({0, 100}, drawn({"#..=", "####"}));
+  const QueryIndex q(w);
+  const auto down = q.ray_cast({56, 0}, {0, 1}, 500);  // onto the one-way cell's top
+  BOOST_TEST_REQUIRE(down.has_value());
+  BOOST_TEST(down->column == 3);
+  BOOST_TEST(down->row == 0);
+  BOOST_TEST(down->point.y == 100);
+  const auto up = q.ray_cast({56, 200}, {0, -1}, 500);  // from below: stops at the bottom row, not the one-way cell
+  BOOST_TEST_REQUIRE(up.has_value());
+  BOOST_TEST(up->row == 1);
+  const auto up_past = q.ray_cast({56, 115}, {0, -1}, 500);  // from inside the one-way cell: through it
+  BOOST_TEST(!up_past.has_value());
+  const auto out_of_wall = q.ray_cast({8, 124}, {0, 1}, 50);  // from inside the solid: its cells ignored
+  BOOST_TEST(!out_of_wall.has_value());
+  BOOST_TEST(q.query_point({8, 108}) == std::vector<EntityId>{layer});
+  BOOST_TEST(q.query_point({16, 108}).empty());  // on a cell's edge
+  BOOST_TEST(q.query_point({24, 108}).empty());  // an empty cell
+  const auto cells = q.cells_meeting({10, 110}, {40, 120});  // rows 0 and 1, columns 0 to 2
+  BOOST_TEST(cells.size() == 4u);  // (0, 0), and (0, 1) (1, 1) (2, 1)
+  BOOST_TEST(cells[0].cell.column == 0);
+  BOOST_TEST(cells[0].cell.row == 0);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -191,11 +191,20 @@ struct RayResult {
   Vec2 point;      // where, on its boundary
   Vec2 normal;     // unit outward normal of the face entered
   double fraction; // in [0, 1] of max_distance
+  int column = -1, row = -1;  // the cell entered, when body is a tile layer
 };
 // From origin along direction (need not be unit) for max_distance px; bodies it starts in are ignored.
 std::optional<RayResult> ray_cast(WorldId world, Vec2 origin, Vec2 direction, double max_distance);
 std::vector<BodyId> query_box(WorldId world, Aabb box);  // bodies whose interior meets box
 std::vector<BodyId> query_point(WorldId world, Vec2 point);  // bodies whose interior holds point
+// Tile layers: a ray enters a solid cell by any face, a one-way cell by its top face going down (ignoring the
+// solid it starts in); a box or point query lists a layer when it meets a non-empty cell. The cells it meets:
+struct TileCellResult {
+  BodyId layer;
+  int column, row;
+  TileKind kind;
+};
+std::vector<TileCellResult> query_tiles(WorldId world, Aabb box);  // non-empty cells whose interior meets box
 
 // ---- contact events (WorldDef::contact_events) ----
 

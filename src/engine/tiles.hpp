@@ -39,6 +39,12 @@ struct TileGrid {
   }
 };
 
+// A cell of a layer, as queries name it.
+struct TileCell {
+  int column, row;
+  Tile kind;
+};
+
 // What is wrong with the grid, in one line, or "" when it is fine: the cell
 // size and counts, the extent (at most max_world_size px a side), the
 // number of cells, unknown kinds.
