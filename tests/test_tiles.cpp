@@ -51,8 +51,8 @@ std::size_t alive_count(const World& w) {
 BOOST_AUTO_TEST_SUITE(tiles)
 
 // A floor of 1000 cells, its top at y = 200, and a 20 x 20 box resting on it
-// at x = 7 sliding at v: x = 7 + v t exactly as on one body (frictionless),
-// y = 180 throughout. Tiles of 16 px: at 10 px/ms the box crosses ten seams a frame.
+// at x = 7 sliding at v: x = 7 + v t at every frame as on one body
+// (frictionless), y = 180 throughout. Tiles of 16 px: at 10 px/ms the box crosses ten seams a frame.
 BOOST_AUTO_TEST_CASE(a_box_slides_over_a_floor_of_1000_tiles_at_every_speed_in_every_solver) {
   for (const Mode& m : modes)
     for (const double v : {0.01, 0.1, 1.0, 10.0}) {
@@ -60,13 +60,16 @@ BOOST_AUTO_TEST_CASE(a_box_slides_over_a_floor_of_1000_tiles_at_every_speed_in_e
       w.add_tile_layer({0, 200}, filled(1000, 2, Tile::solid));
       const EntityId s = block(w, 7, 180, 20, 20, 1.0, {v, 0}, 0.0);
       const int frames = std::min(600, static_cast<int>(15000 / (v * course_dt)));
-      double worst_y = 0;
-      for (int f = 0; f < frames; ++f) {
+      double worst_x = 0, worst_y = 0;
+      for (int f = 1; f <= frames; ++f) {
         Game::step(w);
+        worst_x = std::max(worst_x, std::abs(w.components.position[s].x - (7 + v * course_dt * f)));
         worst_y = std::max(worst_y, std::abs(w.components.position[s].y - 180));
       }
       BOOST_TEST_CONTEXT(m.name << " at " << v << " px/ms, " << frames << " frames") {
-        BOOST_TEST(std::abs(w.components.position[s].x - (7 + v * course_dt * frames)) < 1.0);
+        // Rounding only (measured: 6e-11 px at most); 1000 blocks of 16 px
+        // instead catch the course pass's box at 0.01 px/ms by 1 px.
+        BOOST_TEST(worst_x < 1e-6);
         BOOST_TEST(worst_y < 0.05);
         BOOST_TEST(w.components.velocity[s].x == v);
       }
