@@ -300,6 +300,19 @@ BOOST_AUTO_TEST_CASE(the_api_makes_tile_layers) {
   BOOST_TEST((tile_at(layer, 1, 0) == TileKind::one_way_up));
   BOOST_TEST((tile_at(layer, 5, 0) == TileKind::empty));
   BOOST_CHECK_THROW(tile_at(box, 0, 0), Error);
+  BOOST_CHECK_THROW(set_size(layer, {10, 10}), Error);
+  // Saved and restored with the world: the run from the state repeats.
+  const WorldState saved = save_state(world);
+  for (int f = 0; f < 30; ++f) step(world);
+  const Vec2 after = position(box);
+  restore_state(world, saved);
+  for (int f = 0; f < 30; ++f) step(world);
+  BOOST_TEST((position(box) == after));
+  const auto hit = ray_cast(world, {20, 0}, {0, 1}, 400);  // past the box, onto the one-way cell
+  BOOST_TEST_REQUIRE(hit.has_value());
+  BOOST_TEST((hit->body == layer));
+  BOOST_TEST(hit->column == 1);
+  BOOST_TEST(query_tiles(world, {{0, 199}, {40, 201}}).size() == 3u);
   t.cells.pop_back();
   BOOST_CHECK_EXCEPTION(create_tile_layer(world, t), Error, [](const Error& e) {
     return std::string(e.what()) == "bad TileLayerDef: a tile layer of 3 x 1 cells needs 3 cells (got 2)";

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "course/entities/block.hpp"
+#include "engine/query.hpp"
 #include "app/headless.hpp"
 #include "games/registry.hpp"
 #include "scene/scene_json.hpp"
@@ -258,7 +259,13 @@ bool Testbed::room_for_spawn(Vector pos) {
     spawn_index_.emplace();
     std::vector<FloatBox> boxes;
     boxes.reserve(c.size());
-    for (std::size_t e = 0; e < c.size(); ++e) boxes.push_back(FloatBox::around(c.position[e], c.box[e], 0.0));
+    // A tile layer's box and its strips' proxies are not what collides: its
+    // cells are, looked at below. (A NaN box is in no cell.)
+    const TileSet& tiles = world_->tiles;
+    for (std::size_t e = 0; e < c.size(); ++e)
+      boxes.push_back(!tiles.empty() && tiles.part_of_tiles(static_cast<EntityId>(e))
+                          ? FloatBox{NAN, NAN, NAN, NAN}
+                          : FloatBox::around(c.position[e], c.box[e], 0.0));
     spawn_index_->grid.index(boxes);
     spawn_index_->indexed = c.size();
   }
@@ -274,6 +281,8 @@ bool Testbed::room_for_spawn(Vector pos) {
     for (std::int64_t dy = -1; dy <= 1 && !hit; ++dy)
       if (const auto it = spawn_index_->cells.find(spawn_cell_key(cx + dx, cy + dy)); it != spawn_index_->cells.end())
         hit = std::any_of(it->second.begin(), it->second.end(), overlaps);
+  if (!hit && !world_->tiles.empty())
+    hit = !QueryIndex(*world_).cells_meeting(pos, pos + Vector{double(spawn_size), double(spawn_size)}).empty();
   return !hit;
 }
 

@@ -115,6 +115,11 @@ class TileSet {
   // other id itself; ids past its end (bodies made since the last proxy)
   // stand for themselves too. Empty while there is no proxy.
   std::span<const EntityId> owners() const { return owner_; }
+  // Whether e is a layer's body or a proxy: its box is not what collides.
+  bool part_of_tiles(EntityId e) const {
+    if (e < owner_.size() && owner_[e] != e) return true;
+    return std::any_of(layers_.begin(), layers_.end(), [&](const TileLayer& l) { return l.body() == e; });
+  }
 
   // The proxies of the strips near the finite bodies of `bodies` (each box
   // swept over h ms at its velocity, grown by `reach` px), in increasing id
