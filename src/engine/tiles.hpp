@@ -152,8 +152,8 @@ template <class F>
 void TileLayer::near(double x0, double y0, double x1, double y1, F&& f) const {
   const double cs = grid_.cell;
   if (!(x1 >= 0.0 && y1 >= 0.0 && x0 <= cs * grid_.columns && y0 <= cs * grid_.rows)) return;
-  // Cells meeting the closed box: from floor(lo / cs), a cell's left edge at
-  // most lo, to the cell whose left edge is at most hi.
+  // Cells meeting the closed box: from the cell holding lo (one before it
+  // too, which touches it when lo lies on its edge) to the cell holding hi.
   const auto clamp_cell = [](double v, int n) { return v < 0.0 ? 0 : v >= n - 1 ? n - 1 : static_cast<int>(v); };
   const int c0 = clamp_cell(std::floor(x0 / cs) - 1, grid_.columns), c1 = clamp_cell(std::floor(x1 / cs), grid_.columns);
   const int r0 = clamp_cell(std::floor(y0 / cs) - 1, grid_.rows), r1 = clamp_cell(std::floor(y1 / cs), grid_.rows);
