@@ -142,7 +142,8 @@ void World::before_move(double h) {
   const bool exact = exact_motion() && declares(SystemId::move);
   if (exact) exact_.after_forces(components, bodies(SystemId::move));
   if (declares(SystemId::collision)) {
-    if (!tiles.empty()) gather_tiles(h);
+    // Timed with the broad phase's pairs: it is the tiles' broad phase.
+    if (!tiles.empty()) times.time(Stage::pairs, [&] { gather_tiles(h); });
     const auto colliding = this->colliding();
     if (params.solver == Solver::automatic) {
       auto_before_move(colliding, h);
