@@ -182,6 +182,20 @@ BOOST_AUTO_TEST_CASE(a_large_map_makes_proxies_only_near_the_bodies) {
   BOOST_TEST(alive_count(w) == 2u);  // the layer and the box: proxies are not bodies
 }
 
+// A layer may cover the walls: neither its body nor its proxies count as
+// bodies that escaped the space the walls enclose.
+BOOST_AUTO_TEST_CASE(tiles_never_count_as_escaped) {
+  World w = make_world(course, {0, g});
+  w.health.watch(40, 40, 760, 560, 0);
+  w.add_tile_layer({0, 560}, filled(50, 2, Tile::solid));  // under the bottom wall's top
+  const EntityId s = block(w, 100, 500, 20, 20, 1.0, {}, 0.0);
+  for (int f = 0; f < 30 * Health::escape_period; ++f) Game::step(w);
+  w.health.count_escapes(w.components, w.frame);
+  BOOST_TEST(w.tiles.proxy_count() >= 1u);
+  BOOST_TEST(std::abs(w.components.position[s].y - 540) < 0.05);
+  BOOST_TEST(w.health.escaped == 0);
+}
+
 BOOST_AUTO_TEST_CASE(bad_grids_are_refused_with_one_line) {
   World w = make_world(course);
   TileGrid bad = filled(4, 2, Tile::solid);

@@ -31,7 +31,7 @@ bool runs(const World& w, Stage s) {
   switch (s) {
     case Stage::forces: case Stage::move: case Stage::collision: case Stage::health: return true;
     case Stage::ccd: return w.params.ccd || w.params.solver == Solver::automatic;
-    case Stage::pairs: return w.params.ccd || w.params.solver != Solver::course;
+    case Stage::pairs: return w.params.ccd || w.params.solver != Solver::course || !w.tiles.empty();  // tiles: their strips
     default: return w.params.solver != Solver::course;
   }
 }

@@ -95,6 +95,7 @@ EntityId World::add_tile_layer(Vector position, TileGrid grid) {
   components.position[e] = position;
   components.box[e] = Rect{grid.cell * grid.columns, grid.cell * grid.rows};
   components.mass[e] = infinity;
+  health.ignore(e);
   tiles.add(TileLayer(e, std::move(grid)));
   return e;
 }
@@ -109,7 +110,7 @@ void World::gather_tiles(double h) {
   tiles.gather(components, bodies(SystemId::collision), h, 2.0, proxies_, created_);
   if (!created_.empty()) {
     destroyed_.resize(components.size(), 0);
-    for (const EntityId e : created_) destroyed_[e] = 2;
+    for (const EntityId e : created_) destroyed_[e] = 2, health.ignore(e);
     events.owner.assign(tiles.owners().begin(), tiles.owners().end());
   }
   colliding_.assign(proxies_.begin(), proxies_.end());
