@@ -10,6 +10,7 @@
 #include "numerics/scenes.hpp"
 #include "physics/physics.hpp"
 #include "scene/scene_json.hpp"
+#include "app/testbed.hpp"
 
 using namespace physics;
 using namespace physics::numerics;
@@ -239,6 +240,23 @@ BOOST_AUTO_TEST_CASE(random_maps_hold_random_boxes) {
         if (m.solver != Solver::course) BOOST_TEST(deepest < 0.0101);
       }
     }
+}
+
+// The testbed: a click over a layer's empty cells spawns (the layer's box is
+// not what collides), one on a solid cell does not; the ray names the cell.
+BOOST_AUTO_TEST_CASE(the_testbed_spawns_over_tiles_and_its_ray_names_the_cell) {
+  const SceneSpec s = parse_scene(R"({ "world": { "walls": false },
+      "tiles": [ { "pos": [0, 200], "cell": 40, "rows": ["....", "####"] } ] })", "t.json");
+  Testbed tb({s}, 0, {}, {});
+  const std::size_t n = tb.world().components.size();
+  BOOST_TEST(tb.spawn({60, 220}, {}));  // in the layer's box, over an empty cell
+  BOOST_TEST(tb.world().components.size() == n + 1);
+  BOOST_TEST(!tb.spawn({100, 260}, {}));  // on a solid cell
+  tb.handle(InputEvent{InputEvent::Kind::mouse_down, 0, 130, 100, 3});
+  tb.handle(InputEvent{InputEvent::Kind::mouse_move, 0, 130, 300, 0});
+  const View v = tb.view(60, 0);
+  const auto line = [](const std::string& l) { return l.starts_with("ray: body 0 cell (3, 1) at (130.0, 240.0)"); };
+  BOOST_TEST(std::count_if(v.hud.begin(), v.hud.end(), line) == 1);
 }
 
 BOOST_AUTO_TEST_CASE(bad_grids_are_refused_with_one_line) {

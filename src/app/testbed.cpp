@@ -51,11 +51,14 @@ std::string options_line(const Params& p, const Overlays& o) {
   return s + (list.empty() ? "none (A, V, C)" : list);
 }
 
-// "ray: body 1 at (200.0, 560.0), normal (0, -1), 93.9% of the drag"
+// "ray: body 1 at (200.0, 560.0), normal (0, -1), 93.9% of the drag"; a
+// tile layer's cell after its body: "body 3 cell (12, 4) at ...".
 std::string ray_line(const RayHit& h) {
-  char line[128];
-  std::snprintf(line, sizeof line, "ray: body %u at (%.1f, %.1f), normal (%g, %g), %.1f%% of the drag",
-                static_cast<unsigned>(h.body), h.point.x, h.point.y, h.normal.x, h.normal.y, 100.0 * h.fraction);
+  char cell[48] = "";
+  if (h.column >= 0) std::snprintf(cell, sizeof cell, " cell (%d, %d)", h.column, h.row);
+  char line[160];
+  std::snprintf(line, sizeof line, "ray: body %u%s at (%.1f, %.1f), normal (%g, %g), %.1f%% of the drag",
+                static_cast<unsigned>(h.body), cell, h.point.x, h.point.y, h.normal.x, h.normal.y, 100.0 * h.fraction);
   return line;
 }
 
