@@ -390,6 +390,10 @@ BOOST_AUTO_TEST_CASE(the_api_makes_tile_layers) {
   BOOST_TEST((hit->body == layer));
   BOOST_TEST(hit->column == 1);
   BOOST_TEST(query_tiles(world, {{0, 199}, {40, 201}}).size() == 3u);
+  destroy_body(layer);  // its cells go with it: the box falls
+  for (int f = 0; f < 30; ++f) step(world);
+  BOOST_TEST(position(box).y > 200);
+  BOOST_TEST(bodies(world).size() == 1u);
   t.cells.pop_back();
   BOOST_CHECK_EXCEPTION(create_tile_layer(world, t), Error, [](const Error& e) {
     return std::string(e.what()) == "bad TileLayerDef: a tile layer of 3 x 1 cells needs 3 cells (got 2)";

@@ -110,6 +110,10 @@ class TileSet {
   bool empty() const { return layers_.empty(); }
   std::span<const TileLayer> layers() const { return layers_; }
   void add(TileLayer layer) { layers_.push_back(std::move(layer)); }
+  // The layer of body e no longer collides (World::destroy); its proxies stay unlisted rows.
+  void remove(EntityId e) {
+    std::erase_if(layers_, [&](const TileLayer& l) { return l.body() == e; });
+  }
   std::size_t proxy_count() const { return proxy_count_; }
   // By entity id, the id contact events name: a proxy's layer body, any
   // other id itself; ids past its end (bodies made since the last proxy)

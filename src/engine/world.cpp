@@ -124,6 +124,7 @@ void World::destroy(EntityId e) {
     if (list) std::erase(*list, e);
   destroyed_.resize(components.size(), 0);
   destroyed_[e] = 1;
+  if (!tiles.empty()) tiles.remove(e);  // a tile layer's strips go with it
 }
 
 namespace {
