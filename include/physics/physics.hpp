@@ -158,6 +158,32 @@ void set_color(BodyId body, Color color);  // the engine never reads it
 std::uint64_t user_data(BodyId body);                 // yours
 void set_user_data(BodyId body, std::uint64_t data);  // the engine only stores it
 
+// ---- tile layers (docs/api.md, "Tile layers") ----
+
+// A cell's kind: empty, solid, or one-way up (stops bodies coming down onto its top only).
+// The values 3 to 255 are reserved for more kinds.
+enum class TileKind : std::uint8_t { empty = 0, solid = 1, one_way_up = 2 };
+
+// A fixed body holding a grid of columns x rows cells of cell_size px. Faces
+// between two solid cells never collide: a box slides along a floor or a
+// wall of tiles as along one body. The body's size is the grid's extent.
+struct TileLayerDef {
+  Vec2 position{};                  // px, the grid's top-left corner
+  int cell_size = 16;               // px, whole, in [1, 1048576]; the extent at most 1048576 px a side
+  int columns = 0, rows = 0;        // at least 1 each
+  std::vector<TileKind> cells;      // columns x rows, row by row, top row first
+  double restitution = 1.0;         // in [0, 1]; a pair uses the smaller
+  double friction = 0.0;            // in [0, 1000]; a pair uses sqrt(mu_a mu_b)
+  Filter filter{};
+  Color color{128, 128, 128, 255};  // for drawing only
+  std::uint64_t user_data = 0;
+};
+BodyId create_tile_layer(WorldId world, const TileLayerDef& def);  // throws Error on a bad def
+bool is_tile_layer(BodyId body);
+// The kind of cell (column, row) of a layer: empty outside the grid. Throws
+// Error if the body is not a tile layer.
+TileKind tile_at(BodyId layer, int column, int row);
+
 // ---- queries (interiors are open: touching is not overlapping) ----
 
 struct RayResult {
@@ -165,11 +191,20 @@ struct RayResult {
   Vec2 point;      // where, on its boundary
   Vec2 normal;     // unit outward normal of the face entered
   double fraction; // in [0, 1] of max_distance
+  int column = -1, row = -1;  // the cell entered, when body is a tile layer
 };
 // From origin along direction (need not be unit) for max_distance px; bodies it starts in are ignored.
 std::optional<RayResult> ray_cast(WorldId world, Vec2 origin, Vec2 direction, double max_distance);
 std::vector<BodyId> query_box(WorldId world, Aabb box);  // bodies whose interior meets box
 std::vector<BodyId> query_point(WorldId world, Vec2 point);  // bodies whose interior holds point
+// Tile layers: a ray enters a solid cell by any face, a one-way cell by its top face going down (ignoring the
+// solid it starts in); a box or point query lists a layer when it meets a non-empty cell. The cells it meets:
+struct TileCellResult {
+  BodyId layer;
+  int column, row;
+  TileKind kind;
+};
+std::vector<TileCellResult> query_tiles(WorldId world, Aabb box);  // non-empty cells whose interior meets box
 
 // ---- contact events (WorldDef::contact_events) ----
 

@@ -89,6 +89,8 @@ Vec2 size(BodyId id) {
 void set_size(BodyId id, Vec2 s) {
   Own o = own(id);
   api::check_size(s);
+  if (o.w.world->tiles.part_of_tiles(o.e))
+    throw Error(api::describe(id) + " is a tile layer: its size is its grid's (set_size does not resize it)");
   o.c().box[o.e] = api::to_rect(s);
 }
 Aabb bounds(BodyId id) { const Vec2 p = position(id); return {p, p + size(id)}; }

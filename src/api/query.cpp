@@ -35,7 +35,7 @@ std::optional<RayResult> ray_cast(WorldId world, Vec2 origin, Vec2 direction, do
   });
   if (!hit) return std::nullopt;
   return RayResult{api::id_of(world, w, hit->body), api::to_public(hit->point), api::to_public(hit->normal),
-                   hit->fraction};
+                   hit->fraction, hit->column, hit->row};
 }
 
 std::vector<BodyId> query_box(WorldId world, Aabb box) {
@@ -46,6 +46,17 @@ std::vector<BodyId> query_box(WorldId world, Aabb box) {
 std::vector<BodyId> query_point(WorldId world, Vec2 point) {
   const api::Live& w = api::world(world);
   return ids(world, w, asked([&] { return physics::query_point(*w.world, api::to_engine(point)); }));
+}
+
+std::vector<TileCellResult> query_tiles(WorldId world, Aabb box) {
+  const api::Live& w = api::world(world);
+  const auto cells = asked([&] {
+    return QueryIndex(*w.world).cells_meeting(api::to_engine(box.lower), api::to_engine(box.upper));
+  });
+  std::vector<TileCellResult> out;
+  for (const TileCellHit& c : cells)
+    out.push_back({api::id_of(world, w, c.layer), c.cell.column, c.cell.row, static_cast<TileKind>(c.cell.kind)});
+  return out;
 }
 
 }  // namespace physics

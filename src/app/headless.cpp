@@ -14,7 +14,7 @@ void start_measures(Summary& s, const World& w) {
 
 void end_measures(Summary& s, World& w, std::int64_t frames) {
   s.frames = frames;
-  s.bodies = w.components.size();
+  s.bodies = w.components.size() - w.tiles.proxy_count();  // a tile strip's proxy is no body
   s.mobile = w.finite_bodies();
   if (w.health.finite()) w.health.count_escapes(w.components, w.frame);  // the frames since the last count
   s.ke_end = w.kinetic_energy();
@@ -31,7 +31,7 @@ bool runs(const World& w, Stage s) {
   switch (s) {
     case Stage::forces: case Stage::move: case Stage::collision: case Stage::health: return true;
     case Stage::ccd: return w.params.ccd || w.params.solver == Solver::automatic;
-    case Stage::pairs: return w.params.ccd || w.params.solver != Solver::course;
+    case Stage::pairs: return w.params.ccd || w.params.solver != Solver::course || !w.tiles.empty();  // tiles: their strips
     default: return w.params.solver != Solver::course;
   }
 }

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "course/entities/block.hpp"
+#include "engine/query.hpp"
 #include "app/headless.hpp"
 #include "games/registry.hpp"
 #include "scene/scene_json.hpp"
@@ -50,11 +51,14 @@ std::string options_line(const Params& p, const Overlays& o) {
   return s + (list.empty() ? "none (A, V, C)" : list);
 }
 
-// "ray: body 1 at (200.0, 560.0), normal (0, -1), 93.9% of the drag"
+// "ray: body 1 at (200.0, 560.0), normal (0, -1), 93.9% of the drag"; a
+// tile layer's cell after its body: "body 3 cell (12, 4) at ...".
 std::string ray_line(const RayHit& h) {
-  char line[128];
-  std::snprintf(line, sizeof line, "ray: body %u at (%.1f, %.1f), normal (%g, %g), %.1f%% of the drag",
-                static_cast<unsigned>(h.body), h.point.x, h.point.y, h.normal.x, h.normal.y, 100.0 * h.fraction);
+  char cell[48] = "";
+  if (h.column >= 0) std::snprintf(cell, sizeof cell, " cell (%d, %d)", h.column, h.row);
+  char line[160];
+  std::snprintf(line, sizeof line, "ray: body %u%s at (%.1f, %.1f), normal (%g, %g), %.1f%% of the drag",
+                static_cast<unsigned>(h.body), cell, h.point.x, h.point.y, h.normal.x, h.normal.y, 100.0 * h.fraction);
   return line;
 }
 
@@ -258,7 +262,13 @@ bool Testbed::room_for_spawn(Vector pos) {
     spawn_index_.emplace();
     std::vector<FloatBox> boxes;
     boxes.reserve(c.size());
-    for (std::size_t e = 0; e < c.size(); ++e) boxes.push_back(FloatBox::around(c.position[e], c.box[e], 0.0));
+    // A tile layer's box and its strips' proxies are not what collides: its
+    // cells are, looked at below. (A NaN box is in no cell.)
+    const TileSet& tiles = world_->tiles;
+    for (std::size_t e = 0; e < c.size(); ++e)
+      boxes.push_back(!tiles.empty() && tiles.part_of_tiles(static_cast<EntityId>(e))
+                          ? FloatBox{NAN, NAN, NAN, NAN}
+                          : FloatBox::around(c.position[e], c.box[e], 0.0));
     spawn_index_->grid.index(boxes);
     spawn_index_->indexed = c.size();
   }
@@ -274,6 +284,8 @@ bool Testbed::room_for_spawn(Vector pos) {
     for (std::int64_t dy = -1; dy <= 1 && !hit; ++dy)
       if (const auto it = spawn_index_->cells.find(spawn_cell_key(cx + dx, cy + dy)); it != spawn_index_->cells.end())
         hit = std::any_of(it->second.begin(), it->second.end(), overlaps);
+  if (!hit && !world_->tiles.empty())
+    hit = !QueryIndex(*world_).cells_meeting(pos, pos + Vector{double(spawn_size), double(spawn_size)}).empty();
   return !hit;
 }
 

@@ -13,8 +13,16 @@ void ContactEvents::add_resting(const Components& k, std::span<const EntityId> b
   for (const Pair p : pairs_) {
     const auto [axis, separation] = best_axis(k, p.c, p.b);
     if (separation > gap) continue;
-    step_.push_back({p, axis_normal[axis], separation < 0.0 ? -separation : 0.0, 0.0, 0.0});
+    const Touch t{p, axis_normal[axis], separation < 0.0 ? -separation : 0.0, 0.0, 0.0};
+    step_.push_back(owner.empty() ? t : named(t));
   }
+}
+
+ContactEvents::Touch ContactEvents::named(Touch t) const {
+  const auto name = [&](EntityId e) { return e < owner.size() ? owner[e] : e; };
+  t.pair = {name(t.pair.c), name(t.pair.b)};
+  if (t.pair.b < t.pair.c) std::swap(t.pair.c, t.pair.b), t.normal = -t.normal;
+  return t;
 }
 
 // This step's touches, one per pair, in pair order: impulses summed, the

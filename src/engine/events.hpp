@@ -38,10 +38,15 @@ class ContactEvents {
   static constexpr double gap = 0.5;  // px: boxes this close still touch (the stable solver's margin)
 
   bool enabled = false;
+  // By entity id, the body an event names for it (TileSet::owners: a tile
+  // strip's proxy is named as its layer); empty, or past its end: itself.
+  std::vector<EntityId> owner;
 
   // A solver's contact during the step; the impulses of one pair add up.
   void touch(EntityId c, EntityId b, Vector normal, double jn, double jt) {
-    if (enabled) step_.push_back({{c, b}, normal, 0.0, jn, jt});
+    if (!enabled) return;
+    if (owner.empty()) step_.push_back({{c, b}, normal, 0.0, jn, jt});
+    else step_.push_back(named({{c, b}, normal, 0.0, jn, jt}));
   }
   // After the step: this step's events from the touches and the boxes.
   void finish(const Components& k, std::span<const EntityId> bodies, std::int64_t frame);
@@ -58,6 +63,8 @@ class ContactEvents {
 
  private:
   void add_resting(const Components& k, std::span<const EntityId> bodies);
+  // t with its bodies named through `owner`, the earlier one first.
+  Touch named(Touch t) const;
   std::vector<Touch> merged();
 
   std::vector<Touch> step_;     // this step's touches, in the order found

@@ -71,6 +71,12 @@ struct Health {
   void check_bodies(const Components& c, std::int64_t frame);
   // Counts the bodies newly outside (check_bodies does every escape_period).
   void count_escapes(const Components& c, std::int64_t frame);
+  // Never counted as escaped: a tile layer's body and its strips' proxies
+  // (fixed geometry, which may cover the walls), not bodies that move.
+  void ignore(EntityId e) {
+    if (out_.size() <= e) out_.resize(static_cast<std::size_t>(e) + 1, 0);
+    out_[e] = 1;
+  }
 
  private:
   std::vector<std::uint8_t> out_;  // per body: already counted as escaped

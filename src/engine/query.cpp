@@ -91,7 +91,8 @@ bool overlaps_region(Vector p, Rect r, Vector lo, Vector hi) {
 
 bool contains_point(Vector p, Rect r, Vector q) { return overlaps_region(p, r, q, q); }
 
-QueryIndex::QueryIndex(const World& w) : ids_(query_bodies(w)) {
+QueryIndex::QueryIndex(const World& w) : ids_(query_bodies(w)), tiles_(&w.tiles) {
+  for (const TileLayer& l : w.tiles.layers()) tile_origin_.push_back(w.components.position[l.body()]);
   const Components& k = w.components;
   const std::size_t n = ids_.size();
   position_.reserve(n);
@@ -118,7 +119,98 @@ QueryIndex::QueryIndex(const World& w) : ids_(query_bodies(w)) {
 std::optional<RayHit> QueryIndex::ray_cast(Vector origin, Vector direction, double max_distance) const {
   const Vector travel = ray_travel(origin, direction, max_distance);
   if (Vector::is_zero(travel)) return std::nullopt;  // enters nothing: the bodies holding the origin are ignored
-  return finite_bounds_ ? walk_grid(origin, travel) : test_all(origin, travel);
+  std::optional<RayHit> best = finite_bounds_ ? walk_grid(origin, travel) : test_all(origin, travel);
+  if (!tiles_->empty()) keep_first(best, ray_tiles(origin, travel));
+  return best;
+}
+
+namespace {
+
+// The cells [c0, c1] x [r0, r1] of a layer whose open boxes meet the open
+// region (lo, hi), lo and hi relative to the layer's corner: a cell c spans
+// (c·cs, (c + 1)·cs), so c·cs < hi and lo < (c + 1)·cs.
+struct CellRange {
+  int c0, c1, r0, r1;
+};
+CellRange cells_of(const TileGrid& g, Vector lo, Vector hi) {
+  const double cs = g.cell;
+  const auto first = [&](double v, int n) { return static_cast<int>(std::clamp(std::floor(v / cs), 0.0, double(n))); };
+  const auto last = [&](double v, int n) { return static_cast<int>(std::clamp(std::ceil(v / cs) - 1, -1.0, n - 1.0)); };
+  return {first(lo.x, g.columns), last(hi.x, g.columns), first(lo.y, g.rows), last(hi.y, g.rows)};
+}
+
+// The first cell of layer l (its corner at o) the segment enters, as the
+// header says: cells visited in the order the segment reaches them (a
+// digital differential analyser), each tested exactly with ray_hit.
+std::optional<RayHit> ray_layer(const TileLayer& l, Vector o, Vector origin, Vector travel) {
+  const TileGrid& g = l.grid();
+  const double cs = g.cell;
+  const Vector a = origin - o;  // relative to the layer
+  // The part of the segment over the layer: [f0, f1].
+  const Interval cx = clip(a.x, travel.x, 0.0, cs * g.columns), cy = clip(a.y, travel.y, 0.0, cs * g.rows);
+  const double f0 = std::max({0.0, cx.lo, cy.lo}), f1 = std::min({1.0, cx.hi, cy.hi});
+  if (!(f0 <= f1)) return std::nullopt;
+  const Vector start = a + f0 * travel;
+  // The cell holding the start, the one ahead when it lies on a cell's edge.
+  const auto cell = [&](double v, double t, int n) {
+    const double q = v / cs;
+    int c = static_cast<int>(std::floor(q));
+    if (t < 0.0 && q == std::floor(q)) --c;
+    return std::clamp(c, 0, n - 1);
+  };
+  int c = cell(start.x, travel.x, g.columns), r = cell(start.y, travel.y, g.rows);
+  const int sc = travel.x > 0 ? 1 : -1, sr = travel.y > 0 ? 1 : -1;
+  // Fractions at which the segment crosses the next column and row boundary.
+  const auto next = [&](int i, int step, double v0, double t) {
+    return t == 0.0 ? infinity : ((i + (step > 0 ? 1 : 0)) * cs - v0) / t;
+  };
+  double tx = next(c, sc, a.x, travel.x), ty = next(r, sr, a.y, travel.y);
+  const double dx = travel.x == 0.0 ? infinity : cs / std::abs(travel.x);
+  const double dy = travel.y == 0.0 ? infinity : cs / std::abs(travel.y);
+  // Still in the solid cells the ray starts in (if its origin is in one; not
+  // `start`, which rounding may put a hair inside the cell it enters).
+  bool in_solid = f0 == 0.0 && g.at(c, r) == Tile::solid && contains_point(Vector{c * cs, r * cs}, Rect{g.cell, g.cell}, a);
+  for (;;) {
+    const Tile t = g.at(c, r);
+    in_solid = in_solid && t == Tile::solid;
+    if (t != Tile::empty && !in_solid) {
+      const Vector p = o + Vector{c * cs, r * cs};
+      if (auto hit = ray_hit(origin, travel, l.body(), p, Rect{g.cell, g.cell});
+          hit && (t == Tile::solid || hit->normal == Vector{0.0, -1.0})) {
+        hit->column = c, hit->row = r;
+        return hit;
+      }
+    }
+    if (std::min(tx, ty) > f1) return std::nullopt;
+    if (tx <= ty) c += sc, tx += dx;
+    else r += sr, ty += dy;
+    if (c < 0 || r < 0 || c >= g.columns || r >= g.rows) return std::nullopt;
+  }
+}
+
+}  // namespace
+
+std::optional<RayHit> QueryIndex::ray_tiles(Vector origin, Vector travel) const {
+  std::optional<RayHit> best;
+  const auto layers = tiles_->layers();
+  for (std::size_t i = 0; i < layers.size(); ++i) keep_first(best, ray_layer(layers[i], tile_origin_[i], origin, travel));
+  return best;
+}
+
+std::vector<TileCellHit> QueryIndex::cells_meeting(Vector lo, Vector hi) const {
+  require_finite(lo, "cells_meeting's lo");
+  require_finite(hi, "cells_meeting's hi");
+  if (lo.x > hi.x || lo.y > hi.y) throw std::invalid_argument("query: cells_meeting's lo must not exceed hi on an axis");
+  std::vector<TileCellHit> out;
+  const auto layers = tiles_->layers();
+  for (std::size_t i = 0; i < layers.size(); ++i) {
+    const TileGrid& g = layers[i].grid();
+    const CellRange cr = cells_of(g, lo - tile_origin_[i], hi - tile_origin_[i]);
+    for (int r = cr.r0; r <= cr.r1; ++r)
+      for (int c = cr.c0; c <= cr.c1; ++c)
+        if (const Tile t = g.at(c, r); t != Tile::empty) out.push_back({layers[i].body(), {c, r, t}});
+  }
+  return out;
 }
 
 std::optional<RayHit> QueryIndex::test_all(Vector origin, Vector travel) const {
@@ -176,6 +268,9 @@ std::vector<EntityId> QueryIndex::query_box(Vector lo, Vector hi) const {
   grid_.query(FloatBox::outward(lo.x, lo.y, hi.x, hi.y), [&](std::uint32_t i) {
     if (overlaps_region(position_[i], size_[i], lo, hi)) out.push_back(ids_[i]);
   });
+  if (!tiles_->empty())
+    for (const TileCellHit& h : cells_meeting(lo, hi))
+      if (out.empty() || out.back() != h.layer) out.push_back(h.layer);
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;

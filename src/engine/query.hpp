@@ -45,10 +45,23 @@
 namespace physics {
 
 struct RayHit {
-  EntityId body;
+  EntityId body;    // a body, or a tile layer's body (then `column`, `row` name the cell)
   Vector point;     // where the ray enters the body's box, on its boundary
   Vector normal;    // the unit outward normal of the face entered: (±1, 0) or (0, ±1)
   double fraction;  // in [0, 1]: how far along the ray, in units of max_distance
+  int column = -1, row = -1;  // the cell entered, when `body` is a tile layer
+};
+
+// Tile layers (engine/tiles.hpp) are queried cell by cell with the same
+// rules: a ray enters a solid cell by any face and a one-way cell by its top
+// face going down; the solid cells it starts in, and those it crosses before
+// it first leaves the solid, are ignored (a ray from inside a wall reports
+// what lies beyond the wall); a box or a point meets the non-empty cells
+// whose open box it meets. The layer is listed by query_box / query_point
+// when it meets one; cells_meeting names them.
+struct TileCellHit {
+  EntityId layer;
+  TileCell cell;
 };
 
 // A snapshot of the bodies' boxes for queries: answers are about the world
@@ -62,8 +75,11 @@ class QueryIndex {
   std::vector<EntityId> query_box(Vector lo, Vector hi) const;
   // Bodies whose open box contains p, in increasing id order.
   std::vector<EntityId> query_point(Vector p) const;
+  // The non-empty cells of every layer whose open box meets the open region (lo, hi): layer, then row, then column.
+  std::vector<TileCellHit> cells_meeting(Vector lo, Vector hi) const;
 
  private:
+  std::optional<RayHit> ray_tiles(Vector origin, Vector travel) const;
   std::optional<RayHit> walk_grid(Vector origin, Vector travel) const;
   std::optional<RayHit> test_all(Vector origin, Vector travel) const;
 
@@ -73,6 +89,9 @@ class QueryIndex {
   UniformGrid grid_;
   BroadPhase::Bounds bounds_{};   // around every box the grid holds, when finite
   bool finite_bounds_ = false;    // false: no body, or one beyond float range (then rays test every body)
+  // The tile layers, read in place (their cells never change): the index must not outlive its world.
+  const TileSet* tiles_;
+  std::vector<Vector> tile_origin_;  // by layer, copied
 };
 
 std::optional<RayHit> ray_cast(const World& w, Vector origin, Vector direction, double max_distance);

@@ -89,12 +89,42 @@ void World::add(SystemId s, EntityId e) {
   if (auto* list = stage(s)) list->push_back(e);
 }
 
+EntityId World::add_tile_layer(Vector position, TileGrid grid) {
+  if (const std::string bad = check(grid); !bad.empty()) throw std::invalid_argument(bad);
+  const EntityId e = components.create();
+  components.position[e] = position;
+  components.box[e] = Rect{grid.cell * grid.columns, grid.cell * grid.rows};
+  components.mass[e] = infinity;
+  health.ignore(e);
+  tiles.add(TileLayer(e, std::move(grid)));
+  return e;
+}
+
+// The strips near the Collision stage's bodies, as proxies listed before
+// them. The reach covers every stage that pairs bodies in this substep: the
+// course pass's margin (1 px), the stable solver's (0.5 px), contact
+// events' (0.25 px), CCD's sweep (the swept box), and gravity's kick, which
+// Forces gave before this.
+void World::gather_tiles(double h) {
+  created_.clear();
+  tiles.gather(components, bodies(SystemId::collision), h, 2.0, proxies_, created_);
+  if (!created_.empty()) {
+    destroyed_.resize(components.size(), 0);
+    for (const EntityId e : created_) destroyed_[e] = 2, health.ignore(e);
+    events.owner.assign(tiles.owners().begin(), tiles.owners().end());
+  }
+  colliding_.assign(proxies_.begin(), proxies_.end());
+  const auto list = bodies(SystemId::collision);
+  colliding_.insert(colliding_.end(), list.begin(), list.end());
+}
+
 void World::destroy(EntityId e) {
   if (e >= components.size() || !alive(e)) return;
   for (auto& list : stages_)
     if (list) std::erase(*list, e);
   destroyed_.resize(components.size(), 0);
   destroyed_[e] = 1;
+  if (!tiles.empty()) tiles.remove(e);  // a tile layer's strips go with it
 }
 
 namespace {
@@ -115,7 +145,9 @@ void World::before_move(double h) {
   const bool exact = exact_motion() && declares(SystemId::move);
   if (exact) exact_.after_forces(components, bodies(SystemId::move));
   if (declares(SystemId::collision)) {
-    const auto colliding = bodies(SystemId::collision);
+    // Timed with the broad phase's pairs: it is the tiles' broad phase.
+    if (!tiles.empty()) times.time(Stage::pairs, [&] { gather_tiles(h); });
+    const auto colliding = this->colliding();
     ccd.exact_motion = exact_motion();
     if (params.solver == Solver::automatic) {
       auto_before_move(colliding, h);
@@ -195,7 +227,7 @@ void World::record_solver_contacts() {
 }
 
 void World::finish_events() {
-  if (events.enabled && declares(SystemId::collision)) events.finish(components, bodies(SystemId::collision), frame);
+  if (events.enabled && declares(SystemId::collision)) events.finish(components, colliding(), frame);
 }
 
 void World::end_frame() {
@@ -207,7 +239,7 @@ void World::end_frame() {
 
 void World::after_move() {
   if (!declares(SystemId::collision) || !solver_step()) return;
-  contact_solver.solve_positions(components, bodies(SystemId::collision), params.gravity, solver_settings(params),
+  contact_solver.solve_positions(components, colliding(), params.gravity, solver_settings(params),
                                  broadphase, times);
 }
 
@@ -245,7 +277,7 @@ void World::check_health() {
 }
 
 BroadPhase::CoursePairs World::course_pairs() {
-  return broadphase.course_pairs(components, bodies(SystemId::collision), params.substep());
+  return broadphase.course_pairs(components, colliding(), params.substep());
 }
 
 double World::kinetic_energy() const {

@@ -21,6 +21,7 @@
 #include "engine/limits.hpp"
 #include "engine/pairs.hpp"
 #include "engine/system_set.hpp"
+#include "engine/tiles.hpp"
 #include "engine/timing.hpp"
 
 namespace physics {
@@ -95,6 +96,8 @@ struct World {
   ContactEvents events;
   // The last course pass's contacts (the Collision stage's).
   PassContacts pass;
+  // Tile layers (engine/tiles.hpp) and the proxies of their strips.
+  TileSet tiles;
 
   explicit World(SystemSet set = {}, Params p = {});
 
@@ -112,10 +115,21 @@ struct World {
   // Registers e with stage s, if the world declares it.
   void add(SystemId s, EntityId e);
 
+  // A tile layer: a fixed body at `position` whose box is the grid's extent,
+  // in no stage (its strips collide, through proxies, not its box). Throws
+  // std::invalid_argument with check()'s line for a bad grid.
+  EntityId add_tile_layer(Vector position, TileGrid grid);
+  // The bodies the solvers see this substep: the Collision stage's, after
+  // the proxies of the strips near them when there are tile layers.
+  std::span<const EntityId> colliding() const {
+    return tiles.empty() ? bodies(SystemId::collision) : std::span<const EntityId>(colliding_);
+  }
+
   // The archive's `unregister`, from every stage: the body no longer
   // moves, collides or is drawn, its id is not reused (its slot stays in the
   // component arrays), and dumps and diagnostics leave it out.
   void destroy(EntityId e);
+  // Proxies of tile strips are never alive: no list, dump or save shows them.
   bool alive(EntityId e) const { return e >= destroyed_.size() || destroyed_[e] == 0; }
 
   // The engine's stages around Forces and Move in a substep of h ms
@@ -165,9 +179,11 @@ struct World {
   // The stable solver's velocities (and their contacts' events); CCD over all the bodies.
   void solve_velocities(std::span<const EntityId> bodies, double h, const SolverSettings& s);
   void sweep(std::span<const EntityId> bodies, double h);
+  void gather_tiles(double h);
+  std::vector<EntityId> colliding_, proxies_, created_;  // gather_tiles' lists
   ExactIntegrator exact_;  // Params::integrator == Integrator::exact
   std::array<std::optional<std::vector<EntityId>>, all_systems.size()> stages_;  // by SystemId
-  std::vector<std::uint8_t> destroyed_;  // by id; shorter than the arrays until a body is destroyed
+  std::vector<std::uint8_t> destroyed_;  // by id (1 destroyed, 2 a proxy); shorter than the arrays until either
 };
 
 }  // namespace physics

@@ -448,6 +448,7 @@ const KeyDoc scene_docs[] = {
     {".description", "string", "", "\"\"", "one line, for listings"},
     {".world", "object", "", "", "the world's size and parameters (below)"},
     {".blocks", "array", "", "[]", "the blocks: each a block, a `grid` or a `random` entry (below)"},
+    {".tiles", "array", "", "[]", "tile layers, made after the blocks: each an object (below, `tiles[]`)"},
     {".game", "object", "", "–", "the scene is a game's level ([games.md](games.md))"},
     {".style", "string", "`\"plain\"`, `\"speed\"`, `\"sprite\"`", "`\"plain\"`",
      "how the blocks are drawn (below, \"Drawing styles\"); written when it is not `\"plain\"`"},
@@ -508,6 +509,88 @@ const GK game_rows[] = {
        if (!g.next.empty()) o["next"] = g.next;
      }},
 };
+using TK = Key<TileSpec>;
+
+// The rows' problems: the first unknown character, or a row of another
+// length than the first; "" if none. `bad` gets the row's index.
+std::string row_problem(const TileSpec& t, std::size_t& bad) {
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    bad = i;
+    const std::string& row = t.rows[i];
+    if (row.empty()) return "is empty (a row has at least one cell)";
+    if (row.size() != t.rows[0].size())
+      return "has " + std::to_string(row.size()) + " cells, rows[0] " + std::to_string(t.rows[0].size()) +
+             " (every row the same length)";
+    for (std::size_t c = 0; c < row.size(); ++c)
+      if (!tile_of_char(row[c]))
+        return "unknown tile '" + std::string(1, row[c]) + "' at column " + std::to_string(c) +
+               " ('#' solid, '=' one-way up, '.' empty)";
+  }
+  return "";
+}
+
+const TK tile_rows[] = {
+    {{".pos", "[x, y]", "finite", "required", "the grid's top-left corner, px"},
+     "([x, y], px)",
+     [](const Reader& r, const json& v, const Path& p, TileSpec& t) { t.pos = r.vec(v, p); },
+     [](ojson& o, const TileSpec& t) { o["pos"] = ojson::array({t.pos.x, t.pos.y}); }},
+    {{".cell", "integer", "[1, 2^20]", "16", "a cell's side, px"},
+     "",
+     [](const Reader& r, const json& v, const Path& p, TileSpec& t) {
+       t.cell = static_cast<int>(r.integer(v, p, std::numeric_limits<int>::min(), std::numeric_limits<int>::max()));
+     },
+     [](ojson& o, const TileSpec& t) { o["cell"] = t.cell; },
+     [](const Checker& k, const TileSpec& t, const std::string& at) { k.size(t.cell, At{at, ".cell"}); }},
+    {{".rows", "array of strings", "`#` solid, `=` one-way up, `.` empty", "required",
+      "the cells, top row first, one character each; every row the same length"},
+     "(the cells as strings, e.g. [\"#..=##\"])",
+     [](const Reader& r, const json& v, const Path& p, TileSpec& t) {
+       if (!v.is_array() || v.empty()) r.fail(p, "must be a non-empty array of strings (got " + r.got(v) + ")");
+       t.rows.clear();
+       for (std::size_t i = 0; i < v.size(); ++i) t.rows.push_back(r.text(v[i], Path(p, i)));
+     },
+     [](ojson& o, const TileSpec& t) {
+       ojson rows = ojson::array();
+       for (const std::string& row : t.rows) rows.push_back(row);
+       o["rows"] = rows;
+     },
+     [](const Checker& k, const TileSpec& t, const std::string& at) {
+       if (t.rows.empty()) k.fail(at + ".rows", "must be a non-empty array of strings");
+       std::size_t bad = 0;
+       if (const std::string problem = row_problem(t, bad); !problem.empty())
+         k.fail(at + ".rows[" + std::to_string(bad) + "]", problem);
+       if (std::int64_t{t.cell} * static_cast<std::int64_t>(t.rows[0].size()) > max_world_size ||
+           std::int64_t{t.cell} * static_cast<std::int64_t>(t.rows.size()) > max_world_size)
+         k.fail(at + ".rows", "the layer is " + std::to_string(t.rows[0].size()) + " x " +
+                                  std::to_string(t.rows.size()) + " cells of " + std::to_string(t.cell) +
+                                  " px: at most 1048576 px a side");
+     }},
+    {{".restitution", "number", "[0, 1]", "the world's", "the layer's; a pair uses the smaller"},
+     "",
+     [](const Reader& r, const json& v, const Path& p, TileSpec& t) { t.restitution = r.restitution(v, p); },
+     [](ojson& o, const TileSpec& t) {
+       if (t.restitution) o["restitution"] = *t.restitution;
+     },
+     [](const Checker& k, const TileSpec& t, const std::string& at) {
+       if (t.restitution) k.restitution(*t.restitution, At{at, ".restitution"});
+     }},
+    {{".friction", "number", "[0, 1000]", "the world's", "the layer's; a pair uses sqrt(mu_a mu_b)"},
+     "",
+     [](const Reader& r, const json& v, const Path& p, TileSpec& t) { t.friction = r.number(v, p); },
+     [](ojson& o, const TileSpec& t) {
+       if (t.friction) o["friction"] = *t.friction;
+     },
+     [](const Checker& k, const TileSpec& t, const std::string& at) {
+       if (t.friction) k.friction(*t.friction, At{at, ".friction"});
+     }},
+    {{".color", "`\"#rrggbb\"`", "", "`\"#808080\"`", "for drawing"},
+     "",
+     [](const Reader& r, const json& v, const Path& p, TileSpec& t) { t.color = r.color(v, p); },
+     [](ojson& o, const TileSpec& t) {
+       if (!(t.color == TileSpec{}.color)) o["color"] = hex(t.color);
+     }},
+};
+
 const KeyDoc state_docs[] = {
     {".frame", "integer", ">= 0", "0", "the frame it was saved after"},
     {".warm_start", "array of [c, b, axis, jn, jt]", "", "[]", "the stable solver's warm-start impulses, by body id"},
@@ -524,6 +607,7 @@ std::span<const KeyDoc> grid_keys() { return grid_docs; }
 std::span<const KeyDoc> random_keys() { return random_docs; }
 std::span<const KeyDoc> entry_keys() { return entry_docs; }
 std::span<const Key<GameSpec>> game_keys() { return game_rows; }
+std::span<const Key<TileSpec>> tile_keys() { return tile_rows; }
 std::span<const KeyDoc> state_keys() { return state_docs; }
 
 std::vector<std::string_view> names(std::span<const KeyDoc> docs) {
@@ -670,6 +754,7 @@ std::string key_tables_markdown() {
   table(out, "**`random`**: the contact keys (the same for all its bodies, never drawn), and", "random.",
         scene_io::random_keys());
   table(out, "**`game`**", "game.", docs_of(scene_io::game_keys()));
+  table(out, "**A tile layer** (an entry of `tiles`)", "tiles[].", docs_of(scene_io::tile_keys()));
   table(out, "**`state`**", "state.", scene_io::state_keys());
   out.pop_back();  // one newline at the end
   return out;

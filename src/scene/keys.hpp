@@ -67,6 +67,7 @@ struct Key {
 std::span<const Key<BlockSpec>> block_keys();  // a block's and a grid's
 std::span<const Key<SceneSpec>> world_keys();  // "world": {...}
 std::span<const Key<GameSpec>> game_keys();    // "game": {...}
+std::span<const Key<TileSpec>> tile_keys();    // an entry of "tiles": [{...}, ...]
 // Keys with their own readers (scene_json.cpp), here for their names and docs.
 std::span<const KeyDoc> scene_keys();   // the top level
 std::span<const KeyDoc> entry_keys();   // an entry of "blocks" that is a generator: grid, random, seed

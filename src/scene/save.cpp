@@ -2,6 +2,7 @@
 
 #include "scene/keys.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 
@@ -23,6 +24,10 @@ SceneSpec scene_of(const World& w, const SceneSpec& from, std::span<const BlockR
   s.description = "saved after frame " + std::to_string(w.frame) + " of " + from.name;
   s.game.next = next_from(from.game, file);
   const Components& k = w.components;
+  const auto is_layer = [&](EntityId e) {
+    const auto layers = w.tiles.layers();
+    return std::any_of(layers.begin(), layers.end(), [&](const TileLayer& l) { return l.body() == e; });
+  };
   // The walls are the first bodies (populate makes them first) and are
   // made again by the "walls" key; the other alive bodies get new ids in order.
   const EntityId first = from.walls ? Game::wall_count : 0;
@@ -31,7 +36,7 @@ SceneSpec scene_of(const World& w, const SceneSpec& from, std::span<const BlockR
   for (EntityId e = 0; e < k.size(); ++e) {
     if (e < first) {
       new_id[e] = e;
-    } else if (w.alive(e)) {
+    } else if (w.alive(e) && !is_layer(e)) {  // a layer is saved as its "tiles" entry (kept from `from`)
       new_id[e] = next++;
       s.blocks.push_back(block_from_world(k, e, from, e < roles.size() ? roles[e] : BlockRole{}));
     }

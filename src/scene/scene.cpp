@@ -61,6 +61,23 @@ void check_game(const Checker& k, const GameSpec& g) {
     if (key.check) key.check(k, g, "game");
 }
 
+// The tile layers' keys (keys.cpp), then their place: inside the world, as a
+// block's (a layer may cover the walls: its cells are what collides).
+void check_tiles(const Checker& k, const SceneSpec& s) {
+  for (std::size_t i = 0; i < s.tiles.size(); ++i) {
+    const std::string at = "tiles[" + std::to_string(i) + "]";
+    const TileSpec& t = s.tiles[i];
+    for (const auto& key : scene_io::tile_keys())
+      if (key.check) key.check(k, t, at);
+    k.finite(t.pos, At{at, ".pos"});
+    const double w = static_cast<double>(t.cell) * static_cast<double>(t.rows[0].size());
+    const double h = static_cast<double>(t.cell) * static_cast<double>(t.rows.size());
+    if (t.pos.x < 0 || t.pos.y < 0 || t.pos.x + w > s.width || t.pos.y + h > s.height)
+      k.fail(at, "the layer (" + num(w) + " x " + num(h) + " px at [" + num(t.pos.x) + ", " + num(t.pos.y) +
+                     "]) must lie inside the world (" + std::to_string(s.width) + " x " + std::to_string(s.height) + ")");
+  }
+}
+
 // A saved world's state: the warm-start impulses name bodies of the scene
 // (walls first, then blocks, as the ids of --dump), on one of the four axes.
 void check_state(const Checker& k, const SceneSpec& s) {
@@ -321,6 +338,7 @@ void validate(const SceneSpec& s, const std::string& source) {
     k.fail("blocks", "too many bodies (more than " + std::to_string(max_bodies) + ")");
   if (s.state) check_state(k, s);
   check_game(k, s.game);
+  check_tiles(k, s);
   for (std::size_t i = 0; i < s.blocks.size(); ++i) {
     const std::string path = entry_path(i);
     const BlockEntry& e = s.blocks[i];
@@ -424,6 +442,38 @@ std::array<BodyDef, Game::wall_count> wall_defs(const SceneSpec& s) {
           wall({0, t}, {t, h - 2 * t}, Game::wall_black), wall({w - t, t}, {t, h - 2 * t}, Game::wall_black)};
 }
 
+std::optional<Tile> tile_of_char(char ch) {
+  switch (ch) {
+    case '#': return Tile::solid;
+    case '=': return Tile::one_way_up;
+    case '.': return Tile::empty;
+    default: return std::nullopt;
+  }
+}
+
+TileGrid tile_grid(const TileSpec& t) {
+  TileGrid g{t.cell, static_cast<int>(t.rows.empty() ? 0 : t.rows[0].size()), static_cast<int>(t.rows.size()), {}};
+  for (const std::string& row : t.rows)
+    for (const char ch : row) g.cells.push_back(static_cast<std::uint8_t>(tile_of_char(ch).value_or(Tile::empty)));
+  return g;
+}
+
+namespace {
+// A layer's def, the world's restitution and friction where it gives none.
+TileLayerDef tile_layer_def(const TileSpec& t, const SceneSpec& s) {
+  const TileGrid g = tile_grid(t);
+  TileLayerDef d;
+  d.position = {t.pos.x, t.pos.y};
+  d.cell_size = g.cell;
+  d.columns = g.columns, d.rows = g.rows;
+  for (const std::uint8_t c : g.cells) d.cells.push_back(static_cast<TileKind>(c));
+  d.restitution = t.restitution.value_or(s.restitution);
+  d.friction = t.friction.value_or(s.friction);
+  d.color = t.color;
+  return d;
+}
+}  // namespace
+
 void populate(World& w, const SceneSpec& s, const std::vector<Body>& bodies) {
   w.components.reserve(w.components.size() + bodies.size() + (s.walls ? Game::wall_count : 0));
   // Through the public API, as a game maker's program builds its world: a
@@ -433,6 +483,7 @@ void populate(World& w, const SceneSpec& s, const std::vector<Body>& bodies) {
     for (const BodyDef& d : wall_defs(s)) create_body(view.id(), d);
   watch(w, s, static_cast<EntityId>(w.components.size()));
   for (const Body& b : bodies) create_body(view.id(), body_def(b, w.params.dt));
+  for (const TileSpec& t : s.tiles) create_tile_layer(view.id(), tile_layer_def(t, s));
   if (s.state) {
     w.frame = s.state->frame;
     w.contact_solver.restore(s.state->warm_start);

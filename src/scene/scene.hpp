@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "engine/limits.hpp"
+#include "engine/tiles.hpp"
 #include "physics/physics.hpp"
 #include "course/game.hpp"
 #include "course/utils/random.hpp"
@@ -160,6 +161,21 @@ struct GameSpec {
   friend bool operator==(const GameSpec&, const GameSpec&) = default;
 };
 
+// A tile layer (scene key "tiles"; engine/tiles.hpp): its grid drawn as rows
+// of characters, '#' solid, '=' one-way up, '.' empty, top row first.
+struct TileSpec {
+  Vector pos{};  // px, the grid's top-left corner
+  int cell = 16;  // px
+  std::vector<std::string> rows;
+  std::optional<double> restitution, friction;  // none: the world's
+  Color color{128, 128, 128, 255};
+  friend bool operator==(const TileSpec&, const TileSpec&) = default;
+};
+// The kind of cell character ch stands for, or none.
+std::optional<Tile> tile_of_char(char ch);
+// The engine's grid of a checked spec.
+TileGrid tile_grid(const TileSpec& t);
+
 // How the window and the offscreen pictures draw the blocks (scene key
 // "style", flag --style; app/style.hpp): plain is the course's Draw system,
 // speed colours each movable block by its speed, sprite draws a shape in
@@ -178,6 +194,7 @@ struct SceneSpec {
   bool walls = true;
   SystemSet systems;
   std::vector<BlockEntry> blocks;
+  std::vector<TileSpec> tiles;      // scene key "tiles": made after the blocks
   std::optional<SavedState> state;  // a saved world's (scene key "state")
   GameSpec game;                    // scene key "game"
   Style style = Style::plain;       // scene key "style"

@@ -44,6 +44,27 @@ GameSpec read_game(const Reader& r, const json& g) {
   return out;
 }
 
+// "tiles": [{"pos": [x, y], "cell": 16, "rows": ["#..=", ...]}, ...]
+std::vector<TileSpec> read_tiles(const Reader& r, const json& v) {
+  if (!v.is_array()) r.fail("tiles", "must be an array of tile layers (got " + r.got(v) + ")");
+  std::vector<std::string_view> allowed;
+  for (const auto& k : tile_keys()) allowed.push_back(k.doc.name());
+  const Path tiles = "tiles";
+  std::vector<TileSpec> out;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const Path at(tiles, i);
+    r.keys(v[i], at, allowed);
+    TileSpec t;
+    for (const auto& k : tile_keys()) {
+      const json* x = find(v[i], k.doc.name());
+      if (!x && !k.missing.empty()) r.fail(at, "missing key \"" + std::string(k.doc.name()) + "\" " + std::string(k.missing));
+      if (x) k.read(r, *x, Path(at, k.doc.key), t);
+    }
+    out.push_back(std::move(t));
+  }
+  return out;
+}
+
 BlockSpec read_block(const Reader& r, const json& b, const Path& p) {
   r.keys(b, p, block_names());
   BlockSpec out;
@@ -264,6 +285,7 @@ SceneSpec read_scene(std::string_view text, const std::string& source) {
   if (const json* v = find(doc, "world")) read_world(r, *v, s);
   if (const json* v = find(doc, "state")) s.state = read_state(r, *v);
   if (const json* v = find(doc, "game")) s.game = read_game(r, *v);
+  if (const json* v = find(doc, "tiles")) s.tiles = read_tiles(r, *v);
   if (const json* v = find(doc, "style")) {
     const auto style = style_from_name(r.text(*v, "style"));
     if (!style) r.fail("style", "must be \"plain\", \"speed\" or \"sprite\" (got " + r.got(*v) + ")");

@@ -95,6 +95,15 @@ std::string to_json(const SceneSpec& s) {
   ojson blocks = ojson::array();
   for (const BlockEntry& e : s.blocks) blocks.push_back(entry(e));
   o["blocks"] = blocks;
+  if (!s.tiles.empty()) {
+    ojson tiles = ojson::array();
+    for (const TileSpec& t : s.tiles) {
+      ojson layer = ojson::object();
+      for (const auto& k : tile_keys()) k.write(layer, t);
+      tiles.push_back(layer);
+    }
+    o["tiles"] = tiles;
+  }
   if (!s.game.kind.empty()) {
     ojson game = ojson::object();
     for (const auto& k : game_keys()) k.write(game, s.game);
