@@ -210,6 +210,30 @@ BOOST_AUTO_TEST_CASE(a_fast_elastic_gas_keeps_its_energy_and_its_walls) {
   BOOST_TEST(w.automatic.stats.undone > 0);
 }
 
+// A light block squeezed between two heavy ones 4e11 times heavier needs
+// about π·sqrt(4e11), two million, impacts: CCD runs out of budget and can
+// only stop the bodies, losing their time. After one such substep auto
+// hands the scene to the solver (AutoMode::after_sweep), which takes the
+// jam whole: one capped substep in 120 frames (three before), the order and
+// the momentum kept.
+BOOST_AUTO_TEST_CASE(a_jam_goes_to_the_solver_after_one_capped_substep) {
+  World w = make_world(automatic_mode);
+  walls(w);
+  const EntityId a = block(w, 100, 284, 32, 32, 4e11, {0.229, 0}, 0.0);
+  const EntityId light = block(w, 182, 298, 3, 3, 1.0, {}, 0.0);
+  const EntityId b = block(w, 313, 284, 32, 32, 4e11, {-0.284, 0}, 0.0);
+  const Vector p0 = w.momentum();
+  bool ordered = true;
+  for (int f = 0; f < 120; ++f) {
+    Game::step(w);
+    const auto& x = w.components.position;
+    ordered = ordered && x[a].x < x[light].x && x[light].x < x[b].x;
+  }
+  BOOST_TEST(ordered);
+  BOOST_TEST(w.ccd.stats.capped_substeps == 1);
+  BOOST_TEST(std::abs(w.momentum().x - p0.x) < 1e-9 * 4e11 * 0.5);
+}
+
 // Under gravity with every restitution 1, auto's solver path is
 // stable+ccd's (AutoMode::sweep_all): a pile of light and heavy e = 1 blocks
 // falling into the box keeps its step energy and nothing sinks or leaves.

@@ -214,6 +214,23 @@ BOOST_AUTO_TEST_CASE(a_world_saved_at_any_frame_runs_on_bit_for_bit_in_every_mod
   }
 }
 
+// A light block squeezed between two heavy ones (4e11 times heavier, no
+// gravity) runs CCD out of budget; auto then hands the scene to the solver
+// for a few substeps (AutoState::jam), which a save must keep.
+BOOST_AUTO_TEST_CASE(auto_saved_during_a_jam_runs_on_bit_for_bit) {
+  const char* squeeze = R"({ "name": "squeeze",
+    "world": { "restitution": 0, "walls": true, "solver": "auto", "systems": ["move", "forces", "collision"] },
+    "blocks": [ { "pos": [100, 284], "size": [32, 32], "mass": 4e11, "velocity": [0.229, 0] },
+                { "pos": [182, 298], "size": [3, 3], "mass": 1 },
+                { "pos": [313, 284], "size": [32, 32], "mass": 4e11, "velocity": [-0.284, 0] } ] })";
+  const SceneSpec s = read_scene(squeeze, "squeeze.json");
+  World w = make_world(s, false);
+  bool jammed = false;
+  for (int f = 0; f < 60; ++f) Game::step(w), jammed = jammed || w.automatic.state().jam > 0;
+  BOOST_TEST_REQUIRE(jammed);  // the case this is about
+  check_every_frame(s, "auto, a squeeze", 40, 60);
+}
+
 // Game scenes, with their roles, saved at frames 0 to 5 with no input: the same.
 BOOST_AUTO_TEST_CASE(a_game_scene_saved_at_any_frame_runs_on_bit_for_bit) {
   for (const std::string name : {"platformer", "targets-1", "styles"})

@@ -15,6 +15,7 @@ bool AutoMode::plan(const Components& k, std::span<const EntityId> bodies, doubl
   first_ = !started_ && !Vector::is_zero(gravity);
   started_ = true;
   if (hold_left_ > 0) --hold_left_;
+  if (jam_left_ > 0) --jam_left_;
   if (start_set_ || start_.size() != k.size()) start_.assign(k.size(), 0.0), start_set_ = false;
   mark_fast(k, bodies, h, true);
   // Under gravity, the solver too when bodies bounce (the course's pass
@@ -23,8 +24,9 @@ bool AutoMode::plan(const Components& k, std::span<const EntityId> bodies, doubl
   // alone would carry it down the pile one impact at a time, without end.
   const bool g = !Vector::is_zero(gravity);
   const bool bouncing = g && bouncy(k, bodies);
-  solver_path_ = first_ || hold_left_ > 0 || (g && (fast_count_ > 0 || bouncing || seamed(k, bodies, gravity)));
-  sweep_all_ = solver_path_ && bouncing && elastic(k, bodies);
+  solver_path_ = first_ || hold_left_ > 0 || jam_left_ > 0 ||
+                 (g && (fast_count_ > 0 || bouncing || seamed(k, bodies, gravity)));
+  sweep_all_ = solver_path_ && jam_left_ == 0 && bouncing && elastic(k, bodies);
   // Many fast bodies without gravity: the solver's path too, on trial (see
   // roll_back).
   trial_ = !solver_path_ && fast_count_ > many_fast;
@@ -227,6 +229,11 @@ void AutoMode::after_solver(const Components& k, std::span<const EntityId> bodie
       pressed_.push_back(Pair{ct.c, ct.b}.key());
   count_pressed();
   if (first_ && !pressed_.empty()) hold_left_ = hold;  // a pile from the start
+  if (jam_left_ > 0) {  // a jam: the solver takes it whole (after_sweep)
+    std::fill(fast_.begin(), fast_.end(), 0);
+    fast_count_ = 0;
+    return;
+  }
   // The solver's contacts were found along each body's whole swept path
   // (speculative), so its first impact is taken already: only a body that
   // had one and is still fast may meet something else within the substep.
@@ -258,6 +265,15 @@ void AutoMode::after_solver(const Components& k, std::span<const EntityId> bodie
   }
 }
 
+// CCD ran out of budget this substep: a jam (a light body squeezed between
+// heavy ones takes ~π·sqrt(M/m) impacts, millions past 1e12) that CCD can
+// only stop, losing the stopped bodies' time. The solver takes a jam's
+// impacts together, so for `hold` substeps it takes the scene, sweeping
+// nothing.
+void AutoMode::after_sweep(bool capped) {
+  if (capped) jam_left_ = hold;
+}
+
 void AutoMode::after_course_pass(const Components& k, std::span<const Contact> contacts) {
   pressed_.clear();
   for (const Contact& c : contacts)
@@ -286,6 +302,7 @@ void AutoMode::count_pressed() {
 AutoState AutoMode::state() const {
   AutoState s;
   s.hold = hold_left_;
+  s.jam = jam_left_;
   for (const auto& [key, run] : runs_)
     s.pressed.push_back({{static_cast<EntityId>(key >> 32), static_cast<EntityId>(key & 0xFFFFFFFFu)}, run});
   return s;
@@ -293,6 +310,7 @@ AutoState AutoMode::state() const {
 
 void AutoMode::restore(const AutoState& s) {
   hold_left_ = s.hold;
+  jam_left_ = s.jam;
   runs_.clear();
   for (const AutoState::Run& r : s.pressed) runs_.emplace_back(r.pair.key(), r.substeps);
   std::sort(runs_.begin(), runs_.end());

@@ -52,6 +52,7 @@ struct AutoState {
     friend bool operator==(const Run&, const Run&) = default;
   };
   int hold = 0;  // substeps the solver is still held for
+  int jam = 0;   // substeps the solver still takes a jam whole for
   std::vector<Run> pressed;
   friend bool operator==(const AutoState&, const AutoState&) = default;
 };
@@ -94,6 +95,8 @@ class AutoMode {
   // After the course's pass: whether a pair of finite bodies it resolved was
   // resolved by the pass before too (switches to the solver).
   void after_course_pass(const Components& k, std::span<const Contact> contacts);
+  // After CCD: whether it ran out of budget (a jam).
+  void after_sweep(bool capped);
 
   // Around the solver on trial (more than many_fast fast bodies, no
   // gravity): keep() the bodies before it; after after_solver(), roll_back()
@@ -146,6 +149,7 @@ class AutoMode {
   std::vector<std::uint64_t> pressed_;  // keys of the pairs of finite bodies pressed together this substep
   std::vector<std::pair<std::uint64_t, int>> runs_, next_runs_;  // (key, substeps in a row), sorted
   int hold_left_ = 0;
+  int jam_left_ = 0;  // substeps the solver still takes a jam whole for (after_sweep)
   bool trial_ = false;  // the solver's path is on trial this substep
   bool sweep_all_ = false;  // sweep_all()
   bool any_undone_ = false;

@@ -175,7 +175,9 @@ void World::auto_before_move(std::span<const EntityId> bodies, double h) {
       solve_velocities(bodies, h, s);
       automatic.stats.contacts += static_cast<std::int64_t>(contact_solver.constraints().size());
       automatic.stats.swept += static_cast<std::int64_t>(bodies.size());
-      return sweep(bodies, h);
+      const std::int64_t capped = ccd.stats.capped_substeps;
+      sweep(bodies, h);
+      return automatic.after_sweep(ccd.stats.capped_substeps > capped);
     }
     automatic.keep(components);
     contact_solver.solve_velocities(components, bodies, h, params.gravity, s, broadphase, times);
@@ -186,7 +188,9 @@ void World::auto_before_move(std::span<const EntityId> bodies, double h) {
   if (automatic.fast_count() == 0) return;
   automatic.stats.swept += static_cast<std::int64_t>(automatic.fast_count());
   CcdSelection selection = automatic.selection();
+  const std::int64_t capped = ccd.stats.capped_substeps;
   times.time(Stage::ccd, [&] { ccd.resolve(components, bodies, h, params.gravity, broadphase, events, &selection); });
+  automatic.after_sweep(ccd.stats.capped_substeps > capped);
 }
 
 void World::solve_velocities(std::span<const EntityId> bodies, double h, const SolverSettings& s) {

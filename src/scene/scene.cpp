@@ -97,6 +97,8 @@ void check_state(const Checker& k, const SceneSpec& s) {
   const AutoState& a = *s.state->automatic;
   if (a.hold < 0 || a.hold > AutoMode::hold)
     k.fail("state.auto.hold", "must be in [0, " + std::to_string(AutoMode::hold) + "] (got " + std::to_string(a.hold) + ")");
+  if (a.jam < 0 || a.jam > AutoMode::hold)
+    k.fail("state.auto.jam", "must be in [0, " + std::to_string(AutoMode::hold) + "] (got " + std::to_string(a.jam) + ")");
   for (std::size_t i = 0; i < a.pressed.size(); ++i) {
     const AutoState::Run& r = a.pressed[i];
     const std::string at = "state.auto.pressed[" + std::to_string(i) + "]";

@@ -118,6 +118,7 @@ std::string to_json(const SceneSpec& s) {
       ojson pressed = ojson::array();
       for (const AutoState::Run& r : s.state->automatic->pressed) pressed.push_back({r.pair.c, r.pair.b, r.substeps});
       o["state"]["auto"] = {{"hold", s.state->automatic->hold}, {"pressed", pressed}};
+      if (s.state->automatic->jam > 0) o["state"]["auto"]["jam"] = s.state->automatic->jam;  // older files have none
     }
   }
   std::string out;
