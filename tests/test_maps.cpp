@@ -173,6 +173,37 @@ BOOST_AUTO_TEST_CASE(print_scene_of_a_map_is_its_scene_file) {
   }
 }
 
+// A tile object (a gid) is anchored at its bottom-left corner; a group's
+// offset moves the layers in it.
+BOOST_AUTO_TEST_CASE(tile_objects_and_group_offsets_place_the_blocks_as_tiled_draws_them) {
+  const TempDir dir;
+  dir.file("props.tsj", read(map_path("props.tsj")));
+  json m = map_json("platform.tmj");
+  tiled_object(m, "crate")["gid"] = 1;
+  json objects = tiled_layer(m, "objects");
+  m["layers"].erase(2);
+  m["layers"].push_back({{"name", "group"}, {"type", "group"}, {"offsetx", 10}, {"offsety", -4},
+                         {"layers", json::array({objects})}});
+  const SceneSpec s = load_scene_file(dir.file("moved.tmj", m.dump()));
+  BOOST_TEST(block(s, 0).pos.x == 70.0);   // 60 + 10
+  BOOST_TEST(block(s, 0).pos.y == 236.0);  // 240 - 4
+  BOOST_TEST(block(s, 1).pos.x == 210.0);
+  BOOST_TEST(block(s, 1).pos.y == 236.0 - 24 - 4);  // y is the bottom: 236 - height, then the offset
+}
+
+// A map named without a folder is a file (the command line's check for a scene
+// name), and one that is not there says so.
+BOOST_AUTO_TEST_CASE(a_map_in_the_current_folder_is_found_by_its_name) {
+  const TempDir dir;
+  dir.file("props.tsj", read(map_path("props.tsj")));
+  dir.file("platform.tmj", read(map_path("platform.tmj")));
+  const Ran r = program(dir, no_display, {"--scene", "platform.tmj", "--headless", "--frames", "10"});
+  BOOST_TEST(r.code == 0, r.err);
+  const Ran missing = program(dir, no_display, {"--scene", "nope.ldtk", "--headless"});
+  BOOST_TEST(missing.code == 2);
+  BOOST_TEST(has(missing.err, "nope.ldtk: cannot read the scene file"), missing.err);
+}
+
 BOOST_AUTO_TEST_CASE(tiled_maps_it_does_not_take_are_one_line_errors) {
   const auto set = [](const char* key, json v) { return [key, v](json& m) { m[key] = v; }; };
   expect_map_error("platform.tmj", set("infinite", true), "infinite maps are not supported");
@@ -200,6 +231,10 @@ BOOST_AUTO_TEST_CASE(tiled_maps_it_does_not_take_are_one_line_errors) {
                    "unknown key (did you mean \"mass\"?)");
   expect_map_error("platform.tmj", [](json& m) { m["properties"][1]["value"] = "0;0.001"; }, "world.gravity: must be an array of two numbers");
   expect_map_error("platform.tmj", [](json& m) { m["properties"][0]["name"] = "width"; }, "the world's size is the map's");
+  expect_map_error("platform.tmj", [](json& m) { m["tilesets"][1]["source"] = "gone.tsj"; }, "gone.tsj: cannot read the tileset");
+  expect_map_error("platform.tmj", [](json& m) { m["tilesets"][0]["tiles"][0]["properties"][0]["value"] = "yes"; },
+                   "tilesets[0] \"terrain\", tile 1, property \"one_way\": must be a bool property");
+  expect_map_error("platform.tmj", [](json& m) { tiled_layer(m, "ground")["type"] = "tiles"; }, "layer type \"tiles\" is not a Tiled layer");
   // Bad JSON: line and column.
   const TempDir dir;
   const std::string bad = dir.file("bad.tmj", "{\n  \"orientation\": \"orthogonal\",\n  oops\n}");

@@ -98,7 +98,11 @@ Tileset read_tileset(const Map& c, const json& ref, const std::string& at) {
     if (!file.ends_with(".tsj") && !file.ends_with(".json"))
       fail(c.source, at, "tileset \"" + file + "\" is not JSON: save it as .tsj (XML tilesets are not supported)");
     const std::string path = (c.folder / file).string();
-    external = map_io::parse(read_input_file(path, "tileset"), path);
+    try {
+      external = map_io::parse(read_input_file(path, "tileset"), path);
+    } catch (const SceneError& e) {
+      fail(c.source, at, e.what());  // the map's error: its tileset's file names the problem
+    }
     set = &external;
     what = at + " (" + file + ")";
   }
