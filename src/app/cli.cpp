@@ -456,7 +456,7 @@ WorldMaker world_maker(const Options& o) {
 
 SceneSpec resolve_scene(const std::string& name) {
   if (const SceneSpec* s = find_builtin(name)) return *s;
-  const bool looks_like_file = name.find('/') != std::string::npos || name.ends_with(".json");
+  const bool looks_like_file = name.find('/') != std::string::npos || name.ends_with(".json") || is_map_file(name);
   std::error_code ec;
   if (!looks_like_file && !std::filesystem::exists(name, ec)) {
     std::string list;

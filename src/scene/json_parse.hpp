@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "scene/json_reader.hpp"
+#include "scene/scene_json.hpp"
 
 namespace physics::scene_io {
 
@@ -153,5 +154,27 @@ class StrictDom : public nlohmann::json_sax<json> {
     return true;
   }
 };
+
+// Parses `text` whole into dom (comments // and /* */ allowed: the files are
+// written by hand), or throws SceneError "source:line:column: invalid JSON:
+// ..." (or "source: ..." for an error without a position). A NUL byte is
+// refused first: the parser stops at one as at the end of the text, so what
+// follows it would be accepted unread. The one way a scene or map file's
+// text becomes a document (scene_json.cpp, map.cpp).
+inline void parse_strict(std::string_view text, const std::string& source, StrictDom& dom) {
+  if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos) {
+    const TextPos p = line_column(text, nul + 1);
+    throw SceneError(source + ":" + std::to_string(p.line) + ":" + std::to_string(p.column) +
+                     ": a NUL byte: a scene file is text");
+  }
+  const bool ok = json::sax_parse(text, &dom, json::input_format_t::json, true, true);
+  if (ok && dom.error.empty()) return;
+  if (dom.position > 0) {
+    const TextPos p = line_column(text, dom.position);
+    throw SceneError(source + ":" + std::to_string(p.line) + ":" + std::to_string(p.column) + ": invalid JSON: " +
+                     dom.error);
+  }
+  throw SceneError(source + ": " + (dom.error.empty() ? std::string("invalid JSON") : dom.error));
+}
 
 }  // namespace physics::scene_io

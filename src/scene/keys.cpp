@@ -815,32 +815,15 @@ std::optional<json> number(std::string_view s, bool integer) {
   return ec == std::errc{} && at == end ? std::optional<json>(v) : std::nullopt;
 }
 
-// The flag's text as the JSON value its row reads, by the row's type: a
-// number, [x, y] from "X,Y", a boolean from on/off, a string.
+// The flag's text as the JSON value its row reads (value_of_text), or the
+// flag's error.
 json flag_value(const KeyDoc& d, const std::string& text) {
-  const auto fail = [&](const std::string& problem) {
-    throw SceneError("--" + std::string(d.name()) + ": " + problem + " (got '" + text + "')");
-  };
-  if (d.type == "boolean") {
-    for (const char* on : {"on", "true", "1", "yes"})
-      if (text == on) return true;
-    for (const char* off : {"off", "false", "0", "no"})
-      if (text == off) return false;
-    fail("must be on or off");
-  }
-  if (d.type == "[x, y]") {
-    const std::size_t comma = text.find(',');
-    const auto x = number(std::string_view(text).substr(0, comma), false);
-    const auto y = comma == std::string::npos ? x : number(std::string_view(text).substr(comma + 1), false);
-    if (comma == std::string::npos || !x || !y) fail("must be two numbers X,Y");
-    return json::array({*x, *y});
-  }
-  if (d.type == "integer" || d.type == "number") {
-    const auto v = number(text, d.type == "integer");
-    if (!v) fail(d.type == "integer" ? "must be an integer in " + std::string(d.range) : "must be a number");
-    return *v;
-  }
-  return text;
+  if (std::optional<json> v = scene_io::value_of_text(d, text)) return *std::move(v);
+  const std::string problem = d.type == "boolean"  ? "must be on or off"
+                              : d.type == "[x, y]" ? "must be two numbers X,Y"
+                              : d.type == "integer" ? "must be an integer in " + std::string(d.range)
+                                                    : "must be a number";
+  throw SceneError("--" + std::string(d.name()) + ": " + problem + " (got '" + text + "')");
 }
 
 // The row's message without its path ("[0]: ", ".dt: ") and its value (the
@@ -852,6 +835,38 @@ std::string problem_of(const std::string& message, const std::string& flag) {
 }
 
 }  // namespace
+
+// A key's value written as text (a flag's, a map editor's string property),
+// by the row's type: on/off (true/false, 1/0, yes/no) for a boolean, "X,Y"
+// for [x, y], a number, a comma-separated list for an array of strings, else
+// the text itself.
+std::optional<json> scene_io::value_of_text(const KeyDoc& d, std::string_view text) {
+  if (d.type == "boolean") {
+    for (const char* on : {"on", "true", "1", "yes"})
+      if (text == on) return true;
+    for (const char* off : {"off", "false", "0", "no"})
+      if (text == off) return false;
+    return std::nullopt;
+  }
+  if (d.type == "[x, y]") {
+    const std::size_t comma = text.find(',');
+    if (comma == std::string_view::npos) return std::nullopt;
+    const auto x = number(text.substr(0, comma), false), y = number(text.substr(comma + 1), false);
+    if (!x || !y) return std::nullopt;
+    return json::array({*x, *y});
+  }
+  if (d.type == "integer" || d.type == "number") return number(text, d.type == "integer");
+  if (d.type == "array of strings") {
+    json out = json::array();
+    for (std::size_t at = 0; at <= text.size();) {
+      const std::size_t comma = std::min(text.find(',', at), text.size());
+      out.push_back(std::string(text.substr(at, comma - at)));
+      at = comma + 1;
+    }
+    return out;
+  }
+  return std::string(text);
+}
 
 const std::vector<WorldFlag>& world_flags() {
   static const std::vector<WorldFlag> out = [] {

@@ -13,6 +13,7 @@
 // default member initializer) and its row in keys.cpp; then tools/scene_keys.sh.
 #pragma once
 
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -93,6 +94,10 @@ std::vector<std::string_view> names(std::span<const Key<Spec>> rows) {
 void read_block_keys(const Reader& r, const json& b, const Path& p, BlockSpec& out);
 void read_contact_keys(const Reader& r, const json& b, const Path& p, ContactSpec& out);
 void write_block_keys(ojson& o, const BlockSpec& b);
+// A key's value given as text (a command-line flag's, a map editor's string
+// property: "0,0.001" for [x, y], on/off for a boolean, "a,b" for an array of
+// strings) as the JSON its row reads; none if the text is not of the row's type.
+std::optional<json> value_of_text(const KeyDoc& d, std::string_view text);
 void write_contact_keys(ojson& o, const ContactSpec& c);
 
 }  // namespace physics::scene_io

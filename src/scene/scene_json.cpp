@@ -14,6 +14,7 @@
 
 #include "scene/json_parse.hpp"
 #include "scene/keys.hpp"
+#include "scene/map.hpp"
 
 namespace physics {
 
@@ -236,13 +237,6 @@ TextPos line_column(std::string_view text, std::size_t position) {
 
 SceneSpec read_scene(std::string_view text, const std::string& source) {
   const Reader r(source);
-  // The parser stops at a NUL as at the end of the text: what follows it
-  // would be accepted unread.
-  if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos) {
-    const TextPos p = line_column(text, nul + 1);
-    throw SceneError(source + ":" + std::to_string(p.line) + ":" + std::to_string(p.column) +
-                     ": a NUL byte: a scene file is text");
-  }
   SceneSpec s;
   // The blocks are read as the parser completes each one. Their first error
   // is kept and raised after the checks that come before the blocks (syntax
@@ -267,16 +261,7 @@ SceneSpec read_scene(std::string_view text, const std::string& source) {
       block_error = err;
     }
   };
-  // Comments (// and /* */) are allowed: scene files are written by hand.
-  const bool ok = json::sax_parse(text, &dom, json::input_format_t::json, true, true);
-  if (!ok || !dom.error.empty()) {
-    if (dom.position > 0) {
-      const TextPos p = line_column(text, dom.position);
-      throw SceneError(source + ":" + std::to_string(p.line) + ":" + std::to_string(p.column) +
-                       ": invalid JSON: " + dom.error);
-    }
-    throw SceneError(source + ": " + (dom.error.empty() ? std::string("invalid JSON") : dom.error));
-  }
+  parse_strict(text, source, dom);
   const json& doc = dom.root;
   if (!doc.is_object()) r.fail("", "a scene file must hold one JSON object {...} (got " + r.got(doc) + ")");
   r.keys(doc, "", names(scene_keys()));
@@ -343,7 +328,9 @@ std::string read_input_file(const std::string& path, const std::string& what) {
 
 SceneSpec read_scene_file(const std::string& path) {
   const std::string text = read_input_file(path, "scene file");
-  SceneSpec s = read_scene(text, path);
+  // A map from a level editor (.tmj, .ldtk) becomes a scene file's document
+  // read by the same reader (map.hpp).
+  SceneSpec s = is_map_file(path) ? read_map(text, path) : read_scene(text, path);
   // A game's next level is named relative to this file's folder; it must be
   // there now, not only once this level is won.
   if (!s.game.next.empty()) {

@@ -31,7 +31,8 @@ SceneSpec read_scene(std::string_view text, const std::string& source);
 // a SceneSpec it returns builds. Throws SceneError.
 SceneSpec parse_scene(std::string_view text, const std::string& source);
 
-// The same from a file. Throw SceneError (also when it cannot be read).
+// The same from a file (a .tmj or .ldtk map too: is_map_file). Throw
+// SceneError (also when it cannot be read).
 SceneSpec read_scene_file(const std::string& path);
 SceneSpec load_scene_file(const std::string& path);
 
@@ -40,6 +41,10 @@ SceneSpec load_scene_file(const std::string& path);
 // SceneError "path: cannot read the `what`: ..." (no such file, a directory,
 // larger than 64 MB, read error). Every input file is read with it.
 std::string read_input_file(const std::string& path, const std::string& what);
+
+// A file read_scene_file reads as a map from a level editor, by its name:
+// .tmj (Tiled) or .ldtk (LDtk) (map.hpp; docs/scenes.md, "Maps from Tiled and LDtk").
+bool is_map_file(std::string_view path);
 
 // The scene as a scene file that parse_scene reads back to the same scene.
 std::string to_json(const SceneSpec& s);
