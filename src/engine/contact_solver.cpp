@@ -179,7 +179,7 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
   earlier_jn_.clear();
   earlier_jt_.clear();
   for (int round = 0;; ++round) {
-    last_round_ = rounds > 0 && round == rounds;
+    last_round_ = s.rounds > 0 && round == s.rounds;
     times.time(Stage::prepare, [&] {
       // Once per body, not per contact end (a division each).
       inverse_mass_.resize(k.size());
@@ -193,7 +193,7 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
     times.time(Stage::impact_time, [&] { impact_time(k, h, g, s.exact_motion); });
     // With CCD on, it sweeps every pair after the solver: what the solve
     // turned towards each other is its business.
-    if (!s.impacts || round == rounds) break;
+    if (!s.impacts || round == s.rounds) break;
     bool again = false;
     times.time(Stage::pairs, [&] { again = turned_to_meet(k, entities, h, s, broadphase); });
     if (!again) break;

@@ -69,6 +69,13 @@ struct SolverSettings {
   bool shock_propagation = true;
   bool impacts = true;        // false with CCD on: impacts are left to it
   bool exact_motion = false;  // Params::integrator is exact (gravity_after_impact)
+  // Rounds after the first, at most, per substep, when a solve turned a
+  // body towards one it had no contact with (turned_to_meet()). 0: one round.
+  // The stable solver takes 3 (World's solver_settings): the family's
+  // push-into-wall 38 -> 50 of 50 under it. Not the auto mode: its trial of
+  // the solver reads the contacts as one round's (with 3 a fast elastic gas
+  // lost energy and a row closing in broke its order).
+  int rounds = 0;
 };
 
 // A resting contact's impulses at the end of a substep: what the next
@@ -128,13 +135,6 @@ class ContactSolver {
 
   SolverStats stats;
 
-  // Rounds after the first, at most, per substep, when a solve turned a
-  // body towards one it had no contact with (turned_to_meet()). 0 (the
-  // default): one round, as before. Not on by default yet: the auto mode's
-  // trial of the solver reads its contacts as one round's (a fast elastic
-  // gas lost energy, a row closing in broke its order under auto with 3);
-  // 3 measured on the stable solver: the family's push-into-wall 38 -> 50 of 50.
-  int rounds = 0;
 
   // The last substep's contacts (velocity stage) and their friction rows
   // (empty when no contact had friction), for contact events.

@@ -133,6 +133,7 @@ SolverSettings solver_settings(const Params& p) {
   s.iterations = p.iterations;
   s.impacts = !p.ccd;  // with CCD on, impacts are its business
   s.exact_motion = p.integrator == Integrator::exact;
+  s.rounds = p.solver == Solver::stable ? 3 : 0;  // SolverSettings::rounds
   return s;
 }
 }  // namespace
