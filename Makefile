@@ -468,7 +468,7 @@ WEB_CXX       := clang++-14
 # nlohmann's headers through a folder of their own (-isystem /usr/include
 # would bring glibc's headers in); no std::filesystem in its API.
 # For size (the page loads it): -Oz with link-time optimisation, then
-# binaryen's wasm-opt -Oz: 861 KB at -O2, 472 528 bytes so, exceptions included
+# binaryen's wasm-opt -Oz: 861 KB at -O2, 475 042 bytes so, exceptions included
 # (no iostreams in the code it runs: docs/web.md).
 WEB_OPT       ?= -Oz -flto
 WEB_FLAGS     := --target=wasm32-wasi -std=c++20 $(WEB_OPT) -fwasm-exceptions -Wall -Wextra -Werror -ffp-contract=off -Iweb/compat -Iinclude \
