@@ -261,7 +261,7 @@ void stop_at_impacts(Components& k, ImpactQueue& queue, Event first, std::span<c
 
 }  // namespace
 
-void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h, Vector gravity,
+void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h, Vector gravity, bool exact_motion,
                   BroadPhase& broadphase, ContactEvents& events, const CcdSelection* sel) {
   if (entities.size() < 2) return;
   if (sel)

@@ -74,8 +74,9 @@ class Ccd {
   // `ccd: N substeps over budget`).
   // Each impact is reported to `events` (which keeps it only if enabled).
   // With a selection, only the pairs of a selected body are swept.
-  void resolve(Components& k, std::span<const EntityId> entities, double h, Vector gravity, BroadPhase& broadphase,
-               ContactEvents& events, const CcdSelection* selection = nullptr);
+  // exact_motion: Move's motion is the exact integrator's (gravity_after_impact).
+  void resolve(Components& k, std::span<const EntityId> entities, double h, Vector gravity, bool exact_motion,
+               BroadPhase& broadphase, ContactEvents& events, const CcdSelection* selection = nullptr);
 
   // First time in [t0, t1] at which the boxes of c and b, moving at their
   // current velocities from their positions extrapolated to time 0
@@ -85,9 +86,6 @@ class Ccd {
   static std::optional<Impact> time_of_impact(const Components& k, EntityId c, EntityId b, double t0, double t1);
 
   CcdStats stats;
-  // Whether Move's motion is the exact integrator's (gravity_after_impact),
-  // set by World each substep from Params::integrator.
-  bool exact_motion = false;
 
  private:
   std::vector<Pair> pairs_;

@@ -21,6 +21,13 @@ void require_finite(Vector v, const char* what) {
     throw std::invalid_argument(std::string("query: ") + what + " must be finite");
 }
 
+// A region [lo, hi] for query `what`: both corners finite, lo <= hi on each axis.
+void require_region(Vector lo, Vector hi, const std::string& what) {
+  require_finite(lo, (what + "'s lo").c_str());
+  require_finite(hi, (what + "'s hi").c_str());
+  if (lo.x > hi.x || lo.y > hi.y) throw std::invalid_argument("query: " + what + "'s lo must not exceed hi on an axis");
+}
+
 // Keeps the earlier hit; at the same fraction the lower id, so the answer
 // does not depend on the order bodies are tested in.
 void keep_first(std::optional<RayHit>& best, const std::optional<RayHit>& hit) {
@@ -198,9 +205,7 @@ std::optional<RayHit> QueryIndex::ray_tiles(Vector origin, Vector travel) const 
 }
 
 std::vector<TileCellHit> QueryIndex::cells_meeting(Vector lo, Vector hi) const {
-  require_finite(lo, "cells_meeting's lo");
-  require_finite(hi, "cells_meeting's hi");
-  if (lo.x > hi.x || lo.y > hi.y) throw std::invalid_argument("query: cells_meeting's lo must not exceed hi on an axis");
+  require_region(lo, hi, "cells_meeting");
   std::vector<TileCellHit> out;
   const auto layers = tiles_->layers();
   for (std::size_t i = 0; i < layers.size(); ++i) {
@@ -260,9 +265,7 @@ std::optional<RayHit> QueryIndex::walk_grid(Vector origin, Vector travel) const 
 }
 
 std::vector<EntityId> QueryIndex::query_box(Vector lo, Vector hi) const {
-  require_finite(lo, "query_box's lo");
-  require_finite(hi, "query_box's hi");
-  if (lo.x > hi.x || lo.y > hi.y) throw std::invalid_argument("query: query_box's lo must not exceed hi on an axis");
+  require_region(lo, hi, "query_box");
   std::vector<EntityId> out;
   // The grid's closed float boxes hold the open ones: it reports a superset.
   grid_.query(FloatBox::outward(lo.x, lo.y, hi.x, hi.y), [&](std::uint32_t i) {

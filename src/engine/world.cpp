@@ -149,7 +149,6 @@ void World::before_move(double h) {
     // Timed with the broad phase's pairs: it is the tiles' broad phase.
     if (!tiles.empty()) times.time(Stage::pairs, [&] { gather_tiles(h); });
     const auto colliding = this->colliding();
-    ccd.exact_motion = exact_motion();
     if (params.solver == Solver::automatic) {
       auto_before_move(colliding, h);
     } else {
@@ -176,9 +175,7 @@ void World::auto_before_move(std::span<const EntityId> bodies, double h) {
       solve_velocities(bodies, h, s);
       automatic.stats.contacts += static_cast<std::int64_t>(contact_solver.constraints().size());
       automatic.stats.swept += static_cast<std::int64_t>(bodies.size());
-      const std::int64_t capped = ccd.stats.capped_substeps;
-      sweep(bodies, h);
-      return automatic.after_sweep(ccd.stats.capped_substeps > capped);
+      return automatic.after_sweep(sweep(bodies, h));
     }
     automatic.keep(components);
     contact_solver.solve_velocities(components, bodies, h, params.gravity, s, broadphase, times);
@@ -188,10 +185,8 @@ void World::auto_before_move(std::span<const EntityId> bodies, double h) {
   }
   if (automatic.fast_count() == 0) return;
   automatic.stats.swept += static_cast<std::int64_t>(automatic.fast_count());
-  CcdSelection selection = automatic.selection();
-  const std::int64_t capped = ccd.stats.capped_substeps;
-  times.time(Stage::ccd, [&] { ccd.resolve(components, bodies, h, params.gravity, broadphase, events, &selection); });
-  automatic.after_sweep(ccd.stats.capped_substeps > capped);
+  const CcdSelection selection = automatic.selection();
+  automatic.after_sweep(sweep(bodies, h, &selection));
 }
 
 void World::solve_velocities(std::span<const EntityId> bodies, double h, const SolverSettings& s) {
@@ -199,8 +194,12 @@ void World::solve_velocities(std::span<const EntityId> bodies, double h, const S
   record_solver_contacts();
 }
 
-void World::sweep(std::span<const EntityId> bodies, double h) {
-  times.time(Stage::ccd, [&] { ccd.resolve(components, bodies, h, params.gravity, broadphase, events); });
+bool World::sweep(std::span<const EntityId> bodies, double h, const CcdSelection* selection) {
+  const std::int64_t capped = ccd.stats.capped_substeps;
+  times.time(Stage::ccd, [&] {
+    ccd.resolve(components, bodies, h, params.gravity, exact_motion(), broadphase, events, selection);
+  });
+  return ccd.stats.capped_substeps > capped;
 }
 
 void World::enable_events() {

@@ -176,9 +176,10 @@ struct World {
   static std::size_t index(SystemId s) { return static_cast<std::size_t>(s); }
   void record_solver_contacts();  // before_move's, after the stable solver's velocities
   void auto_before_move(std::span<const EntityId> bodies, double h);
-  // The stable solver's velocities (and their contacts' events); CCD over all the bodies.
+  // The stable solver's velocities (and their contacts' events).
   void solve_velocities(std::span<const EntityId> bodies, double h, const SolverSettings& s);
-  void sweep(std::span<const EntityId> bodies, double h);
+  // CCD over the bodies (a selection's only, if given); whether it ran out of budget.
+  bool sweep(std::span<const EntityId> bodies, double h, const CcdSelection* selection = nullptr);
   void gather_tiles(double h);
   std::vector<EntityId> colliding_, proxies_, created_;  // gather_tiles' lists
   ExactIntegrator exact_;  // Params::integrator == Integrator::exact

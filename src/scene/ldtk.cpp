@@ -14,6 +14,9 @@ using map_io::fail;
 using map_io::json;
 using map_io::MapScene;
 using map_io::need;
+using map_io::integer;
+using map_io::number;
+using map_io::text;
 
 constexpr std::int64_t max_side = std::int64_t{1} << 20;
 
@@ -22,18 +25,9 @@ struct Project {
   const json& defs;  // "defs": the layers' IntGrid values
 };
 
-std::int64_t integer(const Project& p, const json& v, const std::string& what, std::int64_t lo, std::int64_t hi) {
-  return scene_io::Reader(p.source).integer(v, what.c_str(), lo, hi);
-}
-double number(const Project& p, const json& v, const std::string& what) {
-  return scene_io::Reader(p.source).number(v, what.c_str());
-}
-std::string text(const Project& p, const json& v, const std::string& what) {
-  return scene_io::Reader(p.source).text(v, what.c_str());
-}
 double offset(const Project& p, const json& layer, const char* key, const std::string& what) {
   const auto it = layer.find(key);
-  return it == layer.end() ? 0.0 : number(p, *it, what + "." + key);
+  return it == layer.end() ? 0.0 : number(p.source, *it, what + "." + key);
 }
 
 // An LDtk field type as the map properties' ("string", "int", ...); enums
@@ -56,10 +50,10 @@ void each_field(const Project& p, const json& obj, const std::string& what, F&& 
   if (it == obj.end()) return;
   if (!it->is_array()) fail(p.source, what, "\"fieldInstances\" must be an array");
   for (const json& field : *it) {
-    const std::string name = text(p, need(field, "__identifier", p.source, what + ", a field"), what + ", a field's __identifier");
+    const std::string name = text(p.source, need(field, "__identifier", p.source, what + ", a field"), what + ", a field's __identifier");
     const std::string at = what + ", field \"" + name + "\"";
     const json& value = need(field, "__value", p.source, at);
-    const std::string type = text(p, need(field, "__type", p.source, at), at + ".__type");
+    const std::string type = text(p.source, need(field, "__type", p.source, at), at + ".__type");
     if (!value.is_null()) f(name, field_type(p, type, at), value, p.source + ": " + at);
   }
 }
@@ -90,9 +84,9 @@ json values_of(const Project& p, const json& layer) {
 }
 
 void intgrid_layer(const Project& p, const json& layer, const std::string& what, MapScene& m) {
-  const std::int64_t w = integer(p, need(layer, "__cWid", p.source, what), what + ".__cWid", 1, max_side);
-  const std::int64_t h = integer(p, need(layer, "__cHei", p.source, what), what + ".__cHei", 1, max_side);
-  const std::int64_t cell = integer(p, need(layer, "__gridSize", p.source, what), what + ".__gridSize", 1, max_side);
+  const std::int64_t w = integer(p.source, need(layer, "__cWid", p.source, what), what + ".__cWid", 1, max_side);
+  const std::int64_t h = integer(p.source, need(layer, "__cHei", p.source, what), what + ".__cHei", 1, max_side);
+  const std::int64_t cell = integer(p.source, need(layer, "__gridSize", p.source, what), what + ".__gridSize", 1, max_side);
   const json& csv = need(layer, "intGridCsv", p.source, what);
   if (!csv.is_array() || static_cast<std::int64_t>(csv.size()) != w * h)
     fail(p.source, what + ".intGridCsv", "must be an array of " + std::to_string(w) + " x " + std::to_string(h) + " values");
@@ -100,7 +94,7 @@ void intgrid_layer(const Project& p, const json& layer, const std::string& what,
   std::vector<std::string> rows(static_cast<std::size_t>(h), std::string(static_cast<std::size_t>(w), map_io::empty_cell));
   for (std::size_t i = 0; i < csv.size(); ++i) {
     const std::string at = csv[i].is_number_integer() ? what : what + ".intGridCsv[" + std::to_string(i) + "]";
-    const std::int64_t v = integer(p, csv[i], at, 0, std::int64_t{1} << 31);
+    const std::int64_t v = integer(p.source, csv[i], at, 0, std::int64_t{1} << 31);
     rows[i / static_cast<std::size_t>(w)][i % static_cast<std::size_t>(w)] = cell_kind(p, values, v, what);
   }
   json tiles = {{"pos", {offset(p, layer, "__pxTotalOffsetX", what), offset(p, layer, "__pxTotalOffsetY", what)}},
@@ -120,10 +114,10 @@ void entity(const Project& p, const json& e, Vector off, const std::string& what
   Vector pivot{0, 0};
   if (const auto pv = e.find("__pivot"); pv != e.end()) {
     if (!pv->is_array() || pv->size() != 2) fail(p.source, what + ".__pivot", "must be [x, y]");
-    pivot = {number(p, (*pv)[0], what + ".__pivot[0]"), number(p, (*pv)[1], what + ".__pivot[1]")};
+    pivot = {number(p.source, (*pv)[0], what + ".__pivot[0]"), number(p.source, (*pv)[1], what + ".__pivot[1]")};
   }
-  const double x = number(p, px[0], what + ".px[0]") - pivot.x * number(p, w, what + ".width");
-  const double y = number(p, px[1], what + ".px[1]") - pivot.y * number(p, h, what + ".height");
+  const double x = number(p.source, px[0], what + ".px[0]") - pivot.x * number(p.source, w, what + ".width");
+  const double y = number(p.source, px[1], what + ".px[1]") - pivot.y * number(p.source, h, what + ".height");
   json block = {{"pos", {x + off.x, y + off.y}}, {"size", {w, h}}};
   each_field(p, e, what, [&](const std::string& name, const std::string& type, const json& v, const std::string& where) {
     map_io::set_block_property(block, name, type, v, where);
@@ -134,7 +128,7 @@ void entity(const Project& p, const json& e, Vector off, const std::string& what
 }
 
 void layer(const Project& p, const json& l, const std::string& what, MapScene& m) {
-  const std::string type = text(p, need(l, "__type", p.source, what), what + ".__type");
+  const std::string type = text(p.source, need(l, "__type", p.source, what), what + ".__type");
   if (type == "IntGrid") return intgrid_layer(p, l, what, m);
   if (type != "Entities") return;  // Tiles and AutoLayer: pictures, no collision
   const json& list = need(l, "entityInstances", p.source, what);
@@ -172,8 +166,8 @@ SceneSpec read_ldtk(std::string_view text_in, const std::string& path) {
   const auto id = level.is_object() ? level.find("identifier") : level.end();
   const std::string what = "level" + (id != level.end() && id->is_string() ? " \"" + id->get<std::string>() + "\"" : std::string(" 0"));
   MapScene m;
-  m.doc["world"] = {{"width", integer(p, need(level, "pxWid", path, what), what + ".pxWid", 1, max_side)},
-                    {"height", integer(p, need(level, "pxHei", path, what), what + ".pxHei", 1, max_side)}};
+  m.doc["world"] = {{"width", integer(p.source, need(level, "pxWid", path, what), what + ".pxWid", 1, max_side)},
+                    {"height", integer(p.source, need(level, "pxHei", path, what), what + ".pxHei", 1, max_side)}};
   m.doc["blocks"] = json::array();
   m.doc["tiles"] = json::array();
   each_field(p, level, what, [&](const std::string& name, const std::string& type, const json& v, const std::string& where) {

@@ -151,6 +151,17 @@ const json& need(const json& obj, const char* key, const std::string& source, co
   return *it;
 }
 
+std::int64_t integer(const std::string& source, const json& v, const std::string& what, std::int64_t lo,
+                     std::int64_t hi) {
+  return scene_io::Reader(source).integer(v, what.c_str(), lo, hi);
+}
+double number(const std::string& source, const json& v, const std::string& what) {
+  return scene_io::Reader(source).number(v, what.c_str());
+}
+std::string text(const std::string& source, const json& v, const std::string& what) {
+  return scene_io::Reader(source).text(v, what.c_str());
+}
+
 SceneSpec finish(const MapScene& m, const std::string& source) {
   try {
     SceneSpec s = read_scene(m.doc.dump(), source);

@@ -64,6 +64,12 @@ void set_tile_property(json& tiles, const std::string& name, std::string_view ty
 [[noreturn]] void fail(const std::string& source, const std::string& what, const std::string& problem);
 // A member the format requires, or the error "missing field".
 const json& need(const json& obj, const char* key, const std::string& source, const std::string& what);
+// A value read by the scene reader's rules (scene_io::Reader), its error
+// naming the map file and `what`.
+std::int64_t integer(const std::string& source, const json& v, const std::string& what, std::int64_t lo,
+                     std::int64_t hi);
+double number(const std::string& source, const json& v, const std::string& what);
+std::string text(const std::string& source, const json& v, const std::string& what);
 
 // The document read as a scene file and validated; an error about blocks[i]
 // or tiles[i] names the map's object or layer instead. Throws SceneError.

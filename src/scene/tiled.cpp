@@ -18,6 +18,9 @@ using map_io::fail;
 using map_io::json;
 using map_io::MapScene;
 using map_io::need;
+using map_io::integer;
+using map_io::number;
+using map_io::text;
 
 constexpr std::int64_t max_side = std::int64_t{1} << 20;
 constexpr std::uint64_t gid_flags = 0xF0000000u;  // flips and rotation: a flipped tile collides as it is
@@ -37,15 +40,6 @@ struct Map {
   std::vector<Tileset> sets;
 };
 
-std::int64_t integer(const Map& c, const json& v, const std::string& what, std::int64_t lo, std::int64_t hi) {
-  return scene_io::Reader(c.source).integer(v, what.c_str(), lo, hi);
-}
-double number(const Map& c, const json& v, const std::string& what) {
-  return scene_io::Reader(c.source).number(v, what.c_str());
-}
-std::string text(const Map& c, const json& v, const std::string& what) {
-  return scene_io::Reader(c.source).text(v, what.c_str());
-}
 bool flag(const json& obj, const char* key) {
   const auto it = obj.find(key);
   return it != obj.end() && it->is_boolean() && it->get<bool>();
@@ -66,10 +60,10 @@ void each_property(const Map& c, const json& obj, const std::string& what, F&& f
   if (it == obj.end()) return;
   if (!it->is_array()) fail(c.source, what, "\"properties\" must be an array");
   for (const json& p : *it) {
-    const std::string name = text(c, need(p, "name", c.source, what + ", a property"), what + ", a property's name");
+    const std::string name = text(c.source, need(p, "name", c.source, what + ", a property"), what + ", a property's name");
     const std::string where = c.source + ": " + what + ", property \"" + name + "\"";
     const auto type = p.find("type");
-    const std::string t = type == p.end() ? "string" : text(c, *type, what + ", property \"" + name + "\" type");
+    const std::string t = type == p.end() ? "string" : text(c.source, *type, what + ", property \"" + name + "\" type");
     f(name, t, need(p, "value", c.source, what + ", property \"" + name + "\""), where);
   }
 }
@@ -89,12 +83,12 @@ char tile_kind(const Map& c, const json& tile, const std::string& what) {
 // An embedded tileset, or the external one (.tsj) it names.
 Tileset read_tileset(const Map& c, const json& ref, const std::string& at) {
   Tileset t;
-  t.first = integer(c, need(ref, "firstgid", c.source, at), at + ".firstgid", 1, std::int64_t{1} << 28);
+  t.first = integer(c.source, need(ref, "firstgid", c.source, at), at + ".firstgid", 1, std::int64_t{1} << 28);
   json external;
   const json* set = &ref;
   std::string what = at;
   if (const auto src = ref.find("source"); src != ref.end()) {
-    const std::string file = text(c, *src, at + ".source");
+    const std::string file = text(c.source, *src, at + ".source");
     if (!file.ends_with(".tsj") && !file.ends_with(".json"))
       fail(c.source, at, "tileset \"" + file + "\" is not JSON: save it as .tsj (XML tilesets are not supported)");
     const std::string path = (c.folder / file).string();
@@ -107,15 +101,15 @@ Tileset read_tileset(const Map& c, const json& ref, const std::string& at) {
     what = at + " (" + file + ")";
   }
   what += named(*set);
-  const std::int64_t w = integer(c, need(*set, "tilewidth", c.source, what), what + ".tilewidth", 1, max_side);
-  const std::int64_t h = integer(c, need(*set, "tileheight", c.source, what), what + ".tileheight", 1, max_side);
+  const std::int64_t w = integer(c.source, need(*set, "tilewidth", c.source, what), what + ".tilewidth", 1, max_side);
+  const std::int64_t h = integer(c.source, need(*set, "tileheight", c.source, what), what + ".tileheight", 1, max_side);
   if (w != c.tile || h != c.tile)
     fail(c.source, what, "tiles of " + std::to_string(w) + " x " + std::to_string(h) + " px on a map of " +
                              std::to_string(c.tile) + " px tiles: a tileset's tiles must be the map's size");
-  t.count = integer(c, need(*set, "tilecount", c.source, what), what + ".tilecount", 0, std::int64_t{1} << 28);
+  t.count = integer(c.source, need(*set, "tilecount", c.source, what), what + ".tilecount", 0, std::int64_t{1} << 28);
   if (const auto tiles = set->find("tiles"); tiles != set->end() && tiles->is_array())
     for (const json& tile : *tiles) {
-      const std::int64_t id = integer(c, need(tile, "id", c.source, what + ", a tile"), what + ", a tile's id", 0, t.count - 1);
+      const std::int64_t id = integer(c.source, need(tile, "id", c.source, what + ", a tile"), what + ", a tile's id", 0, t.count - 1);
       if (const char k = tile_kind(c, tile, what + ", tile " + std::to_string(id)); k != map_io::solid_cell) t.kinds[id] = k;
     }
   return t;
@@ -153,8 +147,8 @@ void tile_layer(const Map& c, const json& layer, Vector offset, const std::strin
   if ((enc != layer.end() && *enc != "csv") || data.is_string())
     fail(c.source, what, "base64 layer data is not supported: save the map with the tile layer format CSV");
   if (!data.is_array()) fail(c.source, what + ".data", "must be an array of gids");
-  const std::int64_t w = integer(c, need(layer, "width", c.source, what), what + ".width", 1, max_side);
-  const std::int64_t h = integer(c, need(layer, "height", c.source, what), what + ".height", 1, max_side);
+  const std::int64_t w = integer(c.source, need(layer, "width", c.source, what), what + ".width", 1, max_side);
+  const std::int64_t h = integer(c.source, need(layer, "height", c.source, what), what + ".height", 1, max_side);
   if (static_cast<std::int64_t>(data.size()) != w * h)
     fail(c.source, what + ".data", std::to_string(data.size()) + " gids for a layer of " + std::to_string(w) + " x " +
                                        std::to_string(h) + " tiles");
@@ -187,13 +181,13 @@ void object(const Map& c, const json& obj, Vector offset, const std::string& wha
   for (const char* shape : {"polygon", "polyline", "text"})
     if (obj.contains(shape)) fail(c.source, what, std::string(shape) + " objects are not supported: only rectangles");
   if (obj.contains("template")) fail(c.source, what, "template instances are not supported: detach the template");
-  if (const auto r = obj.find("rotation"); r != obj.end() && number(c, *r, what + ".rotation") != 0)
+  if (const auto r = obj.find("rotation"); r != obj.end() && number(c.source, *r, what + ".rotation") != 0)
     fail(c.source, what, "rotated objects are not supported (rotation " + r->dump() + "): blocks are axis-aligned");
-  const double x = number(c, need(obj, "x", c.source, what), what + ".x");
-  double y = number(c, need(obj, "y", c.source, what), what + ".y");
+  const double x = number(c.source, need(obj, "x", c.source, what), what + ".x");
+  double y = number(c.source, need(obj, "y", c.source, what), what + ".y");
   const json& w = need(obj, "width", c.source, what);
   const json& h = need(obj, "height", c.source, what);
-  if (obj.contains("gid")) y -= number(c, h, what + ".height");
+  if (obj.contains("gid")) y -= number(c.source, h, what + ".height");
   json block = {{"pos", {x + offset.x, y + offset.y}}, {"size", {w, h}}};
   each_property(c, obj, what, [&](const std::string& name, const std::string& type, const json& v, const std::string& where) {
     map_io::set_block_property(block, name, type, v, where);
@@ -208,10 +202,10 @@ void layers(const Map& c, const json& list, Vector offset, const std::string& at
   for (std::size_t i = 0; i < list.size(); ++i) {
     const json& layer = list[i];
     const std::string what = at + "[" + std::to_string(i) + "]" + named(layer);
-    const std::string type = text(c, need(layer, "type", c.source, what), what + ".type");
+    const std::string type = text(c.source, need(layer, "type", c.source, what), what + ".type");
     Vector off = offset;
-    if (const auto ox = layer.find("offsetx"); ox != layer.end()) off.x += number(c, *ox, what + ".offsetx");
-    if (const auto oy = layer.find("offsety"); oy != layer.end()) off.y += number(c, *oy, what + ".offsety");
+    if (const auto ox = layer.find("offsetx"); ox != layer.end()) off.x += number(c.source, *ox, what + ".offsetx");
+    if (const auto oy = layer.find("offsety"); oy != layer.end()) off.y += number(c.source, *oy, what + ".offsety");
     if (type == "tilelayer") {
       tile_layer(c, layer, off, what, m);
     } else if (type == "objectgroup") {
@@ -234,14 +228,14 @@ void layers(const Map& c, const json& list, Vector offset, const std::string& at
 SceneSpec read_tiled(std::string_view text_in, const std::string& path) {
   const json map = map_io::parse(text_in, path);
   Map c{path, std::filesystem::path(path).parent_path(), 0, {}};
-  const std::string orientation = text(c, need(map, "orientation", path, ""), "orientation");
+  const std::string orientation = text(c.source, need(map, "orientation", path, ""), "orientation");
   if (orientation != "orthogonal")
     fail(path, "", "orientation \"" + orientation + "\" is not supported: only orthogonal maps");
   if (flag(map, "infinite")) fail(path, "", "infinite maps are not supported: give the map a fixed size (Map Properties, Infinite off)");
-  const std::int64_t w = integer(c, need(map, "width", path, ""), "width", 1, max_side);
-  const std::int64_t h = integer(c, need(map, "height", path, ""), "height", 1, max_side);
-  const std::int64_t tw = integer(c, need(map, "tilewidth", path, ""), "tilewidth", 1, max_side);
-  const std::int64_t th = integer(c, need(map, "tileheight", path, ""), "tileheight", 1, max_side);
+  const std::int64_t w = integer(c.source, need(map, "width", path, ""), "width", 1, max_side);
+  const std::int64_t h = integer(c.source, need(map, "height", path, ""), "height", 1, max_side);
+  const std::int64_t tw = integer(c.source, need(map, "tilewidth", path, ""), "tilewidth", 1, max_side);
+  const std::int64_t th = integer(c.source, need(map, "tileheight", path, ""), "tileheight", 1, max_side);
   if (tw != th)
     fail(path, "", "tiles of " + std::to_string(tw) + " x " + std::to_string(th) +
                        " px are not supported: a tile layer's cells are square");
