@@ -78,4 +78,23 @@ BOOST_AUTO_TEST_CASE(the_failing_list_names_draws_that_exist) {
   BOOST_TEST(find_family("no-such-family") == nullptr);
 }
 
+// Rows of elastic blocks that auto let pass through each other: the course's
+// pass pushed a row out pair by pair and left pairs overlapping and still
+// approaching (closing through sooner than their sides say), and an impact
+// within a substep sent a body at an unswept neighbour; held on the solver's
+// path, the e = 1 rows lost up to 19 % of their energy. Draws outside the
+// test subset (seeds 1-5), replayed here under auto.
+BOOST_AUTO_TEST_CASE(auto_keeps_the_rows_it_broke_in_order_with_their_energy) {
+  const Family* row = find_family("row");
+  BOOST_TEST_REQUIRE(row != nullptr);
+  Mode automatic;
+  for (const Mode& m : stability_modes())
+    if (m.name == "auto") automatic = m;
+  BOOST_TEST_REQUIRE(automatic.name == "auto");
+  for (const std::uint64_t seed : {10, 14, 23, 29, 36, 39, 50}) {
+    const Outcome o = row->draw(seed).run(automatic);
+    BOOST_TEST(o.pass, "row seed " << seed << ": " << o.figure);
+  }
+}
+
 BOOST_AUTO_TEST_SUITE_END()

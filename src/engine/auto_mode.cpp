@@ -26,12 +26,31 @@ bool AutoMode::plan(const Components& k, std::span<const EntityId> bodies, doubl
   const bool bouncing = g && bouncy(k, bodies);
   solver_path_ = first_ || hold_left_ > 0 || jam_left_ > 0 ||
                  (g && (fast_count_ > 0 || bouncing || seamed(k, bodies, gravity)));
-  sweep_all_ = solver_path_ && jam_left_ == 0 && bouncing && elastic(k, bodies);
   // Many fast bodies without gravity: the solver's path too, on trial (see
   // roll_back).
   trial_ = !solver_path_ && fast_count_ > many_fast;
   solver_path_ = solver_path_ || trial_;
+  // Elastic without gravity (a row, a gas), in worlds where CCD's
+  // re-prediction of each impact against every body stays cheap: the
+  // solver takes a substep's impacts together, which loses energy (an e = 1
+  // row or gas on the solver's path lost up to 19 % of it), so CCD takes
+  // every impact. Held for pressed pairs (bodies in each other: a crowd
+  // spawned so), the solver stays for its projection (sweep_all); on trial
+  // only (many fast bodies), the path is ccd's: the course's pass with
+  // every body swept.
+  const bool elastic_free = solver_path_ && !g && jam_left_ == 0 && bodies.size() <= undo_bodies && elastic(k, bodies);
+  sweep_all_ = solver_path_ && jam_left_ == 0 && ((bouncing && elastic(k, bodies)) || (elastic_free && !trial_));
+  if (trial_ && elastic_free) {
+    solver_path_ = trial_ = false;
+    for (const EntityId e : bodies) fast_count_ += !fast_[e], fast_[e] = 1;
+  }
   trial_ = trial_ && bodies.size() <= undo_bodies;  // beyond, the trial is the solver's path as it is
+  // On the course's path, pairs the last pass left overlapping close through
+  // sooner (a row pushed out pair by pair leaves them so, still approaching).
+  const double bound = overlap_bound_;
+  overlap_bound_ = infinity;  // unknown until the next pass says
+  if (!solver_path_ && bound > 0.0 && std::sqrt(sq1_) + std::sqrt(sq2_) > thinnest_ - bound)
+    mark_closing(k, bodies, h, bound);
   ++(solver_path_ ? stats.solver_substeps : stats.course_substeps);
   return solver_path_;
 }
@@ -122,7 +141,8 @@ void AutoMode::mark_fast(const Components& k, std::span<const EntityId> bodies, 
   }
   // Two bodies that are not fast close at most sqrt(d1) + sqrt(d2), and a
   // pair tunnels only past half its two sides, at least the thinnest.
-  if (closing && std::sqrt(d1) + std::sqrt(d2) > thinnest_) mark_closing(k, bodies, h, d1, d2);
+  sq1_ = d1, sq2_ = d2;
+  if (closing && std::sqrt(d1) + std::sqrt(d2) > thinnest_) mark_closing(k, bodies, h, 0.0);
 }
 
 // Closing speeds: two bodies, each within its reach, may still approach each
@@ -130,30 +150,28 @@ void AutoMode::mark_fast(const Components& k, std::span<const EntityId> bodies, 
 // their reach: twice it), and pass through each other. The bodies that may
 // be in such a pair (their displacement plus the largest other one exceeds
 // their reach) are the candidates; of them, the pairs whose swept boxes meet
-// and whose relative displacement h·|v_c - v_b| exceeds half their thinnest
-// sides are marked fast, both bodies (a sort on x and a sweep, not all pairs).
-// sq1 and sq2: the two largest squared displacements of the bodies not fast.
-void AutoMode::mark_closing(const Components& k, std::span<const EntityId> bodies, double h, double sq1, double sq2) {
+// and that close through (CcdSelection::closes_through) are marked fast, both
+// bodies (a sort on x and a sweep, not all pairs). With overlap_bound > 0,
+// no pair overlaps deeper than it: a pair's own overlap counts, and the
+// candidates' reach is that much shorter.
+void AutoMode::mark_closing(const Components& k, std::span<const EntityId> bodies, double h, double overlap_bound) {
   std::vector<SweptBox>& c = closing_;
   c.clear();
   for (const EntityId e : bodies) {
     if (fast_[e]) continue;
     const Vector v = k.velocity[e], p = k.position[e];
     const double dx = h * v.x, dy = h * v.y, sq = dx * dx + dy * dy;  // as mark_fast, to the bit
-    const double other = std::sqrt(sq == sq1 ? sq2 : sq1);
-    if (std::sqrt(sq) + other <= selection().reach(k, e)) continue;
+    const double other = std::sqrt(sq == sq1_ ? sq2_ : sq1_);
+    if (std::sqrt(sq) + other <= selection().reach(k, e) - overlap_bound) continue;
     c.push_back({std::min(p.x, p.x + dx), std::max(p.x, p.x + dx) + k.box[e].width, std::min(p.y, p.y + dy),
                  std::max(p.y, p.y + dy) + k.box[e].height, e});
   }
   std::sort(c.begin(), c.end(), [](const SweptBox& a, const SweptBox& b) { return a.x0 < b.x0 || (a.x0 == b.x0 && a.e < b.e); });
-  const auto side = [&](EntityId e) { return static_cast<double>(std::min(k.box[e].width, k.box[e].height)); };
   for (std::size_t i = 0; i < c.size(); ++i)
     for (std::size_t j = i + 1; j < c.size() && c[j].x0 < c[i].x1; ++j) {
       if (!(c[j].y0 < c[i].y1 && c[i].y0 < c[j].y1)) continue;
       const EntityId a = c[i].e, b = c[j].e;
-      const Vector d = h * (k.velocity[a] - k.velocity[b]);
-      const double limit = 0.5 * (side(a) + side(b));
-      if (Vector::dot(d, d) <= limit * limit) continue;
+      if (!CcdSelection::closes_through(k, a, b, 0.0, h, overlap_bound > 0.0)) continue;
       fast_count_ += !fast_[a] + !fast_[b];
       fast_[a] = fast_[b] = 1;
     }
@@ -280,6 +298,30 @@ void AutoMode::after_course_pass(const Components& k, std::span<const Contact> c
     if (std::isfinite(k.mass[c.c]) && std::isfinite(k.mass[c.b]))
       pressed_.push_back(Pair{c.c, c.b}.key());
   count_pressed();
+  overlap_bound_ = overlap_after(k, contacts);
+}
+
+// The deepest overlap the pass can have left, px: a pair it resolved
+// overlaps as it is now; any other pair did not overlap when the pass looked
+// at it (or the broad phase would have listed it), and has since come closer
+// by at most the pushes its two bodies took, each at most the sum of its
+// contacts' penetrations.
+double AutoMode::overlap_after(const Components& k, std::span<const Contact> contacts) {
+  push_.resize(k.size(), 0.0);
+  double deepest = 0.0;
+  for (const Contact& c : contacts) {
+    const double depth = Vector::norm(c.penetration);
+    push_[c.c] += depth, push_[c.b] += depth;
+    deepest = std::max(deepest, CcdSelection::overlap_at(k, c.c, c.b, 0.0));
+  }
+  double p1 = 0.0, p2 = 0.0;  // the two largest pushes of two bodies
+  for (const Contact& c : contacts)
+    for (const EntityId e : {c.c, c.b}) {
+      const double p = push_[e];
+      push_[e] = 0.0;  // each body once, and clean for the next pass
+      if (p > p2) (p > p1 ? p2 = p1, p1 = p : p2 = p);
+    }
+  return std::max(deepest, p1 + p2);
 }
 
 // Each pair of finite bodies pressed together this substep, with the number
@@ -315,6 +357,7 @@ void AutoMode::restore(const AutoState& s) {
   for (const AutoState::Run& r : s.pressed) runs_.emplace_back(r.pair.key(), r.substeps);
   std::sort(runs_.begin(), runs_.end());
   started_ = true;
+  overlap_bound_ = infinity;
 }
 
 }  // namespace physics

@@ -31,6 +31,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <utility>
 #include <vector>
@@ -131,7 +132,12 @@ class AutoMode {
 
  private:
   void mark_fast(const Components& k, std::span<const EntityId> bodies, double h, bool closing);
-  void mark_closing(const Components& k, std::span<const EntityId> bodies, double h, double sq1, double sq2);
+  void mark_closing(const Components& k, std::span<const EntityId> bodies, double h, double overlap_bound);
+  double overlap_after(const Components& k, std::span<const Contact> contacts);
+  double sq1_ = 0, sq2_ = 0;  // mark_fast's: the two largest squared displacements of the bodies not fast
+  // The deepest overlap of any pair now, px (after_course_pass), or infinity when unknown.
+  double overlap_bound_ = std::numeric_limits<double>::infinity();
+  std::vector<double> push_;  // overlap_after's scratch, by entity id
   static bool bouncy(const Components& k, std::span<const EntityId> bodies);
   static bool elastic(const Components& k, std::span<const EntityId> bodies);
   bool seamed(const Components& k, std::span<const EntityId> bodies, Vector gravity);

@@ -65,6 +65,21 @@ std::pair<double, double> impact(Components& k, EntityId c, EntityId b, Vector n
 
 }  // namespace
 
+double CcdSelection::overlap_at(const Components& k, EntityId a, EntityId b, double t) {
+  const Vector pa = k.position[a] + t * k.velocity[a], pb = k.position[b] + t * k.velocity[b];
+  const double ox = std::min(pa.x + k.box[a].width, pb.x + k.box[b].width) - std::max(pa.x, pb.x);
+  const double oy = std::min(pa.y + k.box[a].height, pb.y + k.box[b].height) - std::max(pa.y, pb.y);
+  return std::max(0.0, std::min(ox, oy));
+}
+
+bool CcdSelection::closes_through(const Components& k, EntityId a, EntityId b, double t, double span,
+                                  bool overlapped) {
+  const auto side = [&](EntityId e) { return static_cast<double>(std::min(k.box[e].width, k.box[e].height)); };
+  const Vector d = span * (k.velocity[a] - k.velocity[b]);
+  const double limit = std::max(0.0, 0.5 * (side(a) + side(b)) - (overlapped ? overlap_at(k, a, b, t) : 0.0));
+  return Vector::dot(d, d) > limit * limit;
+}
+
 std::optional<Impact> Ccd::time_of_impact(const Components& k, EntityId c, EntityId b, double t0, double t1) {
   const Vector vc = k.velocity[c], vb = k.velocity[b];
   const auto [s, size] = minkowski_difference(k.position[c], k.box[c], k.position[b], k.box[b]);
@@ -124,19 +139,46 @@ class ImpactQueue {
     const bool c_fixed = !std::isfinite(k_.mass[c]), b_fixed = !std::isfinite(k_.mass[b]);
     const bool again_c = swept(c, ev.t), again_b = swept(b, ev.t);
     // A body left unswept still meets the swept ones on its new line (their
-    // impacts with it were predicted on the old one).
-    const auto sweeps = [&](bool again, std::uint32_t j) { return again || (sel_ && sel_->fast[entities_[j]]); };
+    // impacts with it were predicted on the old one), and the unswept ones
+    // it now closes on faster than the pass after Move can separate.
+    // (A fixed body keeps its line: its impacts with unswept bodies are the pass's, as before.)
+    const auto sweeps = [&](bool again, bool fixed, EntityId e, std::uint32_t j) {
+      return again || (sel_ && (sel_->fast[entities_[j]] ||
+                                (!fixed && sel_->closes_through(k_, e, entities_[j], ev.t, h_ - ev.t, true))));
+    };
+    // The boxes swept over the rest of the substep: a pair whose two do not
+    // meet has no impact in it (a cheaper test than time_of_impact's).
+    const SweptBox box_c = swept_box(c, ev.t), box_b = swept_box(b, ev.t);
     for (std::uint32_t j = 0; j < entities_.size(); ++j) {
+      const SweptBox box_j = swept_box(entities_[j], ev.t);
       const bool j_fixed = !std::isfinite(k_.mass[entities_[j]]);
-      if (sweeps(again_c, j) && j != ev.ic && !(c_fixed && j_fixed) && (!with_rules || solvable(k_, c, entities_[j], h_)))
+      if (meet(box_c, box_j) && j != ev.ic && !(c_fixed && j_fixed) && sweeps(again_c, c_fixed, c, j) &&
+          (!with_rules || solvable(k_, c, entities_[j], h_)))
         predict(ev.ic, j, ev.t);
-      if (sweeps(again_b, j) && j != ev.ib && !(sweeps(again_c, ev.ib) && j == ev.ic) && !(b_fixed && j_fixed) &&
-          (!with_rules || solvable(k_, b, entities_[j], h_)))
+      if (meet(box_b, box_j) && j != ev.ib && !(b_fixed && j_fixed) &&
+          !(j == ev.ic && meet(box_c, box_b) && sweeps(again_c, c_fixed, c, ev.ib)) &&
+          sweeps(again_b, b_fixed, b, j) && (!with_rules || solvable(k_, b, entities_[j], h_)))
         predict(ev.ib, j, ev.t);
     }
   }
 
  private:
+  struct SweptBox {
+    double x0, x1, y0, y1;
+  };
+  // e's box over [t, h] on its line, grown by a hair more than rounding so
+  // that a pair it rules out has no impact whatever time_of_impact rounds.
+  SweptBox swept_box(EntityId e, double t) const {
+    const Vector p = k_.position[e], v = k_.velocity[e];
+    const Vector a = p + t * v, z = p + h_ * v;
+    const double w = k_.box[e].width, ht = k_.box[e].height;
+    const double eps = 1e-9 * (1.0 + std::abs(a.x) + std::abs(a.y) + std::abs(z.x) + std::abs(z.y) + w + ht);
+    return {std::min(a.x, z.x) - eps, std::max(a.x, z.x) + w + eps, std::min(a.y, z.y) - eps,
+            std::max(a.y, z.y) + ht + eps};
+  }
+  static bool meet(const SweptBox& a, const SweptBox& b) {
+    return a.x0 <= b.x1 && b.x0 <= a.x1 && a.y0 <= b.y1 && b.y0 <= a.y1;
+  }
   void predict(std::uint32_t ic, std::uint32_t ib, double t0) {
     if (ic > ib) std::swap(ic, ib);
     // A selected body's line holds from its start time on (before it, the

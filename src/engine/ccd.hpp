@@ -52,6 +52,17 @@ struct CcdSelection {
   double reach(const Components& k, EntityId e) const {
     return reach(static_cast<double>(std::min(k.box[e].width, k.box[e].height)), thinnest);
   }
+
+  // px: how deep the boxes of a and b overlap at time t of the substep
+  // (each at position + t·velocity), 0 if they do not.
+  static double overlap_at(const Components& k, EntityId a, EntityId b, double t);
+  // Whether a and b close, over the `span` ms from time t, by more than the
+  // pass after Move can separate: half their two thinnest sides, less their
+  // overlap at t if `overlapped` (past that the pass pushes them out on the
+  // wrong side: they pass through each other). Two bodies each within its
+  // reach may still do so (head on: twice it), and an impact within the
+  // substep can give one of them a new velocity.
+  static bool closes_through(const Components& k, EntityId a, EntityId b, double t, double span, bool overlapped);
 };
 
 struct CcdStats {
