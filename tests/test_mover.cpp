@@ -174,6 +174,36 @@ BOOST_AUTO_TEST_CASE(slides_over_seams_between_blocks) {
   }
 }
 
+// The same over a floor of 200 tiles at 0.05 to 5 px/ms (up to 5 cells a
+// frame), and up a wall of tiles: no stop, no bump, x exact every frame.
+BOOST_AUTO_TEST_CASE(slides_over_tile_seams_at_every_speed) {
+  for (const double run : {0.05, 0.5, 5.0}) {
+    Scene s;
+    s.tiles({0, 400}, {std::string(200, '#'), std::string(200, '#')});
+    Player p(s, {3, 370});
+    p.frame(s.world, 0.0);
+    double x = p.at().x;
+    for (int f = 0; f < 30; ++f) {
+      p.frame(s.world, run);
+      x += run * dt;
+      BOOST_TEST_REQUIRE(!p.last.on_wall);
+      BOOST_TEST_REQUIRE(p.last.on_floor);
+      BOOST_TEST_REQUIRE(std::abs(p.at().x - x) < 1e-9);
+      BOOST_TEST_REQUIRE(p.at().y == 370.0);
+    }
+  }
+  Scene t;
+  t.tiles({100, 0}, std::initializer_list<std::string>{"#", "#", "#", "#", "#", "#", "#", "#", "#", "#", "#", "#"});
+  Player q(t, {80, 0});
+  double vy = 0.0, y = 0.0;
+  for (int f = 0; f < 25; ++f) {
+    q.frame(t.world, 0.2);
+    vy += g * dt, y += vy * dt;
+    BOOST_TEST_REQUIRE(std::abs(q.at().y - y) < 1e-9);
+    BOOST_TEST_REQUIRE(q.at().x == 80.0);
+  }
+}
+
 // Standing on a fixed platform moving right, then down, then up: carried by
 // it, its bottom on the platform's top after every step.
 BOOST_AUTO_TEST_CASE(rides_a_moving_platform) {
