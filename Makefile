@@ -518,9 +518,11 @@ $(WEB)/%: web/%
 
 # The scene files the page offers (and a game's next levels) and the
 # replays, copied beside it, and their list, which the page loads.
-$(WEB)/files.json: $(wildcard scenes/*.json) $(wildcard replays/*.log)
-	@mkdir -p $(WEB)/scenes $(WEB)/replays
-	cp $(filter scenes/%,$^) $(WEB)/scenes/
+$(WEB)/files.json: $(wildcard scenes/*.json) $(wildcard scenes/maps/*.tmj scenes/maps/*.tsj scenes/maps/*.ldtk) \
+                  $(wildcard replays/*.log)
+	@mkdir -p $(WEB)/scenes/maps $(WEB)/replays
+	cp $(filter-out scenes/maps/%,$(filter scenes/%,$^)) $(WEB)/scenes/
+	cp $(filter scenes/maps/%,$^) $(WEB)/scenes/maps/
 	cp $(filter replays/%,$^) $(WEB)/replays/
 	python3 -c 'import sys, json; print(json.dumps(sys.argv[1:]))' $^ > $@
 

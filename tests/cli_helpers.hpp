@@ -65,7 +65,11 @@ struct TempDir {
 
 // The repository's folders, absolute: tests may run elsewhere.
 inline std::filesystem::path repo_root() { return std::filesystem::absolute(__FILE__).parent_path().parent_path(); }
-inline std::string scene_path(const std::string& name) { return (repo_root() / "scenes" / (name + ".json")).string(); }
+// A scene file of scenes/, or else a Tiled map of scenes/maps/ (the platformer's levels).
+inline std::string scene_path(const std::string& name) {
+  const auto file = repo_root() / "scenes" / (name + ".json"), map = repo_root() / "scenes" / "maps" / (name + ".tmj");
+  return (std::filesystem::exists(file) || !std::filesystem::exists(map) ? file : map).string();
+}
 inline std::string replay_path(const std::string& name) { return (repo_root() / "replays" / (name + ".log")).string(); }
 
 inline std::string read(const std::string& path) {

@@ -29,6 +29,15 @@ std::string replay_headless(const std::string& game) {
 
 Testbed level(const std::string& name) { return Testbed({load_scene_file(scene_path(name))}, 0); }
 
+// The first body of the testbed's scene tagged `tag`.
+EntityId first_tagged(const Testbed& tb, const std::string& tag) {
+  const auto roles = tb.roles();
+  for (EntityId e = 0; e < roles.size(); ++e)
+    if (roles[e].tag == tag) return e;
+  BOOST_FAIL("no body tagged " << tag);
+  return 0;
+}
+
 // The same replay through the testbed itself, played to its end.
 Testbed replayed(const std::string& game) {
   Testbed tb = level(game);
@@ -85,8 +94,7 @@ BOOST_AUTO_TEST_SUITE(games)
 
 BOOST_AUTO_TEST_CASE(the_player_runs_and_collects_a_coin_on_contact) {
   Testbed tb = level("platformer");
-  const EntityId coin = 5;  // the first coin, on the ground ahead
-  BOOST_TEST(tb.roles()[coin].tag == "coin");
+  const EntityId coin = first_tagged(tb, "coin");  // on the ground ahead
   play(tb, 10);
   BOOST_TEST(platformer(tb).grounded());
   BOOST_TEST(platformer(tb).coins() == 0);
@@ -125,19 +133,23 @@ BOOST_AUTO_TEST_CASE(the_player_jumps_only_from_the_ground) {
   Testbed tb = level("platformer");
   play(tb, 10);
   const BodyId p = platformer(tb).player();
+  const double y0 = position(p).y;
   play(tb, 1, {{0, press(key::space)}});
   BOOST_TEST(!platformer(tb).grounded());
-  BOOST_TEST(velocity(p).y < -0.6);
+  BOOST_TEST(platformer(tb).player_velocity().y < -0.6);
+  BOOST_TEST(position(p).y < y0);
+  BOOST_TEST(mass(p) == fixed_mass);  // a mover: the level places it
   // A second press in the air changes nothing: the rise goes on slowing down.
   play(tb, 10);
-  const double vy = velocity(p).y;
+  const double vy = platformer(tb).player_velocity().y;
   play(tb, 1, {{0, press(key::up)}});
-  BOOST_TEST(velocity(p).y > vy);
+  BOOST_TEST(platformer(tb).player_velocity().y > vy);
   // Back on the ground it jumps again.
   play(tb, 60);
   BOOST_TEST(platformer(tb).grounded());
+  BOOST_TEST(position(p).y == y0);
   play(tb, 1, {{0, press(key::up)}});
-  BOOST_TEST(velocity(p).y < -0.6);
+  BOOST_TEST(platformer(tb).player_velocity().y < -0.6);
 }
 
 BOOST_AUTO_TEST_CASE(falling_off_the_world_restarts_the_level) {
@@ -158,8 +170,7 @@ BOOST_AUTO_TEST_CASE(falling_off_the_world_restarts_the_level) {
 
 BOOST_AUTO_TEST_CASE(the_moving_platform_turns_at_both_ends) {
   Testbed tb = level("platformer");
-  const EntityId platform = 9;
-  BOOST_TEST(tb.roles()[platform].tag == "platform");
+  const EntityId platform = first_tagged(tb, "platform");
   double lo = 1e9, hi = -1e9;
   for (int t = 0; t < 450; ++t) {
     play(tb, 1);
@@ -277,14 +288,62 @@ BOOST_AUTO_TEST_CASE(enter_after_a_win_loads_the_next_level) {
 // their levels headless, as `build/game --replay replays/X.log --headless`.
 BOOST_AUTO_TEST_CASE(the_committed_platformer_replay_wins_with_every_coin) {
   const std::string out = replay_headless("platformer");
-  BOOST_TEST(has(out, "\nreplay: 13 events over 456 ticks, ended at frame 456\n"), out);
+  BOOST_TEST(has(out, "\nreplay: 13 events over 435 ticks, ended at frame 435\n"), out);
   BOOST_TEST(has(out, "\ngame: won: coins 4/4 "), out);
-  // The same through the testbed itself: won at frame 456, every coin taken.
+  // The same through the testbed itself: won at frame 435, every coin taken.
   const Testbed tb = replayed("platformer");
   BOOST_TEST(tb.outcome() == Level::Outcome::won);
-  BOOST_TEST(tb.world().frame == 456);
+  BOOST_TEST(tb.world().frame == 435);
   BOOST_TEST(platformer(tb).coins() == 4);
   BOOST_TEST(platformer(tb).coins_total() == 4);
+}
+
+// The large level: a Tiled map of 220 x 50 tiles of 16 px (3520 x 800 px, a
+// camera's worth of scrolling), won by its replay with its six coins; the
+// run drops through a one-way trapdoor and rides the moving platform.
+BOOST_AUTO_TEST_CASE(the_committed_replay_of_the_large_level_wins_with_every_coin) {
+  const std::string out = replay_headless("platformer-big");
+  BOOST_TEST(has(out, "\nreplay: 31 events over 955 ticks, ended at frame 955\n"), out);
+  BOOST_TEST(has(out, "\ngame: won: coins 6/6 "), out);
+  const Testbed tb = replayed("platformer-big");
+  BOOST_TEST(tb.outcome() == Level::Outcome::won);
+  BOOST_TEST(platformer(tb).coins() == 6);
+  BOOST_REQUIRE_EQUAL(tb.scene().tiles.size(), 1u);
+  BOOST_TEST(tb.world().tiles.layers()[0].grid().columns == 220);
+  BOOST_TEST(tb.world().tiles.layers()[0].grid().rows == 50);
+  BOOST_TEST(tb.scene().width == 3520.0);
+  const Vec2 at = *platformer(tb).focus();  // what the camera follows: the player, by the flag far right
+  BOOST_TEST(at.x > 3200.0);
+  BOOST_TEST(at.y < 200.0);
+}
+
+// Down + Space on a one-way floor drops through it, on a one-way block and on
+// a one-way tile alike; Space alone jumps from it, and Down + Space on a
+// solid floor jumps too.
+BOOST_AUTO_TEST_CASE(down_and_jump_drop_through_one_way_blocks_and_tiles) {
+  const std::string world = R"({"game": {"kind": "platformer"}, "world": {"gravity": [0, 0.0015], "walls": false,
+    "restitution": 0}, "blocks": [{"pos": [0, 560], "size": [800, 40], "mass": "inf"},
+    {"pos": [100, 368], "size": [24, 32], "mass": 1, "tag": "player"})";
+  const std::string block = world + R"(, {"pos": [50, 400], "size": [200, 16], "mass": "inf", "one_way": "up"}]})";
+  const std::string tiles = world + R"(], "tiles": [{"pos": [48, 400], "cell": 16, "rows": ["==========="]}]})";
+  for (const std::string& text : {block, tiles}) {
+    const auto after = [&](std::multimap<int, InputEvent> keys) {
+      Testbed tb({parse_scene(text, "drop.json")}, 0);
+      play(tb, 5);
+      BOOST_TEST(platformer(tb).grounded());
+      play(tb, 40, keys);
+      return position(platformer(tb).player()).y;
+    };
+    BOOST_TEST(after({{0, press(key::down)}, {1, press(key::space)}}) == 528.0);  // through, down to the floor
+    BOOST_TEST(after({{1, press(key::space)}}) < 368.0);                           // a jump
+    BOOST_TEST(after({}) == 368.0);                                                // standing
+  }
+  Testbed solid({parse_scene(world + "]}", "solid.json")}, 0);
+  play(solid, 60);
+  BOOST_TEST(platformer(solid).grounded());
+  const double y = position(platformer(solid).player()).y;
+  play(solid, 10, {{0, press(key::down)}, {1, press(key::space)}});
+  BOOST_TEST(position(platformer(solid).player()).y < y);
 }
 
 BOOST_AUTO_TEST_CASE(the_committed_targets_replay_wins_level_one_with_two_shots) {

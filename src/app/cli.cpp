@@ -367,7 +367,8 @@ std::string usage() {
     << descriptions()
     << "\nValues may follow the flag or an '=' (--gravity=0,-0.001 for a value starting with '-').\n"
        "\nGames (scene files with a \"game\" key, played in the window; docs/games.md):\n"
-       "  build/game --scene scenes/platformer.json   the platformer: arrows run, Space or Up jumps, R restarts\n"
+       "  build/game --scene scenes/maps/platformer.tmj   the platformer (a Tiled map): arrows run, Space or Up\n"
+       "                                              jumps, Down+Space drops through, R restarts\n"
        "  build/game --scene scenes/targets-1.json    the target game: drag and release to launch, Enter after a\n"
        "                                              win for the next level (targets-2, targets-3)\n"
        "--list-scenes lists every scene: the built-in ones and the files in scenes/.\n";

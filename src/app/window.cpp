@@ -18,7 +18,7 @@ namespace physics {
 
 // input/keys.hpp's key codes are SDL's.
 static_assert(key::escape == SDLK_ESCAPE && key::tab == SDLK_TAB && key::space == SDLK_SPACE &&
-              key::enter == SDLK_RETURN && key::right == SDLK_RIGHT && key::left == SDLK_LEFT && key::up == SDLK_UP &&
+              key::enter == SDLK_RETURN && key::right == SDLK_RIGHT && key::left == SDLK_LEFT && key::down == SDLK_DOWN && key::up == SDLK_UP &&
               'a' == SDLK_a && '1' == SDLK_1 && key::lshift == SDLK_LSHIFT && key::rshift == SDLK_RSHIFT);
 
 namespace {

@@ -4,7 +4,10 @@ namespace physics {
 
 std::vector<Tagged> tagged(WorldId w, std::span<const BlockRole> roles, const std::string& tag) {
   const std::vector<BodyId> all = bodies(w);  // in creation order: the roles' order
-  if (all.size() != roles.size())
+  // The scene's tile layers come after its blocks and have no role.
+  std::size_t n = all.size();
+  while (n > roles.size() && is_tile_layer(all[n - 1])) --n;
+  if (n != roles.size())
     throw SceneError("a game's world has " + std::to_string(all.size()) + " bodies but " +
                      std::to_string(roles.size()) + " roles");
   std::vector<Tagged> out;

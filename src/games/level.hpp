@@ -55,7 +55,8 @@ struct Tagged {
   std::size_t index;
 };
 // The bodies of `w` tagged `tag`, in creation order; `roles` are the scene's,
-// one per body of the freshly made world (SceneError if they do not match).
+// one per body of the freshly made world but its tile layers, which come last
+// and have none (SceneError if they do not match).
 std::vector<Tagged> tagged(WorldId w, std::span<const BlockRole> roles, const std::string& tag);
 std::vector<BodyId> ids(const std::vector<Tagged>& t);
 

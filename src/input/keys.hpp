@@ -7,7 +7,8 @@
 namespace physics::key {
 
 inline constexpr int escape = 27, tab = '\t', space = ' ', enter = '\r';
-inline constexpr int right = (1 << 30) | 79, left = (1 << 30) | 80, up = (1 << 30) | 82;  // SDLK_RIGHT, _LEFT, _UP
+inline constexpr int right = (1 << 30) | 79, left = (1 << 30) | 80, down = (1 << 30) | 81,
+                     up = (1 << 30) | 82;  // SDLK_RIGHT, _LEFT, _DOWN, _UP
 inline constexpr int lshift = (1 << 30) | 225, rshift = (1 << 30) | 229;  // SDLK_LSHIFT, _RSHIFT
 
 }  // namespace physics::key

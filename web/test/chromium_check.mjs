@@ -164,22 +164,22 @@ async function rate(scene) {
   measures[scene] = { fps: +fps.toFixed(1), ms_per_frame: +perFrame.toFixed(2) };
   return fps;
 }
-for (const scene of ['gas', 'scenes/platformer.json', 'scenes/targets-1.json']) {
+for (const scene of ['gas', 'scenes/maps/platformer.tmj', 'scenes/targets-1.json']) {
   const fps = await rate(scene);
   check(fps >= 55, `${scene}: ${fps.toFixed(1)} frames/s (wasm and painting ${measures[scene].ms_per_frame} ms a frame)`);
-  await shot(scene.replace(/.*\//, '').replace('.json', ''));
+  await shot(scene.replace(/.*\//, '').replace(/\.\w+$/, ''));
 }
 
 // 7. The games: keys held move the player; each committed replay ends in
 // the page with the native final state.
-await open('scenes/platformer.json');
+await open('scenes/maps/platformer.tmj');
 await page.keyboard.down('ArrowRight');
 await wait(700);
 await page.keyboard.up('ArrowRight');
 await press('Space');
 const moved = await state();
 // The same level without input, to the same frame: another state.
-const idle = await page.evaluate((f) => window.physics.run('web_headless', 'scenes/platformer.json', f), moved.frame);
+const idle = await page.evaluate((f) => window.physics.run('web_headless', 'scenes/maps/platformer.tmj', f), moved.frame);
 const idleHash = idle.match(/state (\S+)/)[1];
 check(moved.game && moved.frame > 20 && moved.hash !== idleHash,
   `the platformer answers the keys: frame ${moved.frame}, state ${moved.hash}, without them ${idleHash}`);
