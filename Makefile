@@ -224,18 +224,25 @@ soak: deps
 $(BUILD)/soak: $(BUILD)/obj/tools/soak.o $(LIBS)
 	$(CXX) $(CXXFLAGS) -o $@ $^ $(LDFLAGS)
 
-# Coverage-guided fuzzing of the scene loader (libFuzzer, clang from Debian),
-# seeded with scenes/ and the regression inputs. `make fuzz SECONDS=600`.
+# Coverage-guided fuzzing (libFuzzer, clang from Debian) of the scene loader,
+# seeded with scenes/ and the regression inputs, then of the map loaders
+# (Tiled, LDtk), seeded with scenes/maps/ and tests/fuzz_regressions/maps/;
+# SECONDS each. `make fuzz SECONDS=600`; FUZZERS=map for the maps alone.
 FUZZ_SECONDS := $(if $(filter command line,$(origin SECONDS)),$(SECONDS),60)
 FUZZ_DIR     := build/fuzz
+FUZZERS      ?= scene map
+FUZZ_SEEDS_scene := scenes/*.json tests/fuzz_regressions/*.json
+FUZZ_SEEDS_map   := scenes/maps/*.tmj scenes/maps/*.ldtk tests/fuzz_regressions/maps/*
 fuzz: deps
 	@$(MAKE) --no-print-directory PACKAGES="clang libclang-rt-14-dev nlohmann-json3-dev" deps
-	@mkdir -p $(FUZZ_DIR)/corpus
-	cp scenes/*.json tests/fuzz_regressions/* $(FUZZ_DIR)/corpus/ 2>/dev/null || true
-	clang++ -std=c++20 -O1 -g -ffp-contract=off -Iinclude -Isrc -fsanitize=fuzzer,address,undefined \
-	  -fno-sanitize-recover=all $(CORE_SRC) $(SCENE_SRC) fuzz/scene_fuzzer.cpp -o $(FUZZ_DIR)/scene_fuzzer
-	./$(FUZZ_DIR)/scene_fuzzer -max_total_time=$(FUZZ_SECONDS) -max_len=8192 -timeout=10 -rss_limit_mb=4096 \
-	  -artifact_prefix=$(FUZZ_DIR)/ -print_final_stats=1 $(FUZZ_DIR)/corpus
+	set -e; for f in $(FUZZERS); do \
+	  mkdir -p $(FUZZ_DIR)/corpus-$$f; \
+	  cp $$(if [ $$f = map ]; then echo $(FUZZ_SEEDS_map); else echo $(FUZZ_SEEDS_scene); fi) $(FUZZ_DIR)/corpus-$$f/; \
+	  clang++ -std=c++20 -O1 -g -ffp-contract=off -Iinclude -Isrc -fsanitize=fuzzer,address,undefined \
+	    -fno-sanitize-recover=all $(CORE_SRC) $(SCENE_SRC) fuzz/$${f}_fuzzer.cpp -o $(FUZZ_DIR)/$${f}_fuzzer; \
+	  ./$(FUZZ_DIR)/$${f}_fuzzer -max_total_time=$(FUZZ_SECONDS) -max_len=8192 -timeout=10 -rss_limit_mb=4096 \
+	    -artifact_prefix=$(FUZZ_DIR)/$$f- -print_final_stats=1 $(FUZZ_DIR)/corpus-$$f; \
+	done
 
 # ---- performance (bench/RESULTS.md) ----
 # Our engine, Box2D 2.4.1 and Chipmunk 7.0.3 (Debian's) on the same scenes, in

@@ -23,8 +23,17 @@ struct Body {
   bool fixed = false;     // walls, floor: infinite mass, never moves
 };
 
+// A tile map, its top-left corner at (0, height) (y up): columns x rows
+// cells of `cell` m, row by row from the top, one byte a cell: 0 empty, 1 solid.
+struct TileMap {
+  double cell = 1.0;
+  int columns = 0, rows = 0;
+  std::vector<std::uint8_t> cells;
+  bool solid(int c, int r) const { return cells[static_cast<std::size_t>(r) * static_cast<std::size_t>(columns) + static_cast<std::size_t>(c)] != 0; }
+};
+
 struct Scene {
-  std::string name;          // gas, rain, pyramid, pyramid_friction, many_pyramids
+  std::string name;          // gas, rain, pyramid, pyramid_friction, many_pyramids, tiles_SIDE
   double width = 0;          // container interior [0, width] x [0, height], m
   double height = 0;
   double gravity = 0;        // m/s², pointing down (-y)
@@ -35,6 +44,7 @@ struct Scene {
   double time_scale = 1.0;   // steps and warm-up are the harness's times this (rain_phase)
   std::vector<Body> bodies;  // fixed bodies (walls, shelves) first
   std::vector<std::size_t> tops;  // pyramids' top blocks (indices in bodies): the harness reports how far they move
+  TileMap map;               // tiles_SIDE: ours makes it a tile layer, the peers its map_boxes (not in bodies)
   std::size_t dynamic_count() const;
 };
 
@@ -53,6 +63,19 @@ Scene make_pyramid_friction(std::size_t base = 100);
 // CreateManyPyramids): rows x columns pyramids of base `base` on shelves,
 // 400 pyramids of 55 blocks, 22 000 in all; fixed rotation, e = 0.
 Scene make_many_pyramids(std::size_t rows = 20, std::size_t columns = 20, std::size_t base = 10);
+// tiles_SIDE: a map of side x side cells of 1 m (side a multiple of 20),
+// rooms of 20 x 20 cells walled by solid cells (18 x 18 inside, a ledge in
+// each), and 10 000 unit squares falling under 10 m/s², e = 0.5, into the
+// 100 rooms of the top-left corner: the same bodies in the same rooms on
+// every map, which only grows around them.
+Scene make_tiles(int side);
+// The map's solid cells as fixed boxes, for the engines without tile layers:
+// each row's runs of solid cells, a run continued by the same run on the rows
+// below it as one box (what a game on those engines builds).
+std::vector<Body> map_boxes(const Scene& s);
+// Bytes of heap in use (glibc's mallinfo2): an adapter's map is measured as
+// the growth across building it.
+std::size_t heap_bytes();
 
 // One engine running one scene. Bodies keep the scene's order.
 class Engine {
@@ -62,6 +85,9 @@ class Engine {
   // Centre and velocity of every body, in the scene's units and order
   // (fixed ones included). out is resized to the scene's body count.
   virtual void read(std::vector<Body>& out) const = 0;
+  // The heap the scene's map took when the adapter built it (ours: the tile
+  // layer; the peers: its static boxes), MB (2^20 bytes); 0 without a map.
+  double map_mb = 0;
 };
 
 // Each adapter sets every body's mass to 1 (fixed: static), the scene's friction (0 but in pyramid_friction),

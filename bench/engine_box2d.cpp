@@ -10,7 +10,9 @@
 // - restitution e on every fixture (Box2D mixes max(a, b), so each pair gets
 //   e); restitutionThreshold left at its default 1 m/s, except for e = 1 (the
 //   gas), where it is 0 so slow collisions stay elastic as the scene says;
-// - world.Step(dt, 8, 3): the testbed's velocity/position iterations.
+// - world.Step(dt, 8, 3): the testbed's velocity/position iterations;
+// - a tile map (tiles_*): its map_boxes as fixtures of one static body, made
+//   after the scene's bodies.
 #include <box2d/box2d.h>
 
 #include "bench.hpp"
@@ -46,6 +48,26 @@ class Box2dEngine final : public Engine {
       if (s.restitution == 1.0) fix.restitutionThreshold = 0.0f;
       body->CreateFixture(&fix);
       bodies_.push_back(body);
+    }
+    if (!s.map.cells.empty()) {
+      const std::size_t before = heap_bytes();
+      add_map(s);
+      map_mb = static_cast<double>(heap_bytes() - before) / (1024.0 * 1024.0);
+    }
+  }
+
+  void add_map(const Scene& s) {
+    b2BodyDef def;  // static
+    b2Body* body = world_.CreateBody(&def);
+    for (const Body& b : map_boxes(s)) {
+      b2PolygonShape box;
+      box.SetAsBox(static_cast<float>(b.hx), static_cast<float>(b.hy),
+                   b2Vec2(static_cast<float>(b.cx), static_cast<float>(b.cy)), 0.0f);
+      b2FixtureDef fix;
+      fix.shape = &box;
+      fix.friction = static_cast<float>(s.friction);
+      fix.restitution = static_cast<float>(s.restitution);
+      body->CreateFixture(&fix);
     }
   }
 

@@ -15,7 +15,9 @@
 // - boxes: cpBoxShapeNew(body, 2 hx, 2 hy, 0), friction 0;
 // - elasticity sqrt(e) on every shape: Chipmunk multiplies the two shapes'
 //   elasticities, so each pair gets e;
-// - defaults kept: 10 iterations, collision slop and bias, bbtree index.
+// - defaults kept: 10 iterations, collision slop and bias, bbtree index;
+// - a tile map (tiles_*): its map_boxes as box shapes of one static body,
+//   made after the scene's bodies.
 #include <chipmunk/chipmunk.h>
 
 #include <cmath>
@@ -57,6 +59,23 @@ class ChipmunkEngine final : public Engine {
       cpShapeSetElasticity(shape, elasticity);
       cpSpaceAddShape(space_.get(), shape);  // shapes of static bodies go to the static index
     }
+    if (!s.map.cells.empty()) {
+      const std::size_t before = heap_bytes();
+      add_map(s, elasticity);
+      map_mb = static_cast<double>(heap_bytes() - before) / (1024.0 * 1024.0);
+    }
+  }
+
+  void add_map(const Scene& s, cpFloat elasticity) {
+    map_body_.reset(cpBodyNewStatic());
+    cpSpaceAddBody(space_.get(), map_body_.get());
+    for (const Body& b : map_boxes(s)) {
+      const cpBB bb = cpBBNew(b.cx - b.hx, b.cy - b.hy, b.cx + b.hx, b.cy + b.hy);
+      cpShape* shape = shapes_.emplace_back(cpBoxShapeNew2(map_body_.get(), bb, 0.0)).get();
+      cpShapeSetFriction(shape, std::sqrt(s.friction));
+      cpShapeSetElasticity(shape, elasticity);
+      cpSpaceAddShape(space_.get(), shape);
+    }
   }
 
   void step() override { cpSpaceStep(space_.get(), dt_); }
@@ -78,6 +97,7 @@ class ChipmunkEngine final : public Engine {
   // still wakes its bodies, but frees neither bodies nor shapes), then the
   // shapes, then the bodies they are attached to.
   std::vector<std::unique_ptr<cpBody, FreeBody>> bodies_;
+  std::unique_ptr<cpBody, FreeBody> map_body_;  // the map's shapes' (not a scene body)
   std::vector<std::unique_ptr<cpShape, FreeShape>> shapes_;
   std::unique_ptr<cpSpace, FreeSpace> space_;
   cpFloat dt_;

@@ -18,6 +18,11 @@ constexpr double px_per_m = 10.0;
 class Ours final : public Engine {
  public:
   Ours(const Scene& s, bool course) : height_(s.height), world_(physics::create_world(def(s, course))) {
+    if (!s.map.cells.empty()) {  // first, in an empty world: what the heap grows by is the layer's
+      const std::size_t before = heap_bytes();
+      add_map(s);
+      map_mb = static_cast<double>(heap_bytes() - before) / (1024.0 * 1024.0);
+    }
     for (const Body& b : s.bodies) {
       physics::BodyDef d = physics::default_body_def();
       d.position = {(b.cx - b.hx) * px_per_m, (s.height - (b.cy + b.hy)) * px_per_m};
@@ -35,6 +40,19 @@ class Ours final : public Engine {
   Ours& operator=(const Ours&) = delete;
 
   void step() override { physics::step(world_); }
+
+  // The map as one tile layer (its definition freed before the heap is measured again).
+  void add_map(const Scene& s) {
+    physics::TileLayerDef d;
+    d.position = {0.0, (s.height - s.map.rows * s.map.cell) * px_per_m};
+    d.cell_size = static_cast<int>(std::lround(s.map.cell * px_per_m));
+    d.columns = s.map.columns, d.rows = s.map.rows;
+    d.cells.reserve(s.map.cells.size());
+    for (const std::uint8_t c : s.map.cells) d.cells.push_back(c ? physics::TileKind::solid : physics::TileKind::empty);
+    d.restitution = s.restitution;
+    d.friction = s.friction;
+    physics::create_tile_layer(world_, d);
+  }
 
   void read(std::vector<Body>& out) const override {
     out.resize(ids_.size());

@@ -40,8 +40,10 @@ using bench::Body;
 using bench::Scene;
 
 struct Options {
-  std::vector<std::string> scenes{"gas", "rain", "pyramid", "pyramid_friction", "many_pyramids"};
+  std::vector<std::string> scenes{"gas", "rain", "pyramid", "pyramid_friction", "many_pyramids", "tiles"};
   std::vector<std::size_t> sizes{1000, 10000, 100000};
+  // The maps' sides of the tiles scene (cells): the same 10 000 bodies on each.
+  std::vector<std::size_t> map_sides{200, 1000, 2000};
   // Gas sizes run by ours alone: the peers' 100 000-body runs already take
   // most of the budget, ten times as many bodies would only be cut short.
   std::vector<std::size_t> ours_only_gas{1000000};
@@ -75,6 +77,7 @@ struct Result {
   double median_ms = 0, p95_ms = 0, build_ms = 0;
   int steps_run = 0;  // fewer than asked when the run hit the time budget
   double peak_mb = 0; // the run's process: peak resident memory
+  double map_mb = 0;  // the heap its tile map took (Engine::map_mb)
   Quality q;
 };
 
@@ -93,16 +96,35 @@ double depth(const Body& a, const Body& b) {
   return ox > 0 && oy > 0 ? std::min(ox, oy) : 0.0;
 }
 
+// The fixed bodies of the final state, and the scene's map as its boxes
+// (map_boxes), those that meet the region the dynamic bodies span.
+std::vector<Body> walls_of(const Scene& s, const std::vector<Body>& end) {
+  std::vector<Body> walls;
+  double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+  for (const Body& b : end) {
+    if (b.fixed) walls.push_back(b);
+    else if (std::isfinite(b.cx) && std::isfinite(b.cy))
+      x0 = std::min(x0, b.cx - b.hx), y0 = std::min(y0, b.cy - b.hy), x1 = std::max(x1, b.cx + b.hx), y1 = std::max(y1, b.cy + b.hy);
+  }
+  if (s.map.cells.empty() || x0 > x1) return walls;
+  const Body span{(x0 + x1) / 2, (y0 + y1) / 2, (x1 - x0) / 2, (y1 - y0) / 2};  // the dynamic bodies' bounding box
+  for (const Body& b : bench::map_boxes(s))
+    if (std::abs(b.cx - span.cx) < b.hx + span.hx && std::abs(b.cy - span.cy) < b.hy + span.hy) walls.push_back(b);
+  return walls;
+}
+
 Quality measure(const Scene& s, const std::vector<Body>& end) {
   Quality q;
-  std::vector<std::size_t> dyn, fixed;
-  for (std::size_t i = 0; i < end.size(); ++i) (end[i].fixed ? fixed : dyn).push_back(i);
+  std::vector<std::size_t> dyn;
+  for (std::size_t i = 0; i < end.size(); ++i)
+    if (!end[i].fixed) dyn.push_back(i);
+  const std::vector<Body> walls = walls_of(s, end);
   for (const std::size_t i : dyn) {
     const Body& b = end[i];
     const bool inside = std::isfinite(b.cx) && std::isfinite(b.cy) && b.cx >= 0 && b.cx <= s.width && b.cy >= 0 &&
                         b.cy <= s.height;
     if (!inside) ++q.escaped;
-    for (const std::size_t f : fixed) q.max_overlap = std::max(q.max_overlap, depth(b, end[f]));
+    for (const Body& w : walls) q.max_overlap = std::max(q.max_overlap, depth(b, w));
   }
   // Every pair of dynamic boxes, by a sweep on x (boxes are at most a few
   // metres wide, so each meets only its neighbours).
@@ -147,6 +169,7 @@ Scene make_rain_phase(std::size_t n) {
 }
 
 Scene make_scene(const std::string& name, std::size_t n) {
+  if (name.starts_with("tiles_")) return bench::make_tiles(std::stoi(name.substr(6)));
   if (name == "gas") return bench::make_gas(n);
   if (name == "rain") return bench::make_rain(n);
   if (name == "rain_phase") return make_rain_phase(n);
@@ -154,7 +177,7 @@ Scene make_scene(const std::string& name, std::size_t n) {
   if (name == "pyramid_friction") return bench::make_pyramid_friction();
   if (name == "many_pyramids") return bench::make_many_pyramids();
   throw std::invalid_argument("unknown scene '" + name +
-                              "' (gas, rain, rain_phase, pyramid, pyramid_friction, many_pyramids)");
+                              "' (gas, rain, rain_phase, pyramid, pyramid_friction, many_pyramids, tiles_SIDE)");
 }
 
 double largest_top_move(const Scene& s, const std::vector<Body>& end) {
@@ -177,6 +200,7 @@ Result run(const std::string& engine, const Scene& s, const Options& o) {
   const auto t0 = clock::now();
   auto e = engine_or_throw(engine, s);
   r.build_ms = std::chrono::duration<double, std::milli>(clock::now() - t0).count();
+  r.map_mb = e->map_mb;
   // Every step's time; the first `warmup` are left out of the statistics
   // unless the budget stopped the run before it got past them.
   const int steps = static_cast<int>(std::lround(o.steps * s.time_scale));
@@ -232,9 +256,9 @@ Result run_isolated(const std::string& self, const std::string& engine, const Sc
   bool got = false;
   char line[512];
   while (std::fgets(line, sizeof line, pipe.get()))
-    got = got || std::sscanf(line, "RESULT %lf %lf %lf %d %zu %lf %lf %lf %lf", &r.median_ms, &r.p95_ms,
+    got = got || std::sscanf(line, "RESULT %lf %lf %lf %d %zu %lf %lf %lf %lf %lf", &r.median_ms, &r.p95_ms,
                              &r.build_ms, &r.steps_run, &r.q.escaped, &r.q.max_overlap, &r.q.energy_drift,
-                             &r.q.top_moved, &r.peak_mb) == 9;
+                             &r.q.top_moved, &r.peak_mb, &r.map_mb) == 10;
   if (pclose(pipe.release()) != 0 || !got) throw std::runtime_error("the run failed: " + cmd.str());
   return r;
 }
@@ -247,8 +271,8 @@ int child_run(const Options& o) {
   rusage use{};
   getrusage(RUSAGE_SELF, &use);
   const double peak_mb = static_cast<double>(use.ru_maxrss) / 1024.0;  // Linux: kB
-  std::printf("RESULT %.17g %.17g %.17g %d %zu %.17g %.17g %.17g %.17g\n", r.median_ms, r.p95_ms, r.build_ms,
-              r.steps_run, r.q.escaped, r.q.max_overlap, r.q.energy_drift, r.q.top_moved, peak_mb);
+  std::printf("RESULT %.17g %.17g %.17g %d %zu %.17g %.17g %.17g %.17g %.17g\n", r.median_ms, r.p95_ms, r.build_ms,
+              r.steps_run, r.q.escaped, r.q.max_overlap, r.q.energy_drift, r.q.top_moved, peak_mb, r.map_mb);
   return 0;
 }
 
@@ -267,7 +291,8 @@ std::string machine_line() {
 
 
 const char* usage =
-    "usage: bench [--scenes gas,rain,pyramid,pyramid_friction,many_pyramids] [--sizes 1000,10000,100000]\n"
+    "usage: bench [--scenes gas,rain,pyramid,pyramid_friction,many_pyramids,tiles] [--sizes 1000,10000,100000]\n"
+    "             [--map-sides 200,1000,2000 (the tiles scene's maps, cells a side)]\n"
     "             [--ours-only-gas 1000000 (gas sizes for ours alone; 0: none)] [--engines ours,box2d,chipmunk]\n"
     "             [--peers build/bench-peers (adds box2d3,chipmunk-release)] [--peer-sources TEXT]\n"
     "             [--steps 600] [--warmup 60] [--out bench/RESULTS.md]\n"
@@ -288,6 +313,7 @@ bool set_option(Options& o, const std::string& a, const std::string& v) {
   if (a == "--scenes") o.scenes = split(v);
   else if (a == "--engines") o.engines = split(v), o.engines_given = true;
   else if (a == "--sizes") o.sizes = sizes_of(v);
+  else if (a == "--map-sides") o.map_sides = sizes_of(v);
   else if (a == "--ours-only-gas") o.ours_only_gas = sizes_of(v);
   else if (a == "--peers") o.peers = v;
   else if (a == "--peer-sources") o.peer_sources = v;
@@ -414,6 +440,34 @@ class Report {
 
   std::string table() const { return table_.str(); }
 
+  // The tiles scene: per engine and map, the map's heap and the step's cost
+  // over the engine's own on the first (smallest) map.
+  std::string tiles() const {
+    std::ostringstream md;
+    std::map<std::string, double> first;  // by engine: its median on the first map
+    for (const Result& r : results_) {
+      if (!r.scene.starts_with("tiles_")) continue;
+      const double base = first.try_emplace(r.engine, r.median_ms).first->second;
+      const int side = std::stoi(r.scene.substr(6));
+      const std::size_t boxes = bench::map_boxes(bench::make_tiles(side)).size();
+      md << "| " << r.engine << " | " << side << " x " << side << " | " << (r.engine.starts_with("ours") ? "tile layer" : std::to_string(boxes) + " boxes")
+         << " | " << fmt("%.2f", r.map_mb) << " | " << fmt("%.3f", r.median_ms) << " | " << fmt("%.3f", r.p95_ms)
+         << " | " << fmt("%.2f", r.median_ms / base) << " | " << fmt("%.0f", r.peak_mb) << " |\n";
+      std::printf("%s %s: map %.2f MB, %.3f ms/step, x%.2f the first map's\n", r.engine.c_str(), r.scene.c_str(), r.map_mb,
+                  r.median_ms, r.median_ms / base);
+    }
+    if (md.str().empty()) return "";
+    return "## Tile maps\n\nThe `tiles_SIDE` scenes: the same 10 000 bodies in the same 100 rooms on maps of growing side "
+           "(bench/scenes.cpp, make_tiles). *map MB* is the heap the map took when the adapter built it (glibc's "
+           "mallinfo2 before and after): ours a tile layer (a byte a cell, its strips and their index), the peers "
+           "the map's solid cells as static boxes (each row's runs merged down the rows, bench/scenes.cpp, "
+           "map_boxes). *÷ first map* is the engine's median over its own on the first map: 1 when a step's cost "
+           "does not grow with the map.\n\n"
+           "| engine | map (cells) | map as | map MB | median ms/step | p95 ms/step | ÷ first map | peak MB |\n"
+           "|---|---|---|---:|---:|---:|---:|---:|\n" +
+           md.str() + "\n";
+  }
+
   // Growth of our cost between consecutive sizes from 10 000 up: exponent of t ~ N^k.
   std::string growth() const {
     std::ostringstream md;
@@ -462,6 +516,10 @@ void run_scene(const std::string& self, const Scene& s, bool alone, const Option
 
 void run_all(const std::string& self, const Options& o, Report& report) {
   for (const std::string& name : o.scenes) {
+    if (name == "tiles") {
+      for (const std::size_t side : o.map_sides) run_scene(self, make_scene("tiles_" + std::to_string(side), 0), false, o, report);
+      continue;
+    }
     const std::vector<std::size_t> sizes = sized(name) ? o.sizes : std::vector<std::size_t>{0};
     for (const std::size_t n : sizes) run_scene(self, make_scene(name, n), false, o, report);
     if (name == "gas")
@@ -506,6 +564,11 @@ void write_markdown(const Options& o, const std::string& command, const std::str
         "the square root of its container's side over the 10 000-body one's (the time its grid takes to fall): "
         "each size is timed over the same share of its fall, landing and settling, where the rain's steps 61-600 "
         "catch a 10 000-body pile settled and a 100 000-body one landing (bench/main.cpp, make_rain_phase). ";
+  md << "`tiles_SIDE`: a map of SIDE x SIDE cells of 1 m, rooms of 20 x 20 cells walled by solid cells (two thick "
+        "between rooms, 18 x 18 inside, a ledge of 8 cells in each), 10 000 squares in the 100 rooms of its "
+        "top-left corner fall under 10 m/s², e = 0.5, our stable solver: the same bodies on every map (section "
+        "\"Tile maps\"); ours gets the map as one tile layer, the peers (no tile layers) as static boxes, each row's "
+        "runs of solid cells merged down the rows into one box. ";
   if (!o.ours_only_gas.empty())
     md << "`gas` at " << o.ours_only_gas.front()
        << " bodies is run by ours alone: the peers' 100 000-body runs already take a large part of the budget, "
@@ -517,7 +580,7 @@ void write_markdown(const Options& o, const std::string& command, const std::str
         "largest displacement of a pyramid's top block over the run; *peak MB* is the run's process's peak "
         "resident memory (the scene's description included).\n\n"
      << report.table() << "\n"
-     << report.growth() << broadphase;
+     << report.growth() << report.tiles() << broadphase;
 }
 
 }  // namespace

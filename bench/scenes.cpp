@@ -1,5 +1,8 @@
 #include <algorithm>
 #include <cmath>
+#include <malloc.h>
+#include <map>
+#include <stdexcept>
 
 #include "bench.hpp"
 
@@ -149,6 +152,74 @@ Scene make_many_pyramids(std::size_t rows, std::size_t columns, std::size_t base
     for (std::size_t c = 0; c < columns; ++c)
       add_small_pyramid(s, base, margin + 1.0 + static_cast<double>(c) * pitch, static_cast<double>(r) * pitch);
   return s;
+}
+
+Scene make_tiles(int side) {
+  constexpr int room = 20, rooms_used = 10;  // 10 x 10 rooms of 100 bodies
+  if (side < room * rooms_used || side % room != 0)
+    throw std::invalid_argument("tiles_" + std::to_string(side) + ": the map's side must be a multiple of 20, at least 200");
+  Scene s;
+  s.name = "tiles_" + std::to_string(side);
+  s.width = s.height = side;
+  s.gravity = 10.0;
+  s.restitution = 0.5;
+  s.resting = true;
+  TileMap& m = s.map;
+  m.columns = m.rows = side;
+  m.cells.assign(static_cast<std::size_t>(side) * static_cast<std::size_t>(side), 0);
+  // Walls two cells thick between rooms (one at the map's border), so that
+  // every room is the same 18 x 18 cells inside; a ledge of 8 cells in each.
+  for (int r = 0; r < side; ++r)
+    for (int c = 0; c < side; ++c) {
+      const int rr = r % room, cc = c % room;
+      const bool wall = rr == 0 || rr == room - 1 || cc == 0 || cc == room - 1;
+      const bool ledge = rr == 12 && cc >= 6 && cc < 14;
+      m.cells[static_cast<std::size_t>(r) * static_cast<std::size_t>(side) + static_cast<std::size_t>(c)] = wall || ledge;
+    }
+  // 10 rows of 10 squares in the top of each room, above its ledge (the
+  // lowest square's bottom 0.5 m over it), odd rows shifted by 0.3 m.
+  for (int R = 0; R < rooms_used; ++R)
+    for (int C = 0; C < rooms_used; ++C) {
+      const double left = room * C + 1.0, top = s.height - (room * R + 1.0);
+      for (int i = 0; i < 10; ++i)
+        for (int j = 0; j < 10; ++j)
+          s.bodies.push_back({left + 0.5 + 1.7 * j + (i % 2 ? 0.3 : 0.0), top - 0.55 - 1.05 * i, 0.5, 0.5, 0, 0, false});
+    }
+  return s;
+}
+
+std::vector<Body> map_boxes(const Scene& s) {
+  const TileMap& m = s.map;
+  std::vector<Body> out;
+  // Rows [r0, r1) of the run [c0, c1), as a fixed box in the scene's units.
+  const auto box = [&](int c0, int c1, int r0, int r1) {
+    const double hx = (c1 - c0) * m.cell / 2, hy = (r1 - r0) * m.cell / 2;
+    out.push_back({c0 * m.cell + hx, s.height - r0 * m.cell - hy, hx, hy, 0, 0, true});
+  };
+  std::map<std::pair<int, int>, int> open;  // the runs of the row above, by [c0, c1): their first row
+  for (int r = 0; r <= m.rows; ++r) {
+    std::map<std::pair<int, int>, int> next;
+    for (int c = 0; r < m.rows && c < m.columns;) {
+      if (!m.solid(c, r)) {
+        ++c;
+        continue;
+      }
+      int e = c;
+      while (e < m.columns && m.solid(e, r)) ++e;
+      const auto it = open.find({c, e});
+      next[{c, e}] = it == open.end() ? r : it->second;
+      if (it != open.end()) open.erase(it);
+      c = e;
+    }
+    for (const auto& [run, r0] : open) box(run.first, run.second, r0, r);
+    open = std::move(next);
+  }
+  return out;
+}
+
+std::size_t heap_bytes() {
+  const struct mallinfo2 mi = mallinfo2();
+  return mi.uordblks + mi.hblkhd;  // small blocks in use, and the blocks mapped on their own
 }
 
 }  // namespace bench

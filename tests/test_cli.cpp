@@ -141,6 +141,18 @@ BOOST_AUTO_TEST_CASE(list_scenes_names_every_builtin_and_every_scene_file) {
     BOOST_TEST(has(line, "[") == !s.game.kind.empty(), line);
   }
   BOOST_TEST(files >= 15u);
+  // Then every map of scenes/maps/, a Tiled or LDtk file, as --scene reads it.
+  std::size_t maps = 0;
+  for (const auto& e : fs::directory_iterator(fs::path(scene_file("x")).parent_path() / "maps")) {
+    if (e.path().extension() != ".tmj" && e.path().extension() != ".ldtk") continue;
+    ++maps;
+    const SceneSpec s = read_scene_file(e.path().string());
+    const std::string line = listed(r.out, "scenes/maps/" + e.path().filename().string());
+    BOOST_TEST(!s.description.empty(), e.path().filename());
+    BOOST_TEST(has(line, s.description), e.path().filename() << ": " << line);
+  }
+  BOOST_TEST(maps >= 2u);
+  BOOST_TEST(!has(r.out, "props.tsj"));  // a tileset is not a scene
   BOOST_TEST(has(listed(r.out, "scenes/targets-2.json"), "[targets] the target game, level 2"));
 }
 
@@ -597,12 +609,23 @@ BOOST_AUTO_TEST_CASE(list_scenes_reads_the_scenes_folder_where_it_runs) {
     {"pos": [100, 500], "size": [30, 30], "mass": "inf", "tag": "sling"},
     {"pos": [600, 500], "size": [20, 20], "mass": 1, "tag": "target"}]})");
   dir.file("scenes/broken.json", "{\"blocks\": [");
+  fs::create_directories(dir.path / "scenes/maps");
+  dir.file("scenes/maps/room.tmj", R"({"orientation": "orthogonal", "width": 4, "height": 3, "tilewidth": 32,
+    "tileheight": 32, "properties": [{"name": "description", "type": "string", "value": "my map"},
+                                     {"name": "walls", "type": "bool", "value": false}],
+    "layers": [{"type": "tilelayer", "width": 4, "height": 3, "data": [0,0,0,0, 0,0,0,0, 1,1,1,1]}],
+    "tilesets": [{"firstgid": 1, "tilewidth": 32, "tileheight": 32, "tilecount": 1}]})");
+  dir.file("scenes/maps/broken.ldtk", R"({"levels": []})");
+  dir.file("scenes/maps/notes.txt", "not a map");
   const Ran r = program(dir, no_display, {"--list-scenes"});
   BOOST_TEST(r.code == 0, r.err);
   BOOST_TEST(has(r.out, "scene files in scenes/"), r.out);
   BOOST_TEST(has(listed(r.out, "scenes/mine.json"), "my own scene"), r.out);
   BOOST_TEST(has(listed(r.out, "scenes/level.json"), "[targets] my level"), r.out);
   BOOST_TEST(has(listed(r.out, "scenes/broken.json"), "(does not read: "), r.out);
+  BOOST_TEST(has(listed(r.out, "scenes/maps/room.tmj"), "my map"), r.out);
+  BOOST_TEST(has(listed(r.out, "scenes/maps/broken.ldtk"), "(does not read: scenes/maps/broken.ldtk: the project has no level)"), r.out);
+  BOOST_TEST(!has(r.out, "notes.txt"), r.out);
   BOOST_TEST(!has(r.out, "platformer"));  // this folder's files, not the project's
 }
 

@@ -1,15 +1,51 @@
-// Inputs the scene-loader fuzzer (fuzz/scene_fuzzer.cpp) found or that guard
-// its limits: tests/fuzz_regressions/bad-*.json must be refused with a
-// SceneError, ok-*.json must load and step. Nothing may crash.
+// Inputs the fuzzers (fuzz/scene_fuzzer.cpp, fuzz/map_fuzzer.cpp) found or
+// that guard their limits: tests/fuzz_regressions/bad-*.json must be refused
+// with a SceneError, ok-*.json must load and step; the same for the maps of
+// tests/fuzz_regressions/maps/ (.tmj, .ldtk), whose errors are one line
+// naming the file. And the sample maps, truncated and with hostile values,
+// as the map fuzzer mutates them. Nothing may crash.
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 #include "helpers.hpp"
+#include "scene/map.hpp"
 #include "scene/scene_json.hpp"
 
 using namespace physics;
 namespace fs = std::filesystem;
+
+namespace {
+
+std::string contents(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// The map `text` read as the file `path`: true if it loads (and then builds
+// and steps); false if refused, by a SceneError of one line naming the file.
+bool map_loads(const std::string& text, const std::string& path) {
+  try {
+    const SceneSpec spec = read_map(text, path);
+    World w = make_world(spec, false, path);
+    for (int i = 0; i < 3; ++i) Game::step(w);
+    for (const Vector& p : w.components.position) BOOST_TEST((std::isfinite(p.x) && std::isfinite(p.y)));
+    return true;
+  } catch (const SceneError& e) {
+    const std::string m = e.what();
+    BOOST_TEST(m.starts_with(path + ":"), m);
+    BOOST_TEST(m.find('\n') == std::string::npos, m);
+    return false;
+  }
+}
+
+// The project's sample maps, read where they are (their tileset beside them).
+const fs::path samples = fs::path(__FILE__).parent_path().parent_path() / "scenes" / "maps";
+
+}  // namespace
 
 BOOST_AUTO_TEST_SUITE(fuzz_regressions)
 
@@ -17,6 +53,7 @@ BOOST_AUTO_TEST_CASE(every_regression_input_is_refused_or_loads_as_named) {
   const fs::path dir = fs::path(__FILE__).parent_path() / "fuzz_regressions";
   int seen = 0;
   for (const auto& entry : fs::directory_iterator(dir)) {
+    if (!entry.is_regular_file()) continue;  // maps/: the next case
     const std::string name = entry.path().filename().string();
     std::ifstream in(entry.path(), std::ios::binary);
     std::stringstream text;
@@ -34,6 +71,50 @@ BOOST_AUTO_TEST_CASE(every_regression_input_is_refused_or_loads_as_named) {
     }
   }
   BOOST_TEST(seen >= 5);
+}
+
+BOOST_AUTO_TEST_CASE(every_map_regression_input_is_refused_or_loads_as_named) {
+  int seen = 0;
+  for (const auto& entry : fs::directory_iterator(fs::path(__FILE__).parent_path() / "fuzz_regressions" / "maps")) {
+    const std::string name = entry.path().filename().string();
+    ++seen;
+    // Read as if it lay beside the samples (an external tileset they name is found).
+    const std::string path = (samples / name).string();
+    BOOST_TEST(map_loads(contents(entry.path()), path) == name.starts_with("ok-"), name);
+  }
+  BOOST_TEST(seen >= 1);
+}
+
+// Each sample cut short at every byte: refused in one line naming the file
+// (but for the whole file, and a cut that leaves it whole JSON).
+BOOST_AUTO_TEST_CASE(truncated_sample_maps_are_refused_in_one_line) {
+  for (const char* name : {"platform.tmj", "level.ldtk"}) {
+    const std::string text = contents(samples / name), path = (samples / name).string();
+    int loaded = 0;
+    for (std::size_t n = 0; n < text.size(); ++n) loaded += map_loads(text.substr(0, n), path);
+    BOOST_TEST(loaded <= 1, name);  // at most the cut of the last newline
+    BOOST_TEST(map_loads(text, path), name);
+  }
+}
+
+// Each number of each sample replaced, one at a time, by a hostile value
+// (negative, zero, huge, past 32 bits, not finite as text, another type):
+// it loads or is refused in one line naming the file, never anything else.
+BOOST_AUTO_TEST_CASE(sample_maps_with_hostile_values_load_or_are_refused_in_one_line) {
+  const std::regex number(R"(-?\b\d+(\.\d+)?([eE][-+]?\d+)?\b)");
+  for (const char* name : {"platform.tmj", "level.ldtk"}) {
+    const std::string text = contents(samples / name), path = (samples / name).string();
+    int refused = 0, tried = 0;
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), number); it != std::sregex_iterator(); ++it)
+      for (const char* value : {"-1", "0", "1e308", "4294967297", "\"nan\"", "null", "[]", "{}"}) {
+        const std::string mutated = text.substr(0, static_cast<std::size_t>(it->position())) + value +
+                                    text.substr(static_cast<std::size_t>(it->position() + it->length()));
+        ++tried;
+        refused += !map_loads(mutated, path);
+      }
+    BOOST_TEST(tried > 500, name);
+    BOOST_TEST(refused > tried / 4, name << ": " << refused << " of " << tried);  // the values are mostly wrong
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -6,6 +6,7 @@
 // exit 2.
 #include <cmath>
 #include <functional>
+#include <sys/stat.h>
 
 #include <nlohmann/json.hpp>
 
@@ -235,6 +236,19 @@ BOOST_AUTO_TEST_CASE(tiled_maps_it_does_not_take_are_one_line_errors) {
   expect_map_error("platform.tmj", [](json& m) { m["tilesets"][0]["tiles"][0]["properties"][0]["value"] = "yes"; },
                    "tilesets[0] \"terrain\", tile 1, property \"one_way\": must be a bool property");
   expect_map_error("platform.tmj", [](json& m) { tiled_layer(m, "ground")["type"] = "tiles"; }, "layer type \"tiles\" is not a Tiled layer");
+  // Found by make fuzz's map loaders (and by hand): a tile listed in a tileset
+  // of none read as "an integer in [0, -1]"; a tileset that is a pipe blocked the load.
+  expect_map_error("platform.tmj", [](json& m) { m["tilesets"][0]["tilecount"] = 0; },
+                   "tilesets[0] \"terrain\": lists tiles but has none (tilecount 0)");
+  {
+    const TempDir fifo_dir;
+    const std::string fifo = (fifo_dir.path / "pipe.tsj").string();
+    BOOST_TEST_REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
+    json m = map_json("platform.tmj");
+    m["tilesets"][1]["source"] = "pipe.tsj";
+    const std::string file = fifo_dir.file("platform.tmj", m.dump());
+    expect_bad({"--scene", file, "--headless", "--frames", "1"}, fifo + ": cannot read the tileset: not a regular file");
+  }
   // Bad JSON: line and column.
   const TempDir dir;
   const std::string bad = dir.file("bad.tmj", "{\n  \"orientation\": \"orthogonal\",\n  oops\n}");

@@ -586,6 +586,39 @@ BOOST_AUTO_TEST_CASE(hud_and_keys_stay_inside_the_window) {
   }
 }
 
+// A HUD too long for the room the key list leaves (a long note, stage times,
+// in the smallest window) is cut, its last line saying so: the key list stays
+// whole and inside the window, below the HUD, neither panel over the other.
+BOOST_AUTO_TEST_CASE(a_long_hud_is_cut_to_keep_the_key_list_whole_inside_the_window) {
+  Testbed tb({big_world(81, 81)}, 0, {}, Overlays{.help = true, .times = true});
+  tb.set_viewport(min_window);
+  View v = tb.view(60, 0);
+  for (int i = 0; i < 12; ++i) v.hud.push_back("note " + std::to_string(i) + ": " + std::string(100, 'x'));
+  Recorder r;
+  Overlay::over(tb.world(), v, r);
+  const std::vector<std::string> keys = Testbed::key_list(1);
+  std::size_t drawn = 0, hud_end = 0;
+  for (std::size_t i = 0; i < r.texts.size(); ++i) {
+    const Recorder::Text& t = r.texts[i];
+    BOOST_TEST((t.x >= 0 && t.x + 9.0 * t.s.size() <= min_window.x), t.s);
+    BOOST_TEST(t.y + 17 <= min_window.y, t.s);
+    drawn += std::find(keys.begin(), keys.end(), t.s) != keys.end();
+    if (t.s.starts_with("... ")) hud_end = i;
+  }
+  BOOST_TEST(drawn == keys.size());  // every key, whole
+  BOOST_TEST_REQUIRE(hud_end > 0u);
+  BOOST_TEST(r.texts[hud_end].s.ends_with("more lines (H hides the key list)"), r.texts[hud_end].s);
+  BOOST_TEST(r.texts[hud_end].y + 17 <= r.texts[hud_end + 1].y);  // the keys below the HUD's last line
+  for (const auto& b : r.boxes) BOOST_TEST((b[0] >= 0 && b[0] + b[2] <= min_window.x && b[1] + b[3] <= min_window.y));
+  // Without the key list the HUD has the window's height.
+  View alone = v;
+  alone.help.clear();
+  Recorder q;
+  Overlay::over(tb.world(), alone, q);
+  BOOST_TEST(q.texts.size() > r.texts.size() - keys.size());
+  for (const Recorder::Text& t : q.texts) BOOST_TEST(t.y + 17 <= min_window.y, t.s);
+}
+
 BOOST_AUTO_TEST_CASE(wrap_breaks_at_spaces_and_indents) {
   const auto lines = Overlay::wrap("alpha beta gamma delta epsilon zeta eta theta", 20);
   BOOST_TEST(lines.size() == 3u);

@@ -85,9 +85,10 @@ po::options_description descriptions() {
   po::options_description d("options");
   d.add_options()
       ("help,h", "print this help and exit")
-      ("list-scenes", "list the built-in scenes and the scene files in scenes/ (games marked), and exit")
+      ("list-scenes", "list the built-in scenes, the scene files in scenes/ and the maps in scenes/maps/ (games "
+       "marked), and exit")
       ("scene", po::value<std::string>()->value_name("NAME|FILE"),
-       "a built-in scene (see --list-scenes; default many) or a scene file (.json)")
+       "a built-in scene (see --list-scenes; default many), a scene file (.json) or a map (.tmj, .ldtk)")
       ("course", "build the sheet's scenes (walls, drift, impulse, bounce, many) with the course's own functions "
        "(src/course/game.cpp) as the sheet's main program does, not from their descriptions (make exercise-run "
        "shows your answers so)")
@@ -185,8 +186,8 @@ std::filesystem::path scenes_folder() {
   return {};
 }
 
-// --list-scenes: the built-in scenes, then the scene files (a game's level
-// marked by its kind), each with its "description". A file that does not
+// --list-scenes: the built-in scenes, then the scene files and the maps (a
+// game's level marked by its kind), each with its "description". A file that does not
 // read is listed with its error: the listing is not the place to stop.
 void list_scenes(std::ostream& out) {
   out << "built-in scenes (--scene NAME):\n";
@@ -200,14 +201,21 @@ void list_scenes(std::ostream& out) {
     out << "no scenes/ folder here or beside the program: run from the project's folder to list its scene files\n";
     return;
   }
-  std::vector<std::filesystem::path> files;
+  // The scene files, then the maps of scenes/maps/ (Tiled .tmj, LDtk .ldtk:
+  // --scene reads them by name as it reads a scene file).
+  std::vector<std::filesystem::path> files, maps;
   std::error_code ec;
   for (const auto& e : std::filesystem::directory_iterator(dir, ec))
     if (e.path().extension() == ".json") files.push_back(e.path());
+  for (const auto& e : std::filesystem::directory_iterator(dir / "maps", ec))
+    if (is_map_file(e.path().string())) maps.push_back(e.path());
   std::sort(files.begin(), files.end());
+  std::sort(maps.begin(), maps.end());
+  files.insert(files.end(), maps.begin(), maps.end());
   std::size_t width = 0;
   for (const auto& f : files) width = std::max(width, f.string().size() + 2);
-  out << "scene files in " << dir.string() << "/ (--scene FILE; [game] marks a game's level):\n";
+  out << "scene files in " << dir.string() << "/ and maps in " << dir.string()
+      << "/maps/ (--scene FILE; [game] marks a game's level):\n";
   for (const auto& f : files) {
     std::string path = f.string(), line;
     try {
@@ -371,7 +379,7 @@ std::string usage() {
        "                                              jumps, Down+Space drops through, R restarts\n"
        "  build/game --scene scenes/targets-1.json    the target game: drag and release to launch, Enter after a\n"
        "                                              win for the next level (targets-2, targets-3)\n"
-       "--list-scenes lists every scene: the built-in ones and the files in scenes/.\n";
+       "--list-scenes lists every scene: the built-in ones, the files in scenes/ and the maps in scenes/maps/.\n";
   return o.str();
 }
 

@@ -153,22 +153,42 @@ int speed_legend(Painter& p, int x, int y) {
   return y + std::max({left, right, bar_h + 4}) + 2;
 }
 
+// `lines` cut to at most `room` lines, the last one then saying how many
+// were left out and `how` to see them; none if not even one line fits.
+std::vector<std::string> fitted(std::vector<std::string> lines, int room, const std::string& how) {
+  if (room <= 0) return {};
+  if (lines.size() <= static_cast<std::size_t>(room)) return lines;
+  const std::size_t left = lines.size() - static_cast<std::size_t>(room - 1);
+  lines.resize(static_cast<std::size_t>(room - 1));
+  lines.push_back("... " + std::to_string(left) + " more line" + (left == 1 ? "" : "s") + how);
+  return lines;
+}
+
 // The HUD panel at the top left, then the key list's at the right, below
-// it, so that neither hides the other; both inside the view.
+// it, so that neither hides the other; both inside the view. The key list
+// (asked for with H) is whole if the window holds it; the HUD gets the room
+// left above it, cut with a last line that says so (a long note or stage
+// times in a small window would push the keys past its bottom edge).
 void texts(const View& view, Painter& p) {
-  const int width = static_cast<int>(view.camera.view.x);
+  const int width = static_cast<int>(view.camera.view.x), height = static_cast<int>(view.camera.view.y);
   const std::size_t chars = text_chars(p, width);
+  const int lh = p.line_height();
+  const auto lines_in = [&](int px) { return (px - 2 * pad) / lh; };  // the lines a panel px high holds
+  const std::vector<std::string> keys = fitted(wrap_all(view.help, chars), lines_in(height - 2 * margin), "");
+  const int keys_h = keys.empty() ? 0 : static_cast<int>(keys.size()) * lh + 2 * pad + margin;
   const bool legend = view.style == Style::speed && view.overlays.hud;
+  const int legend_h = legend ? lh + 6 : 0;
+  const int room = lines_in(height - 2 * margin - keys_h - legend_h);
   int y = margin;
-  if (!view.hud.empty() || legend) {
-    const std::vector<std::string> lines = wrap_all(view.hud, chars);
+  if ((!view.hud.empty() || legend) && room > 0) {
+    const std::vector<std::string> lines =
+        fitted(wrap_all(view.hud, chars), room, keys.empty() ? "" : " (H hides the key list)");
     const int lw = legend ? 76 + bar_w + text_px(p, top_speed_text().size()) : 0;
-    const Box b = panel(p, lines, margin, y, lw, legend ? p.line_height() + 6 : 0);
-    if (legend) speed_legend(p, margin + pad, b.y + b.h - pad - p.line_height() - 4);
+    const Box b = panel(p, lines, margin, y, lw, legend_h);
+    if (legend) speed_legend(p, margin + pad, b.y + b.h - pad - lh - 4);
     y = b.y + b.h + margin;
   }
-  if (view.help.empty()) return;
-  const std::vector<std::string> keys = wrap_all(view.help, chars);
+  if (keys.empty()) return;
   const int w = std::min(width - 2 * margin, text_px(p, longest(keys)) + 2 * pad);
   panel(p, keys, width - margin - w, y, 0, 0);
 }

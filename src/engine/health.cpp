@@ -39,7 +39,8 @@ void Health::check_bodies(const Components& c, std::int64_t frame) {
   if (non_finite) return;
   const std::size_t n = c.size();
   static_assert(sizeof(Vector) == 2 * sizeof(double));
-  const bool bad = any_non_finite(&c.position.data()->x, 2 * n) || any_non_finite(&c.velocity.data()->x, 2 * n);
+  // (n > 0: an empty world's data() is null, and ->x through it undefined)
+  const bool bad = n > 0 && (any_non_finite(&c.position.data()->x, 2 * n) || any_non_finite(&c.velocity.data()->x, 2 * n));
   for (std::size_t e = 0; bad && e < n; ++e) {
     const Vector p = c.position[e], v = c.velocity[e];
     if (all_finite(p) && all_finite(v)) continue;

@@ -35,6 +35,7 @@ void StripIndex::build(int lines, std::vector<std::vector<std::uint32_t>> by_lin
     runs_.insert(runs_.end(), runs.begin(), runs.end());
     start_[static_cast<std::size_t>(l) + 1] = static_cast<std::uint32_t>(runs_.size());
   }
+  runs_.shrink_to_fit();  // grown by inserts: up to twice its size (a map's memory is its cells and strips)
 }
 
 TileLayer::TileLayer(EntityId body, TileGrid grid) : body_(body), grid_(std::move(grid)) {
@@ -85,6 +86,7 @@ void TileLayer::build_strips() {
   left_.build(g.columns, runs(false, -1, 0));
   right_.build(g.columns, runs(false, 1, 0));
   same_ = {};  // (clear() would keep its memory)
+  strips_.shrink_to_fit();  // grown by push_back: up to twice its size
 }
 
 // The index of strip s, made unless the same box was made already (same_,

@@ -92,6 +92,12 @@ Tileset read_tileset(const Map& c, const json& ref, const std::string& at) {
     if (!file.ends_with(".tsj") && !file.ends_with(".json"))
       fail(c.source, at, "tileset \"" + file + "\" is not JSON: save it as .tsj (XML tilesets are not supported)");
     const std::string path = (c.folder / file).string();
+    // A file Tiled wrote: a pipe or a device (a map naming one, as a .tsj
+    // link to /dev/stdin) would block the load or read on without end.
+    std::error_code ec;
+    if (const auto st = std::filesystem::status(path, ec);
+        !ec && std::filesystem::exists(st) && !std::filesystem::is_regular_file(st) && !std::filesystem::is_directory(st))
+      fail(c.source, at, path + ": cannot read the tileset: not a regular file");
     try {
       external = map_io::parse(read_input_file(path, "tileset"), path);
     } catch (const SceneError& e) {
@@ -109,6 +115,7 @@ Tileset read_tileset(const Map& c, const json& ref, const std::string& at) {
   t.count = integer(c.source, need(*set, "tilecount", c.source, what), what + ".tilecount", 0, std::int64_t{1} << 28);
   if (const auto tiles = set->find("tiles"); tiles != set->end() && tiles->is_array())
     for (const json& tile : *tiles) {
+      if (t.count == 0) fail(c.source, what, "lists tiles but has none (tilecount 0)");
       const std::int64_t id = integer(c.source, need(tile, "id", c.source, what + ", a tile"), what + ", a tile's id", 0, t.count - 1);
       if (const char k = tile_kind(c, tile, what + ", tile " + std::to_string(id)); k != map_io::solid_cell) t.kinds[id] = k;
     }
