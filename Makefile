@@ -474,10 +474,12 @@ WEB_CXX       := clang++-14
 # -Iweb/compat: <filesystem> and <charconv> pieces Debian's wasm libc++ lacks;
 # nlohmann's headers through a folder of their own (-isystem /usr/include
 # would bring glibc's headers in); no std::filesystem in its API.
-# For size (the page loads it): -Oz with link-time optimisation, then
-# binaryen's wasm-opt -Oz: 861 KB at -O2, 475 042 bytes so, exceptions included
-# (no iostreams in the code it runs: docs/web.md).
-WEB_OPT       ?= -Oz -flto
+# For size (the page loads it): -Oz with link-time optimisation and no RTTI
+# (nothing asks a type's name: -3.6 KB; exceptions keep their type info), then
+# binaryen's wasm-opt -Oz with --low-memory-unused (the low 1 KiB is the
+# bottom of the 1 MiB stack, reached only on overflow: pointer offsets fold,
+# -9.3 KB; emscripten's default): 861 KB at -O2 (docs/web.md has the sizes).
+WEB_OPT       ?= -Oz -flto -fno-rtti
 WEB_FLAGS     := --target=wasm32-wasi -std=c++20 $(WEB_OPT) -fwasm-exceptions -Wall -Wextra -Werror -ffp-contract=off -Iweb/compat -Iinclude \
                  -Isrc -Itests -isystem $(WEB)/include -DJSON_HAS_FILESYSTEM=0 -DJSON_HAS_EXPERIMENTAL_FILESYSTEM=0 -MMD -MP
 # (src/scene/save.cpp: the save key S of the command line, with std::filesystem.)
@@ -517,7 +519,7 @@ $(WEB)/physics-linked.wasm: $(WEB_OBJ)
 	$(WEB_CXX) --target=wasm32-wasi $(WEB_OPT) -fwasm-exceptions $(WEB_EH_LTO) -mexec-model=reactor \
 	  -Wl,-z,stack-size=1048576,--stack-first -o $@ $^
 $(WEB)/physics.wasm: $(WEB)/physics-linked.wasm
-	wasm-opt -Oz --enable-exception-handling --strip-debug --strip-producers --strip-target-features $< -o $@
+	wasm-opt -Oz --low-memory-unused --enable-exception-handling --strip-debug --strip-producers --strip-target-features $< -o $@
 
 $(WEB)/%: web/%
 	@mkdir -p $(@D)

@@ -137,10 +137,11 @@ canvas.addEventListener('contextmenu', (e) => e.preventDefault());
 select.addEventListener('change', () => open(select.value));
 
 async function start() {
-  const list = await (await fetch('files.json')).json();  // scenes/*.json, replays/*.log
+  const list = await (await fetch('files.json')).json();  // scenes/*.json, scenes/maps/*, replays/*.log
   const files = {};
   await Promise.all(list.map(async (f) => { files[f] = new Uint8Array(await (await fetch(f)).arrayBuffer()); }));
-  const sceneFiles = list.filter((f) => f.startsWith('scenes/')).map((f) => f.slice(7));
+  // A Tiled tileset (.tsj) is read by the maps that use it: not a scene of its own.
+  const sceneFiles = list.filter((f) => f.startsWith('scenes/') && !f.endsWith('.tsj')).map((f) => f.slice(7));
   const wasi = new Wasi(files, (fd, line) => {
     if (captured && fd === 1) return void captured.push(line);
     (fd === 2 ? console.error : console.log)(line);

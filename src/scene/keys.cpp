@@ -730,7 +730,7 @@ void table(std::string& out, std::string_view title, std::string_view prefix, st
   out += std::string(title) + "\n\n| Key | Type | Range | Default | Meaning |\n|---|---|---|---|---|\n";
   for (const KeyDoc& d : docs) {
     out += "| `" + std::string(prefix) + d.name() + "` | " + std::string(d.type) + " | " + std::string(d.range) + " | " +
-           std::string(d.fallback) + " | " + std::string(d.doc) + " |\n";
+           std::string(d.fallback) + " | " + std::string(std::string_view(d.doc)) + " |\n";
   }
   out += "\n";
 }
@@ -794,7 +794,8 @@ WorldFlag flag_of(const KeyDoc& d) {
     for (std::size_t at; (at = value.find(", ")) != std::string::npos;) value.replace(at, 2, "|");
   }
   // Without the writer's note ("; written only when used"): no file is written here.
-  std::string help = plain(d.doc.substr(0, d.doc.find("; written "))) + " (" + (d.range.empty() ? "" : (text ? "one of " : "in ") + plain(d.range) + ", ") +
+  const std::string_view doc = d.doc;
+  std::string help = plain(doc.substr(0, doc.find("; written "))) + " (" + (d.range.empty() ? "" : (text ? "one of " : "in ") + plain(d.range) + ", ") +
                      "default " + plain(d.fallback) + ")";
   if (*d.flag) help += std::string("; ") + d.flag;
   if (boolean) help += std::string("; --") + d.name() + " alone means on";

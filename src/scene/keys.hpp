@@ -25,11 +25,24 @@
 
 namespace physics::scene_io {
 
+// A key's meaning, for docs/scenes.md's tables and the command line's
+// help. The browser build has neither: it leaves the texts out of its
+// module (about 7 KB, docs/web.md), and a key's meaning reads "" there.
+#if defined(__wasm__)
+struct DocText {
+  constexpr DocText(const char*) {}
+  constexpr operator std::string_view() const { return {}; }
+};
+#else
+using DocText = std::string_view;
+#endif
+
 // What the doc says of a key. `key` is as in a path, ".name": its name is
 // what follows the dot.
 struct KeyDoc {
   const char* key;
-  std::string_view type, range, fallback, doc;
+  std::string_view type, range, fallback;
+  DocText doc;
   // A world key that is also a command-line flag (--name): what its help adds
   // to the doc ("" nothing); null: no flag. Its value's syntax comes from the type.
   const char* flag = nullptr;
