@@ -23,6 +23,7 @@ bool AutoMode::plan(const Components& k, std::span<const EntityId> bodies, doubl
   // up) or when a body is fast: what it lands on may be a pile, and CCD
   // alone would carry it down the pile one impact at a time, without end.
   const bool g = !Vector::is_zero(gravity);
+  gravity_ = g;
   const bool bouncing = g && bouncy(k, bodies);
   solver_path_ = first_ || hold_left_ > 0 || jam_left_ > 0 ||
                  (g && (fast_count_ > 0 || bouncing || seamed(k, bodies, gravity)));
@@ -336,7 +337,7 @@ void AutoMode::count_pressed() {
     while (old != runs_.end() && old->first < key) ++old;
     const int run = old != runs_.end() && old->first == key ? old->second + 1 : 1;
     next_runs_.emplace_back(key, run);
-    if (run >= persist) hold_left_ = hold;
+    if (run >= (gravity_ ? 1 : persist)) hold_left_ = hold;
   }
   std::swap(runs_, next_runs_);
 }

@@ -71,7 +71,9 @@ class AutoMode {
   // Substeps the solver is kept after its last load-carrying contact.
   static constexpr int hold = 8;
   // Substeps in a row a pair of finite bodies must be pressed together
-  // (an impulse between them) to count as a persistent contact.
+  // (an impulse between them) to count as a persistent contact. Under
+  // gravity one is enough: each course pass after a landing pushes the pair
+  // out against gravity again, and the energy grows with every one.
   static constexpr int persist = 3;
   // More fast bodies than this take the solver's path: its speculative
   // contacts take each one's first impact at the cost of one broad phase,
@@ -169,6 +171,7 @@ class AutoMode {
   std::vector<std::uint8_t> undone_;  // by entity id
   bool solver_path_ = false;
   bool first_ = false;      // the scene's first substep, under gravity
+  bool gravity_ = false;    // the last plan()'s gravity was not zero
   bool started_ = false;    // a substep was planned (or a saved state restored)
   bool start_set_ = false;  // start_ holds impact times (reset at the next plan())
   double thinnest_ = -1;    // the world's thinnest side at the last plan(), px
