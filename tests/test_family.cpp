@@ -116,4 +116,20 @@ BOOST_AUTO_TEST_CASE(auto_takes_the_solver_after_one_pressed_substep_under_gravi
   }
 }
 
+// Auto's solver takes the stable solver's rounds (its contacts again after a
+// turn): a light block that the wall sends back into its pusher no longer
+// ends inside the wall (1-4 px before), on the floor under gravity.
+BOOST_AUTO_TEST_CASE(auto_keeps_a_pushed_block_out_of_the_wall) {
+  Mode automatic;
+  for (const Mode& m : stability_modes())
+    if (m.name == "auto") automatic = m;
+  BOOST_TEST_REQUIRE(automatic.name == "auto");
+  const Family* f = find_family("push-into-wall");
+  BOOST_TEST_REQUIRE(f != nullptr);
+  for (const std::uint64_t seed : {12, 20, 26, 33, 42}) {
+    const Outcome o = f->draw(seed).run(automatic);
+    BOOST_TEST(o.pass, "push-into-wall seed " << seed << ": " << o.figure);
+  }
+}
+
 BOOST_AUTO_TEST_SUITE_END()

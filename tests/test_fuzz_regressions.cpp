@@ -6,7 +6,6 @@
 // as the map fuzzer mutates them. Nothing may crash.
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <sstream>
 
 #include "helpers.hpp"
@@ -97,18 +96,38 @@ BOOST_AUTO_TEST_CASE(truncated_sample_maps_are_refused_in_one_line) {
   }
 }
 
+// Where each JSON number of text is outside strings: (offset, length).
+// (Not <regex>: under the sanitizer build g++ 12 warns inside it.)
+static std::vector<std::pair<std::size_t, std::size_t>> json_numbers(const std::string& text) {
+  std::vector<std::pair<std::size_t, std::size_t>> out;
+  bool in_string = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      if (c == '\\') ++i;
+      else if (c == '"') in_string = false;
+      continue;
+    }
+    if (c == '"') { in_string = true; continue; }
+    if (!(c == '-' || (c >= '0' && c <= '9'))) continue;
+    std::size_t j = i + 1;
+    while (j < text.size() && std::string_view("0123456789.eE+-").find(text[j]) != std::string_view::npos) ++j;
+    out.emplace_back(i, j - i);
+    i = j - 1;
+  }
+  return out;
+}
+
 // Each number of each sample replaced, one at a time, by a hostile value
 // (negative, zero, huge, past 32 bits, not finite as text, another type):
 // it loads or is refused in one line naming the file, never anything else.
 BOOST_AUTO_TEST_CASE(sample_maps_with_hostile_values_load_or_are_refused_in_one_line) {
-  const std::regex number(R"(-?\b\d+(\.\d+)?([eE][-+]?\d+)?\b)");
   for (const char* name : {"platform.tmj", "level.ldtk"}) {
     const std::string text = contents(samples / name), path = (samples / name).string();
     int refused = 0, tried = 0;
-    for (auto it = std::sregex_iterator(text.begin(), text.end(), number); it != std::sregex_iterator(); ++it)
+    for (const auto& [at, length] : json_numbers(text))
       for (const char* value : {"-1", "0", "1e308", "4294967297", "\"nan\"", "null", "[]", "{}"}) {
-        const std::string mutated = text.substr(0, static_cast<std::size_t>(it->position())) + value +
-                                    text.substr(static_cast<std::size_t>(it->position() + it->length()));
+        const std::string mutated = text.substr(0, at) + value + text.substr(at + length);
         ++tried;
         refused += !map_loads(mutated, path);
       }
