@@ -192,6 +192,17 @@ BOOST_AUTO_TEST_CASE(a_row_closing_in_keeps_its_order_and_energy) {
   BOOST_TEST(std::abs(w.kinetic_energy() - e0) < 1e-9 * e0);
 }
 
+// 200 blocks of 8 px at up to 2 px/ms in the walls, restitution e, under auto.
+static World fast_gas(double e) {
+  World w = make_world(automatic_mode);
+  walls(w);
+  Random rng(2);
+  for (int i = 0; i < 200; ++i)
+    block(w, 60 + 34.0 * (i % 20) + rng.uniform(0, 20), 60 + 48.0 * (i / 20) + rng.uniform(0, 30), 8, 8,
+          rng.uniform(1, 3), {rng.uniform(-2, 2), rng.uniform(-2, 2)}, e);
+  return w;
+}
+
 // A fast elastic gas: 200 blocks of 8 px at up to 2 px/ms, e = 1. On the
 // solver's path it lost 60 % of its energy in 3000 frames (every body with two
 // contacts in a substep had them solved together) and let bodies out through
@@ -199,12 +210,7 @@ BOOST_AUTO_TEST_CASE(a_row_closing_in_keeps_its_order_and_energy) {
 // gas draws. Elastic without gravity, auto's path is now ccd's: the course's
 // pass with every body swept, no solver substep.
 BOOST_AUTO_TEST_CASE(a_fast_elastic_gas_keeps_its_energy_and_its_walls) {
-  World w = make_world(automatic_mode);
-  walls(w);
-  Random rng(2);
-  for (int i = 0; i < 200; ++i)
-    block(w, 60 + 34.0 * (i % 20) + rng.uniform(0, 20), 60 + 48.0 * (i / 20) + rng.uniform(0, 30), 8, 8,
-          rng.uniform(1, 3), {rng.uniform(-2, 2), rng.uniform(-2, 2)});
+  World w = fast_gas(1.0);
   const double e0 = w.kinetic_energy();
   for (int f = 0; f < 600; ++f) Game::step(w);
   BOOST_TEST(std::abs(w.kinetic_energy() - e0) < 1e-9 * e0);
@@ -216,12 +222,7 @@ BOOST_AUTO_TEST_CASE(a_fast_elastic_gas_keeps_its_energy_and_its_walls) {
 // chains of impacts (a body with a bounce and another contact) are undone
 // and swept, so no body leaves through the walls and the energy never grows.
 BOOST_AUTO_TEST_CASE(a_fast_inelastic_gas_has_its_chains_undone_and_swept) {
-  World w = make_world(automatic_mode);
-  walls(w);
-  Random rng(2);
-  for (int i = 0; i < 200; ++i)
-    block(w, 60 + 34.0 * (i % 20) + rng.uniform(0, 20), 60 + 48.0 * (i / 20) + rng.uniform(0, 30), 8, 8,
-          rng.uniform(1, 3), {rng.uniform(-2, 2), rng.uniform(-2, 2)}, 0.9);
+  World w = fast_gas(0.9);
   double energy = w.kinetic_energy();
   for (int f = 0; f < 600; ++f) {
     Game::step(w);

@@ -144,7 +144,7 @@ class ImpactQueue {
     // (A fixed body keeps its line: its impacts with unswept bodies are the pass's, as before.)
     const auto sweeps = [&](bool again, bool fixed, EntityId e, std::uint32_t j) {
       return again || (sel_ && (sel_->fast[entities_[j]] ||
-                                (!fixed && sel_->closes_through(k_, e, entities_[j], ev.t, h_ - ev.t, true))));
+                                (!fixed && CcdSelection::closes_through(k_, e, entities_[j], ev.t, h_ - ev.t, true))));
     };
     // The boxes swept over the rest of the substep: a pair whose two do not
     // meet has no impact in it (a cheaper test than time_of_impact's).

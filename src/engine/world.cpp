@@ -133,7 +133,12 @@ SolverSettings solver_settings(const Params& p) {
   s.iterations = p.iterations;
   s.impacts = !p.ccd;  // with CCD on, impacts are its business
   s.exact_motion = p.integrator == Integrator::exact;
-  s.rounds = p.solver == Solver::course ? 0 : 3;  // SolverSettings::rounds: stable's and auto's
+  // SolverSettings::rounds: the stable solver's, and auto's under gravity
+  // only: without it auto's solver path is a fast gas's (many fast bodies),
+  // whose step they doubled (gas10k 1.9 -> 3.6 s for 300 frames) for nothing
+  // the family measures.
+  const bool rounds = p.solver == Solver::stable || (p.solver == Solver::automatic && !Vector::is_zero(p.gravity));
+  s.rounds = rounds ? 3 : 0;
   return s;
 }
 }  // namespace
@@ -171,10 +176,6 @@ void World::auto_before_move(std::span<const EntityId> bodies, double h) {
   if (automatic.plan(components, bodies, h, params.gravity)) {
     SolverSettings s = solver_settings(params);
     s.impacts = !automatic.sweep_all();
-    // The rounds under gravity only: without it auto's solver path is a fast
-    // gas's (many fast bodies), whose step they doubled (gas10k 1.9 -> 3.6 s
-    // for 300 frames) for nothing the family measures.
-    if (Vector::is_zero(params.gravity)) s.rounds = 0;
     if (automatic.sweep_all()) {
       solve_velocities(bodies, h, s);
       automatic.stats.contacts += static_cast<std::int64_t>(contact_solver.constraints().size());
