@@ -3,6 +3,8 @@
 // as over one flat body, rests on tiles, passes one-way tiles from below and
 // lands on them from above, and stops at a wall of tiles where it hits it.
 // Each case against its closed form.
+#include <malloc.h>
+
 #include <string>
 
 #include "helpers.hpp"
@@ -156,15 +158,19 @@ BOOST_AUTO_TEST_CASE(a_box_slides_into_a_corner_of_tiles_and_stays_on_the_floor)
 // their top, where nothing is above them.
 BOOST_AUTO_TEST_CASE(strips_merge_runs_of_exposed_faces) {
   const TileLayer floor(0, filled(1000, 2, Tile::solid));
-  BOOST_TEST(floor.strips().size() == 4u);  // top, bottom, the two ends (two cells high)
+  BOOST_TEST(floor.strip_count() == 4u);  // top, bottom, the two ends (two cells high)
   const TileLayer lone(0, drawn({"...", ".#.", "..."}));
-  BOOST_TEST(lone.strips().size() == 1u);
+  BOOST_TEST(lone.strip_count() == 1u);
+  BOOST_TEST(lone.runs() == 4u);  // its four faces, twins
   const TileLayer platform(0, drawn({"....", ".##.", "...."}));
-  BOOST_TEST(platform.strips().size() == 3u);  // top and bottom (one box), the two ends
+  BOOST_TEST(platform.strip_count() == 3u);  // top and bottom (one box), the two ends
   const TileLayer one_way(0, drawn({"==", "=="}));
-  BOOST_TEST(one_way.strips().size() == 1u);
-  BOOST_TEST(one_way.strips()[0].one_way);
-  BOOST_TEST(one_way.strips()[0].row == 0);
+  BOOST_TEST(one_way.strip_count() == 1u);
+  std::vector<Strip> found;
+  one_way.near(0, 0, 32, 32, [&](std::uint32_t, const Strip& s) { found.push_back(s); });
+  BOOST_TEST(found.size() == 1u);
+  BOOST_TEST(found[0].one_way);
+  BOOST_TEST(found[0].row == 0);
 }
 
 // A 1000 x 1000 map is its 1 MB of cells, and a box on it makes proxies for
@@ -181,6 +187,28 @@ BOOST_AUTO_TEST_CASE(a_large_map_makes_proxies_only_near_the_bodies) {
   BOOST_TEST(w.tiles.proxy_count() <= 4u);
   BOOST_TEST(std::abs(w.components.position[s].y - 140) < 0.05);
   BOOST_TEST(alive_count(w) == 2u);  // the layer and the box: proxies are not bodies
+}
+
+// What a map costs beyond its cells: 8 bytes a run (the bench's map of
+// 2 500 walled rooms, as bench/scenes.cpp draws it), proxies made only where
+// bodies go. The heap is glibc's count (mallinfo2); a sanitizer's allocator
+// reports none, and then only the counts are checked.
+BOOST_AUTO_TEST_CASE(a_map_costs_its_cells_and_8_bytes_a_run) {
+  TileGrid grid = filled(1000, 1000, Tile::empty);
+  for (int r = 0; r < 1000; ++r)
+    for (int c = 0; c < 1000; ++c) {
+      const int rr = r % 20, cc = c % 20;
+      const bool wall = rr == 0 || rr == 19 || cc == 0 || cc == 19, ledge = rr == 12 && cc >= 6 && cc < 14;
+      grid.cells[static_cast<std::size_t>(r) * 1000 + static_cast<std::size_t>(c)] = wall || ledge;
+    }
+  const auto heap = [] { const struct mallinfo2 m = mallinfo2(); return m.uordblks + m.hblkhd; };
+  const std::size_t before = heap();
+  const TileLayer layer(0, std::move(grid));
+  const std::size_t grown = heap() - before;
+  BOOST_TEST(layer.strip_count() == 17'504u);
+  BOOST_TEST(layer.runs() <= 1.25 * layer.strip_count());  // twins: the ledges' tops and bottoms
+  // The runs, 4 lines of offsets a side, a page pointer per 256 runs.
+  BOOST_TEST(grown <= 8 * layer.runs() + 4 * 4 * 1001 + 24 * (layer.runs() / 256 + 1) + 4096);
 }
 
 // A layer may cover the walls: neither its body nor its proxies count as

@@ -80,8 +80,7 @@ void Obstacles::near(Vector lo, Vector hi, F&& f) const {
     if (!meets(l.body()) || !w_.alive(l.body())) continue;
     const Vector o = k.position[l.body()];
     const int cs = l.grid().cell;
-    l.near(lo.x - o.x, lo.y - o.y, hi.x - o.x, hi.y - o.y, [&](std::uint32_t i) {
-      const Strip& s = l.strips()[i];
+    l.near(lo.x - o.x, lo.y - o.y, hi.x - o.x, hi.y - o.y, [&](std::uint32_t, const Strip& s) {
       f(Obstacle{l.body(), o + Vector{double(s.col) * cs, double(s.row) * cs}, Rect{s.cols * cs, s.rows * cs},
                  s.one_way ? Face::up : Face::none, false, s.col, s.row, s.cols, s.rows, cs});
     });

@@ -16,7 +16,6 @@
 #include <cstdint>
 #include <span>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 #include "engine/components.hpp"
@@ -56,20 +55,35 @@ struct Strip {
   bool one_way;  // the top faces of one-way cells: stops bodies only from above
 };
 
-// The strips' index, by face: for each row (faces up and down) or column
-// (faces left and right), the runs of that face in order, as strip indices.
-// The runs of one face in one row never overlap, so they are sorted by both
-// ends and a window's are found by a binary search.
+// One face's strips (up, down, left or right): for each line (a row for the
+// faces up and down, a column for left and right) the runs of exposed faces
+// along it, in order. 8 bytes a run, the line implied by where it is stored:
+// a map's memory is its cells and little more. The runs of one line never
+// overlap, so they are sorted by both ends and a window's are found by a
+// binary search.
 class StripIndex {
  public:
-  void build(int lines, std::vector<std::vector<std::uint32_t>> by_line);
-  // Calls f(strip) for each run of line l whose cells [start, end) meet [lo, hi].
+  struct Run {
+    std::uint32_t start, length;  // cells [start, start + length) of the line
+  };
+  // Made line by line: add a line's runs in order, then end_line().
+  void add(Run r) { runs_.push_back(r); }
+  void end_line() { start_.push_back(static_cast<std::uint32_t>(runs_.size())); }
+  void shrink() { runs_.shrink_to_fit(), start_.shrink_to_fit(); }
+
+  std::uint32_t size() const { return static_cast<std::uint32_t>(runs_.size()); }
+  int lines() const { return static_cast<int>(start_.size()) - 1; }
+  Run run(std::uint32_t i) const { return runs_[i]; }
+  // The index of line l's run with this start and length, or `none`.
+  static constexpr std::uint32_t none = ~std::uint32_t{0};
+  std::uint32_t find(int l, int start, int length) const;
+  // Calls f(index, line) for each run of line l whose cells [start, end) meet [lo, hi].
   template <class F>
-  void each(std::span<const Strip> strips, bool rows, int l, int lo, int hi, F&& f) const;
+  void each(int l, int lo, int hi, F&& f) const;
 
  private:
-  std::vector<std::uint32_t> start_;  // runs of line l: runs_[start_[l]] .. runs_[start_[l + 1]]
-  std::vector<std::uint32_t> runs_;
+  std::vector<std::uint32_t> start_{0};  // runs of line l: runs_[start_[l]] .. runs_[start_[l + 1]]
+  std::vector<Run> runs_;
 };
 
 class TileLayer {
@@ -80,28 +94,41 @@ class TileLayer {
 
   EntityId body() const { return body_; }
   const TileGrid& grid() const { return grid_; }
-  std::span<const Strip> strips() const { return strips_; }
 
-  // Calls f(strip index) for the strips whose cells meet the box [x0, x1] x
+  // A strip is known by its run: the runs of the four faces numbered one
+  // after the other (up, down, left, right). A box that is the run of more
+  // than one face (the top and the bottom of a platform one cell thick, the
+  // four faces of a lone cell) has that many numbers: twins, one box.
+  std::uint32_t runs() const { return base_[4]; }
+  // The number of distinct boxes (a twin counted once).
+  std::size_t strip_count() const;
+
+  // Calls f(run, strip) for the strips whose cells meet the box [x0, x1] x
   // [y0, y1] in px from the layer's corner (touching counts); a strip may
-  // come more than once.
+  // come more than once, and as more than one twin.
   template <class F>
   void near(double x0, double y0, double x1, double y1, F&& f) const;
 
-  // By strip: its proxy body, or `no_proxy` until it is first needed; and
-  // the last gather that listed it (so a gather lists each once).
+  // By run: its strip's proxy body, or `no_proxy` until it is first needed
+  // (kept in pages of 256 runs made on demand, so a map costs nothing here
+  // where no body goes); a twin's proxy is its twins'.
   static constexpr EntityId no_proxy = ~EntityId{0};
-  std::vector<EntityId> proxy;
-  std::vector<std::uint32_t> listed;
+  EntityId proxy(std::uint32_t run) const;
+  void set_proxy(std::uint32_t run, EntityId e);
+  // The proxy of a twin of run (strip s), or no_proxy.
+  EntityId twins_proxy(std::uint32_t run, const Strip& s) const;
 
  private:
   void build_strips();
-  std::uint32_t strip_id(const Strip& s);
+  Strip strip(int face, std::uint32_t i, int line) const;
+  template <class F>
+  void each_twin(const Strip& s, F&& f) const;
+  static constexpr std::uint32_t page_size = 256;
   EntityId body_;
   TileGrid grid_;
-  std::vector<Strip> strips_;
-  StripIndex up_, down_, left_, right_;
-  std::unordered_map<std::uint64_t, std::uint32_t> same_;  // while building
+  StripIndex faces_[4];   // up, down, left, right
+  std::uint32_t base_[5];  // the first run of each face, then the count
+  std::vector<std::vector<EntityId>> pages_;
 };
 
 // A world's tile layers and their proxies.
@@ -134,22 +161,22 @@ class TileSet {
               std::vector<EntityId>& created);
 
  private:
-  EntityId proxy_of(Components& k, TileLayer& layer, std::uint32_t s, std::vector<EntityId>& created);
+  EntityId proxy_of(Components& k, TileLayer& layer, std::uint32_t run, const Strip& s, std::vector<EntityId>& created);
+  static void set_from_layer(Components& k, const TileLayer& layer, EntityId e, const Strip& s);
   std::vector<TileLayer> layers_;
   std::vector<EntityId> owner_;
+  std::vector<std::uint32_t> listed_;  // by proxy, the last gather that listed it (so a gather lists each once)
   std::size_t proxy_count_ = 0;
   std::uint32_t gathers_ = 0;
 };
 
 template <class F>
-void StripIndex::each(std::span<const Strip> strips, bool rows, int l, int lo, int hi, F&& f) const {
+void StripIndex::each(int l, int lo, int hi, F&& f) const {
   const auto first = runs_.begin() + start_[static_cast<std::size_t>(l)];
   const auto last = runs_.begin() + start_[static_cast<std::size_t>(l) + 1];
-  const auto end_of = [&](std::uint32_t s) { return rows ? strips[s].col + strips[s].cols : strips[s].row + strips[s].rows; };
-  const auto start_of = [&](std::uint32_t s) { return rows ? strips[s].col : strips[s].row; };
   // The first run that ends after lo, then on while they start by hi.
-  auto it = std::partition_point(first, last, [&](std::uint32_t s) { return end_of(s) <= lo; });
-  for (; it != last && start_of(*it) <= hi; ++it) f(*it);
+  auto it = std::partition_point(first, last, [&](const Run& r) { return std::int64_t{r.start} + r.length <= lo; });
+  for (; it != last && std::int64_t{it->start} <= hi; ++it) f(static_cast<std::uint32_t>(it - runs_.begin()), l);
 }
 
 template <class F>
@@ -161,13 +188,16 @@ void TileLayer::near(double x0, double y0, double x1, double y1, F&& f) const {
   const auto clamp_cell = [](double v, int n) { return v < 0.0 ? 0 : v >= n - 1 ? n - 1 : static_cast<int>(v); };
   const int c0 = clamp_cell(std::floor(x0 / cs) - 1, grid_.columns), c1 = clamp_cell(std::floor(x1 / cs), grid_.columns);
   const int r0 = clamp_cell(std::floor(y0 / cs) - 1, grid_.rows), r1 = clamp_cell(std::floor(y1 / cs), grid_.rows);
+  const auto on = [&](int face) {
+    return [&, face](std::uint32_t i, int line) { f(base_[face] + i, strip(face, i, line)); };
+  };
   for (int r = r0; r <= r1; ++r) {
-    up_.each(strips_, true, r, c0, c1, f);
-    down_.each(strips_, true, r, c0, c1, f);
+    faces_[0].each(r, c0, c1, on(0));
+    faces_[1].each(r, c0, c1, on(1));
   }
   for (int c = c0; c <= c1; ++c) {
-    left_.each(strips_, false, c, r0, r1, f);
-    right_.each(strips_, false, c, r0, r1, f);
+    faces_[2].each(c, r0, r1, on(2));
+    faces_[3].each(c, r0, r1, on(3));
   }
 }
 
