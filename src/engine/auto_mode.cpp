@@ -26,7 +26,7 @@ bool AutoMode::plan(const Components& k, std::span<const EntityId> bodies, doubl
   gravity_ = g;
   const bool bouncing = g && bouncy(k, bodies);
   solver_path_ = first_ || hold_left_ > 0 || jam_left_ > 0 ||
-                 (g && (fast_count_ > 0 || bouncing || seamed(k, bodies, gravity)));
+                 (g && (fast_count_ > 0 || bouncing || seamed(k, bodies, gravity) || landing(k, bodies, h)));
   // Many fast bodies without gravity: the solver's path too, on trial (see
   // roll_back).
   trial_ = !solver_path_ && fast_count_ > many_fast;
@@ -156,26 +156,53 @@ void AutoMode::mark_fast(const Components& k, std::span<const EntityId> bodies, 
 // no pair overlaps deeper than it: a pair's own overlap counts, and the
 // candidates' reach is that much shorter.
 void AutoMode::mark_closing(const Components& k, std::span<const EntityId> bodies, double h, double overlap_bound) {
-  std::vector<SweptBox>& c = closing_;
-  c.clear();
+  closing_.clear();
   for (const EntityId e : bodies) {
     if (fast_[e]) continue;
-    const Vector v = k.velocity[e], p = k.position[e];
-    const double dx = h * v.x, dy = h * v.y, sq = dx * dx + dy * dy;  // as mark_fast, to the bit
+    const double dx = h * k.velocity[e].x, dy = h * k.velocity[e].y, sq = dx * dx + dy * dy;  // as mark_fast, to the bit
     const double other = std::sqrt(sq == sq1_ ? sq2_ : sq1_);
     if (std::sqrt(sq) + other <= selection().reach(k, e) - overlap_bound) continue;
-    c.push_back({std::min(p.x, p.x + dx), std::max(p.x, p.x + dx) + k.box[e].width, std::min(p.y, p.y + dy),
-                 std::max(p.y, p.y + dy) + k.box[e].height, e});
+    closing_.push_back(swept_box(k, e, h));
   }
-  std::sort(c.begin(), c.end(), [](const SweptBox& a, const SweptBox& b) { return a.x0 < b.x0 || (a.x0 == b.x0 && a.e < b.e); });
-  for (std::size_t i = 0; i < c.size(); ++i)
-    for (std::size_t j = i + 1; j < c.size() && c[j].x0 < c[i].x1; ++j) {
-      if (!(c[j].y0 < c[i].y1 && c[i].y0 < c[j].y1)) continue;
-      const EntityId a = c[i].e, b = c[j].e;
-      if (!CcdSelection::closes_through(k, a, b, 0.0, h, overlap_bound > 0.0)) continue;
+  meeting([&](EntityId a, EntityId b) {
+    if (CcdSelection::closes_through(k, a, b, 0.0, h, overlap_bound > 0.0)) {
       fast_count_ += !fast_[a] + !fast_[b];
       fast_[a] = fast_[b] = 1;
     }
+    return false;
+  });
+}
+
+// Under gravity, whether two finite bodies may meet in this substep (their
+// boxes swept over it overlap). The course's pass would take that landing:
+// it pushes the pair apart by their masses, the lighter one into what
+// carries it and back out, and a heavy body landing on a light one on the
+// floor gains energy from it (the family's ratio-stack: up to 4e-3 of it, at
+// mass ratios of 1e3 to 1e10 with e = 0). The solver takes the landing, then
+// holds for the pair it presses (count_pressed).
+bool AutoMode::landing(const Components& k, std::span<const EntityId> bodies, double h) {
+  closing_.clear();
+  for (const EntityId e : bodies)
+    if (std::isfinite(k.mass[e])) closing_.push_back(swept_box(k, e, h));
+  return closing_.size() > 1 && meeting([](EntityId, EntityId) { return true; });
+}
+
+AutoMode::SweptBox AutoMode::swept_box(const Components& k, EntityId e, double h) {
+  const Vector p = k.position[e], d = h * k.velocity[e];
+  return {std::min(p.x, p.x + d.x), std::max(p.x, p.x + d.x) + k.box[e].width, std::min(p.y, p.y + d.y),
+          std::max(p.y, p.y + d.y) + k.box[e].height, e};
+}
+
+// Calls f(a, b) for each pair of closing_'s boxes that overlap (a sort on x
+// and a sweep, not all pairs) until f returns true; whether one did.
+template <class F>
+bool AutoMode::meeting(F&& f) {
+  std::vector<SweptBox>& c = closing_;
+  std::sort(c.begin(), c.end(), [](const SweptBox& a, const SweptBox& b) { return a.x0 < b.x0 || (a.x0 == b.x0 && a.e < b.e); });
+  for (std::size_t i = 0; i < c.size(); ++i)
+    for (std::size_t j = i + 1; j < c.size() && c[j].x0 < c[i].x1; ++j)
+      if (c[j].y0 < c[i].y1 && c[i].y0 < c[j].y1 && f(c[i].e, c[j].e)) return true;
+  return false;
 }
 
 void AutoMode::keep(const Components& k) {

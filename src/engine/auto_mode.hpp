@@ -10,7 +10,9 @@
 //  - the course's pass, unless contacts persist: the same pair of finite
 //    bodies resolved by two passes in a row (a stack, a squeeze, a pile), or
 //    bouncing contacts under gravity (the pass reflects the whole substep's
-//    gravity kick and the energy creeps up). Then the stable solver, held as
+//    gravity kick and the energy creeps up), or two finite bodies may meet
+//    under gravity (a landing: the pass pushes the lighter one into what
+//    carries it, and the energy grows). Then the stable solver, held as
 //    long as finite bodies carry each other's load and `hold` substeps more
 //    (so that a resting pile does not flip between the two every substep);
 //  - swept collision (CCD) only for the bodies whose motion this substep
@@ -151,7 +153,11 @@ class AutoMode {
     double x0, x1, y0, y1;
     EntityId e;
   };
-  std::vector<SweptBox> closing_;  // mark_closing's candidates (kept: no allocation per substep)
+  std::vector<SweptBox> closing_;  // mark_closing's and landing's candidates (kept: no allocation per substep)
+  static SweptBox swept_box(const Components& k, EntityId e, double h);
+  template <class F>
+  bool meeting(F&& f);
+  bool landing(const Components& k, std::span<const EntityId> bodies, double h);
   std::vector<std::uint8_t> impacted_;  // by entity id: had an impact in the solver this substep
   void count_pressed();
   std::vector<std::uint64_t> pressed_;  // keys of the pairs of finite bodies pressed together this substep

@@ -735,7 +735,7 @@ const std::vector<FailingDraw>& failing_today() {
     {"sensor/4", "course substeps16 stable"},
     {"sensor/5", "course substeps16 stable"},
     {"ratio-stack/1", "course substeps16 ccd stable+ccd"},
-    {"ratio-stack/2", "course substeps16 ccd stable+ccd auto"},
+    {"ratio-stack/2", "course substeps16 ccd stable+ccd"},
     {"ratio-stack/3", "ccd"},
     {"ratio-stack/4", "course substeps16 ccd stable+ccd"},
     {"ratio-stack/5", "stable+ccd"},
