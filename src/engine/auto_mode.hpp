@@ -12,7 +12,9 @@
 //    bouncing contacts under gravity (the pass reflects the whole substep's
 //    gravity kick and the energy creeps up), or two finite bodies may meet
 //    under gravity (a landing: the pass pushes the lighter one into what
-//    carries it, and the energy grows). Then the stable solver, held as
+//    carries it, and the energy grows), or, without gravity, a body about to
+//    be squeezed against a fixed one (a pusher that will close the room left
+//    to a block it drives into a wall: count_squeezed). Then the stable solver, held as
 //    long as finite bodies carry each other's load and `hold` substeps more
 //    (so that a resting pile does not flip between the two every substep);
 //  - swept collision (CCD) only for the bodies whose motion this substep
@@ -46,17 +48,27 @@
 namespace physics {
 
 // What the next substep's choice depends on beyond the bodies: the pairs
-// pressed together in the substeps just before and the solver's hold (a
-// saved world keeps it, so that it runs on bit for bit).
+// pressed together in the substeps just before, the pushes of the last ones
+// and the solver's hold (a saved world keeps it, so that it runs on bit for
+// bit).
 struct AutoState {
   struct Run {
     Pair pair;
     int substeps;  // in a row, up to now
     friend bool operator==(const Run&, const Run&) = default;
   };
+  // The pass's last push of `body` towards `side` (0: +x, 1: -x, 2: +y,
+  // 3: -y), by `by`, `ago` substeps before the last one (AutoMode::persist
+  // at most): what tells a block squeezed against a wall (count_squeezed).
+  struct Push {
+    EntityId body, by;
+    int side, ago;
+    friend bool operator==(const Push&, const Push&) = default;
+  };
   int hold = 0;  // substeps the solver is still held for
   int jam = 0;   // substeps the solver still takes a jam whole for
   std::vector<Run> pressed;
+  std::vector<Push> pushed;
   friend bool operator==(const AutoState&, const AutoState&) = default;
 };
 
@@ -75,7 +87,9 @@ class AutoMode {
   // Substeps in a row a pair of finite bodies must be pressed together
   // (an impulse between them) to count as a persistent contact. Under
   // gravity one is enough: each course pass after a landing pushes the pair
-  // out against gravity again, and the energy grows with every one.
+  // out against gravity again, and the energy grows with every one. Also
+  // the substeps within which a body's pushes from two sides make a squeeze
+  // (count_squeezed).
   static constexpr int persist = 3;
   // More fast bodies than this take the solver's path: its speculative
   // contacts take each one's first impact at the cost of one broad phase,
@@ -160,6 +174,18 @@ class AutoMode {
   bool landing(const Components& k, std::span<const EntityId> bodies, double h);
   std::vector<std::uint8_t> impacted_;  // by entity id: had an impact in the solver this substep
   void count_pressed();
+  void count_squeezed(const Components& k, std::span<const Contact> contacts);
+  bool squeezes(const Components& k, EntityId e, EntityId pusher, EntityId wall, int side) const;
+  // count_squeezed's: each finite body's last push towards each side (0: +x,
+  // 1: -x, 2: +y, 3: -y) in the course's pass: when (plan's count of
+  // substeps) and by which body.
+  struct Push {
+    std::int64_t at = std::numeric_limits<std::int64_t>::min() / 2;
+    EntityId by = 0;
+  };
+  std::vector<std::array<Push, 4>> pushes_;  // by entity id
+  std::int64_t substep_ = 0;  // plan()s so far
+  double h_ = 0;              // the last plan()'s substep, ms
   std::vector<std::uint64_t> pressed_;  // keys of the pairs of finite bodies pressed together this substep
   std::vector<std::pair<std::uint64_t, int>> runs_, next_runs_;  // (key, substeps in a row), sorted
   int hold_left_ = 0;

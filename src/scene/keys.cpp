@@ -594,7 +594,7 @@ const TK tile_rows[] = {
 const KeyDoc state_docs[] = {
     {".frame", "integer", ">= 0", "0", "the frame it was saved after"},
     {".warm_start", "array of [c, b, axis, jn, jt]", "", "[]", "the stable solver's warm-start impulses, by body id"},
-    {".auto", "`{hold, pressed: [[c, b, substeps], ...]}`", "", "–", "with solver `\"auto\"`: its choice's state"},
+    {".auto", "`{hold, jam, pressed: [[c, b, substeps], ...], pushed: [[body, by, side, ago], ...]}`", "", "–", "with solver `\"auto\"`: its choice's state"},
 };
 
 

@@ -54,6 +54,8 @@ SceneSpec scene_of(const World& w, const SceneSpec& from, std::span<const BlockR
     AutoState a = w.automatic.state();
     std::erase_if(a.pressed, [&](const AutoState::Run& r) { return !w.alive(r.pair.c) || !w.alive(r.pair.b); });
     for (AutoState::Run& r : a.pressed) r.pair = {new_id[r.pair.c], new_id[r.pair.b]};
+    std::erase_if(a.pushed, [&](const AutoState::Push& p) { return !w.alive(p.body) || !w.alive(p.by); });
+    for (AutoState::Push& p : a.pushed) p.body = new_id[p.body], p.by = new_id[p.by];
     state.automatic = a;
   }
   s.state = state;

@@ -107,6 +107,13 @@ void check_state(const Checker& k, const SceneSpec& s) {
                      ", " + std::to_string(r.pair.b) + ")");
     if (r.substeps < 1) k.fail(at, "substeps in a row must be >= 1 (got " + std::to_string(r.substeps) + ")");
   }
+  for (std::size_t i = 0; i < a.pushed.size(); ++i) {
+    const AutoState::Push& p = a.pushed[i];
+    if (!(p.body < bodies && p.by < bodies && p.body != p.by))
+      k.fail("state.auto.pushed[" + std::to_string(i) + "]", "must name two bodies < " + std::to_string(bodies) +
+                                                                  " (got " + std::to_string(p.body) + ", " +
+                                                                  std::to_string(p.by) + ")");
+  }
 }
 
 void check_random(const Checker& k, const RandomSpec& r, const std::string& p) {

@@ -169,15 +169,21 @@ void read_pair_rows(const Reader& r, const json* list, const char* name, std::si
   }
 }
 
-// The auto mode's state: {"hold": n, "jam": n, "pressed": [[c, b, substeps], ...]}.
+// The auto mode's state: {"hold": n, "jam": n, "pressed": [[c, b, substeps], ...],
+// "pushed": [[body, by, side, ago], ...]}.
 AutoState read_auto_state(const Reader& r, const json& v) {
-  r.keys(v, "state.auto", {"hold", "jam", "pressed"});
+  r.keys(v, "state.auto", {"hold", "jam", "pressed", "pushed"});
   AutoState out;
   if (const json* h = find(v, "hold")) out.hold = static_cast<int>(r.integer(*h, "state.auto.hold", 0, AutoMode::hold));
   if (const json* j = find(v, "jam")) out.jam = static_cast<int>(r.integer(*j, "state.auto.jam", 0, AutoMode::hold));
   read_pair_rows(r, find(v, "pressed"), "state.auto.pressed", 3, "[c, b, substeps]",
                  [&](const json& e, const Path& p, Pair pair) {
                    out.pressed.push_back({pair, static_cast<int>(r.integer(e[2], p, 1, 1 << 30))});
+                 });
+  read_pair_rows(r, find(v, "pushed"), "state.auto.pushed", 4, "[body, by, side, ago]",
+                 [&](const json& e, const Path& p, Pair pair) {
+                   out.pushed.push_back({pair.c, pair.b, static_cast<int>(r.integer(e[2], p, 0, 3)),
+                                         static_cast<int>(r.integer(e[3], p, 0, AutoMode::persist - 1))});
                  });
   return out;
 }

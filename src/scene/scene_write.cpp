@@ -119,6 +119,9 @@ std::string to_json(const SceneSpec& s) {
       for (const AutoState::Run& r : s.state->automatic->pressed) pressed.push_back({r.pair.c, r.pair.b, r.substeps});
       o["state"]["auto"] = {{"hold", s.state->automatic->hold}, {"pressed", pressed}};
       if (s.state->automatic->jam > 0) o["state"]["auto"]["jam"] = s.state->automatic->jam;  // older files have none
+      ojson pushed = ojson::array();
+      for (const AutoState::Push& p : s.state->automatic->pushed) pushed.push_back({p.body, p.by, p.side, p.ago});
+      if (!pushed.empty()) o["state"]["auto"]["pushed"] = pushed;  // nor this
     }
   }
   std::string out;
