@@ -4,6 +4,7 @@
 // inverse-mass convention (inverse_mass: 0 for a fixed body).
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <utility>
 
@@ -67,14 +68,21 @@ inline double gravity_after_impact(double e, double a_n, double h, double t, boo
 // away from b).
 inline constexpr Vector axis_normal[4] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};
 
+// The gaps between the boxes of c and b along the four axes (negative:
+// overlapping by that much along it).
+inline std::array<double, 4> axis_gaps(Vector pc, Rect rc, Vector pb, Rect rb) {
+  // The sums of Rect::mdiff, written out (the stable solver calls this per contact).
+  const double sx = pb.x - pc.x - rc.width, sy = pb.y - pc.y - rc.height;
+  return {sx, -(sx + (rb.width + rc.width)), sy, -(sy + (rb.height + rc.height))};
+}
+inline std::array<double, 4> axis_gaps(const Components& k, EntityId c, EntityId b) {
+  return axis_gaps(k.position[c], k.box[c], k.position[b], k.box[b]);
+}
+
 // The separating axis with the largest gap; for overlapping boxes that is the
 // shortest way out, with Collision::penetration's tie order (-x, +x, -y, +y).
 inline std::pair<int, double> best_axis(const Components& k, EntityId c, EntityId b) {
-  const Vector pc = k.position[c], pb = k.position[b];
-  const Rect rc = k.box[c], rb = k.box[b];
-  // The sums of Rect::mdiff, written out (the stable solver calls this per contact).
-  const double sx = pb.x - pc.x - rc.width, sy = pb.y - pc.y - rc.height;
-  const double gaps[4] = {sx, -(sx + (rb.width + rc.width)), sy, -(sy + (rb.height + rc.height))};
+  const std::array<double, 4> gaps = axis_gaps(k, c, b);
   int best = 0;
   for (int a = 1; a < 4; ++a)
     if (gaps[a] > gaps[best]) best = a;
@@ -105,11 +113,8 @@ struct ContactAxis {
   int separating;     // best_axis's axis
   bool corner;        // touching along both axes
 };
-inline ContactAxis contact_axis(const Components& k, EntityId c, EntityId b, double touch, int faces = 0) {
-  const Vector pc = k.position[c], pb = k.position[b];
-  const Rect rc = k.box[c], rb = k.box[b];
-  const double sx = pb.x - pc.x - rc.width, sy = pb.y - pc.y - rc.height;  // as best_axis's
-  const double gaps[4] = {sx, -(sx + (rb.width + rc.width)), sy, -(sy + (rb.height + rc.height))};
+// From the pair's gaps (axis_gaps) and relative velocity v_c - v_b.
+inline ContactAxis contact_axis(const std::array<double, 4>& gaps, Vector v, double touch, int faces = 0) {
   const int ax = gaps[1] > gaps[0] ? 1 : 0, ay = gaps[3] > gaps[2] ? 3 : 2;
   const int best = gaps[ay] > gaps[ax] ? ay : ax;
   const bool tx = std::abs(gaps[ax]) <= touch, ty = std::abs(gaps[ay]) <= touch;
@@ -119,10 +124,12 @@ inline ContactAxis contact_axis(const Components& k, EntityId c, EntityId b, dou
   } else if (tx && (faces == 1 || faces == 2)) {
     axis = faces == 1 ? ax : ay;
   } else if (tx) {
-    const Vector v = k.velocity[c] - k.velocity[b];
     if (std::abs(v.x) != std::abs(v.y)) axis = std::abs(v.x) < std::abs(v.y) ? ax : ay;
   }
   return {axis, gaps[axis], gaps[best], best, tx && ty};
+}
+inline ContactAxis contact_axis(const Components& k, EntityId c, EntityId b, double touch, int faces = 0) {
+  return contact_axis(axis_gaps(k, c, b), k.velocity[c] - k.velocity[b], touch, faces);
 }
 
 // 1 if the boxes touch along x face to face (within ±touch along x,

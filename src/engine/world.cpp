@@ -139,6 +139,7 @@ SolverSettings solver_settings(const Params& p) {
   // the family measures.
   const bool rounds = p.solver == Solver::stable || (p.solver == Solver::automatic && !Vector::is_zero(p.gravity));
   s.rounds = rounds ? 3 : 0;
+  s.physical_axes = p.solver == Solver::automatic;
   return s;
 }
 }  // namespace
