@@ -165,7 +165,7 @@ void AutoMode::mark_closing(const Components& k, std::span<const EntityId> bodie
     const double dx = h * k.velocity[e].x, dy = h * k.velocity[e].y, sq = dx * dx + dy * dy;  // as mark_fast, to the bit
     const double other = std::sqrt(sq == sq1_ ? sq2_ : sq1_);
     if (std::sqrt(sq) + other <= selection().reach(k, e) - overlap_bound) continue;
-    closing_.push_back(swept_box(k, e, h));
+    closing_.push_back(candidate(k, e, h));
   }
   meeting([&](EntityId a, EntityId b) {
     if (CcdSelection::closes_through(k, a, b, 0.0, h, overlap_bound > 0.0)) {
@@ -186,25 +186,21 @@ void AutoMode::mark_closing(const Components& k, std::span<const EntityId> bodie
 bool AutoMode::landing(const Components& k, std::span<const EntityId> bodies, double h) {
   closing_.clear();
   for (const EntityId e : bodies)
-    if (std::isfinite(k.mass[e])) closing_.push_back(swept_box(k, e, h));
+    if (std::isfinite(k.mass[e])) closing_.push_back(candidate(k, e, h));
   return closing_.size() > 1 && meeting([](EntityId, EntityId) { return true; });
-}
-
-AutoMode::SweptBox AutoMode::swept_box(const Components& k, EntityId e, double h) {
-  const Vector p = k.position[e], d = h * k.velocity[e];
-  return {std::min(p.x, p.x + d.x), std::max(p.x, p.x + d.x) + k.box[e].width, std::min(p.y, p.y + d.y),
-          std::max(p.y, p.y + d.y) + k.box[e].height, e};
 }
 
 // Calls f(a, b) for each pair of closing_'s boxes that overlap (a sort on x
 // and a sweep, not all pairs) until f returns true; whether one did.
 template <class F>
 bool AutoMode::meeting(F&& f) {
-  std::vector<SweptBox>& c = closing_;
-  std::sort(c.begin(), c.end(), [](const SweptBox& a, const SweptBox& b) { return a.x0 < b.x0 || (a.x0 == b.x0 && a.e < b.e); });
+  std::vector<Candidate>& c = closing_;
+  std::sort(c.begin(), c.end(), [](const Candidate& a, const Candidate& b) {
+    return a.box.x0 < b.box.x0 || (a.box.x0 == b.box.x0 && a.e < b.e);
+  });
   for (std::size_t i = 0; i < c.size(); ++i)
-    for (std::size_t j = i + 1; j < c.size() && c[j].x0 < c[i].x1; ++j)
-      if (c[j].y0 < c[i].y1 && c[i].y0 < c[j].y1 && f(c[i].e, c[j].e)) return true;
+    for (std::size_t j = i + 1; j < c.size() && c[j].box.x0 < c[i].box.x1; ++j)
+      if (c[j].box.y0 < c[i].box.y1 && c[i].box.y0 < c[j].box.y1 && f(c[i].e, c[j].e)) return true;
   return false;
 }
 

@@ -163,12 +163,12 @@ class AutoMode {
 
   std::vector<std::uint8_t> fast_;  // by entity id
   std::vector<double> start_;       // by entity id, ms
-  struct SweptBox {  // a body's box swept over the substep
-    double x0, x1, y0, y1;
+  struct Candidate {  // a body and its box swept over the substep
+    SweptBox box;
     EntityId e;
   };
-  std::vector<SweptBox> closing_;  // mark_closing's and landing's candidates (kept: no allocation per substep)
-  static SweptBox swept_box(const Components& k, EntityId e, double h);
+  std::vector<Candidate> closing_;  // mark_closing's and landing's candidates (kept: no allocation per substep)
+  static Candidate candidate(const Components& k, EntityId e, double h) { return {swept_box(k, e, 0.0, h, false), e}; }
   template <class F>
   bool meeting(F&& f);
   bool landing(const Components& k, std::span<const EntityId> bodies, double h);

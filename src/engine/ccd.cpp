@@ -163,19 +163,8 @@ class ImpactQueue {
   }
 
  private:
-  struct SweptBox {
-    double x0, x1, y0, y1;
-  };
-  // e's box over [t, h] on its line, grown by a hair more than rounding so
-  // that a pair it rules out has no impact whatever time_of_impact rounds.
-  SweptBox swept_box(EntityId e, double t) const {
-    const Vector p = k_.position[e], v = k_.velocity[e];
-    const Vector a = p + t * v, z = p + h_ * v;
-    const double w = k_.box[e].width, ht = k_.box[e].height;
-    const double eps = 1e-9 * (1.0 + std::abs(a.x) + std::abs(a.y) + std::abs(z.x) + std::abs(z.y) + w + ht);
-    return {std::min(a.x, z.x) - eps, std::max(a.x, z.x) + w + eps, std::min(a.y, z.y) - eps,
-            std::max(a.y, z.y) + ht + eps};
-  }
+  // e's box over [t, h] on its line, grown by a hair (swept_box).
+  SweptBox swept_box(EntityId e, double t) const { return physics::swept_box(k_, e, t, h_, true); }
   static bool meet(const SweptBox& a, const SweptBox& b) {
     return a.x0 <= b.x1 && b.x0 <= a.x1 && a.y0 <= b.y1 && b.y0 <= a.y1;
   }

@@ -17,6 +17,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -32,6 +33,23 @@ struct Impact {
   double t;  // ms from the start of the step
   Vector n;  // unit axis that moves c away from b at the impact
 };
+
+// Body e's box swept along its line, position + t·velocity, over [t0, t1]
+// ms of the substep; with `hair`, grown by a hair more than rounding, so that
+// a pair whose two boxes do not meet has no impact whatever time_of_impact
+// rounds (CCD's re-prediction), else exactly the path's (auto's plan).
+struct SweptBox {
+  double x0, x1, y0, y1;
+};
+inline SweptBox swept_box(const Components& k, EntityId e, double t0, double t1, bool hair) {
+  const Vector p = k.position[e], v = k.velocity[e];
+  const Vector a = t0 == 0.0 ? p : p + t0 * v, z = p + t1 * v;
+  const double w = k.box[e].width, ht = k.box[e].height;
+  const double eps =
+      hair ? 1e-9 * (1.0 + std::abs(a.x) + std::abs(a.y) + std::abs(z.x) + std::abs(z.y) + w + ht) : 0.0;
+  return {std::min(a.x, z.x) - eps, std::max(a.x, z.x) + w + eps, std::min(a.y, z.y) - eps,
+          std::max(a.y, z.y) + ht + eps};
+}
 
 // Which bodies CCD sweeps, for the auto mode (engine/auto_mode.hpp); the
 // spans are indexed by entity id. Without a selection every body is swept
