@@ -26,7 +26,7 @@ std::vector<int> family_indices() {
   return out;
 }
 
-// The matrix's auto mode, as make stability runs it.
+// One of the matrix's modes, by name, as make stability runs it.
 Mode stability_mode(const std::string& name) {
   for (const Mode& m : stability_modes())
     if (m.name == name) return m;

@@ -87,32 +87,34 @@ std::optional<Impact> Ccd::time_of_impact(const Components& k, EntityId c, Entit
   const auto [enter, exit, along_x] = sweep(s, size, d);  // engine/sweep.hpp, shared with the ray cast
   if (!(enter < exit) || exit <= t0 || enter > t1) return std::nullopt;
   const double floor = speed_floor(vc, vb);
-  const Vector s0{s.x + t0 * d.x, s.y + t0 * d.y};
-  const Vector out = penetration_vector(s0, size);
-  // A pair that only touches at t0 (an impact a moment ago left it so) may
-  // compute as entered a rounding before t0: it enters at t0, by the
-  // sweep's face. (Its way out is then about 0 long, of either sign or none,
-  // and read as one it let a block that bounced off the floor back into the
-  // one it had just left pass into it: a chain of e = 1 impacts cut short,
-  // the pass after Move pushed them apart, and the energy grew.)
-  const double touch = 1e-12 * (std::abs(s0.x) + std::abs(s0.y) + size.width + size.height);
-  // (Not when it leaves at t0, having had its impact, nor when it touches
-  // across the other axis: a block sliding along a wall that rounding put
-  // inside it by 1e-13 px would meet the wall's end, where a corner's two
-  // walls throw it back and forth for ever at one instant.)
-  const bool entering = t0 - enter < exit - t0 && (along_x ? out.y == 0.0 : out.x == 0.0);
-  if (enter >= t0 || (std::abs(out.x) + std::abs(out.y) <= touch && entering)) {
-    // x wins a tie (along_x), as the course's penetration vector does.
-    const double dn = along_x ? d.x : d.y;
-    if (std::abs(dn) <= floor) return std::nullopt;
-    const Vector n = along_x ? Vector{dn > 0.0 ? 1.0 : -1.0, 0.0} : Vector{0.0, dn > 0.0 ? 1.0 : -1.0};
-    return Impact{std::max(enter, t0), n};
+  if (enter < t0) {
+    // Already overlapping at t0 (spawned so, or left so by a capped
+    // substep): an impact now if the pair approaches along its shortest way
+    // out. But a pair that only touches at t0 (an impact a moment ago left
+    // it so) may compute as entered a rounding before t0, with a way out of
+    // about 0 px of either sign or none; read as one, it let a block that
+    // bounced off the floor pass into the one above it (a chain of e = 1
+    // impacts cut short, the pass after Move pushed them apart, and the
+    // energy grew). Such a pair enters at t0 by the sweep's face, when it is
+    // entering (not leaving after its impact) and touches across that face:
+    // a block sliding along a wall that rounding put 1e-13 px inside it
+    // would otherwise meet the wall's end, where a corner's two walls throw
+    // it back and forth for ever at one instant.
+    const Vector s0{s.x + t0 * d.x, s.y + t0 * d.y};
+    const Vector out = penetration_vector(s0, size);
+    const double touch = 1e-12 * (std::abs(s0.x) + std::abs(s0.y) + size.width + size.height);
+    const bool entering = t0 - enter < exit - t0 && (along_x ? out.y == 0.0 : out.x == 0.0);
+    if (std::abs(out.x) + std::abs(out.y) > touch || !entering) {
+      const Vector n = Vector::normalize(out);
+      if (Vector::dot(vc - vb, n) >= -floor) return std::nullopt;
+      return Impact{t0, n};
+    }
   }
-  // Already overlapping at t0 (spawned so, or left so by a capped substep):
-  // an impact now if the pair approaches along its shortest way out.
-  const Vector n = Vector::normalize(out);
-  if (Vector::dot(vc - vb, n) >= -floor) return std::nullopt;
-  return Impact{t0, n};
+  // x wins a tie (along_x), as the course's penetration vector does.
+  const double dn = along_x ? d.x : d.y;
+  if (std::abs(dn) <= floor) return std::nullopt;
+  const Vector n = along_x ? Vector{dn > 0.0 ? 1.0 : -1.0, 0.0} : Vector{0.0, dn > 0.0 ? 1.0 : -1.0};
+  return Impact{std::max(enter, t0), n};
 }
 
 namespace {
