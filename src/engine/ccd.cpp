@@ -305,6 +305,58 @@ void stop_at_impacts(Components& k, ImpactQueue& queue, Event first, std::span<c
   }
 }
 
+// How many impacts a substep may still resolve. The budget is per stretch
+// of time, not per substep: a jam (an inelastic collapse, a squeeze) piles
+// its impacts up at one instant, while a body that really meets many things
+// in a substep (a bullet bouncing between the walls hundreds of times)
+// spreads them over it. A stretch begins at the first impact past the last
+// one's end and lasts h/64, so a substep holds at most 65 of them, and a jam
+// is still cut after one budget: 16·n + 128 impacts.
+// Without gravity, lossless impacts (e = 1, no friction, between bodies
+// that are finite or at rest) have a budget of their own, larger: they
+// cannot collapse (each keeps the energy, and nothing drives a gap shut
+// without end: an infinite mass that moves is no such body), but a light
+// body squeezed between two heavy ones, or between a heavy one and a wall,
+// takes ~π·sqrt(M/m) of them, 170 000 at 3e9, most of them within one
+// stretch; cut there, the squeeze lost its time or (auto) went to the
+// solver, which loses energy. Each impact re-predicts against every body,
+// so this budget is one of work: Ccd::elastic_work / n impacts. Under
+// gravity a resting pile would spend it every substep (a heavy block resting
+// on a light one on the floor takes ~π·sqrt(M/m) impacts per substep with
+// e = 1: the matrix's 1e9 case took 21 s), so there every impact counts
+// against the first budget.
+class ImpactBudget {
+ public:
+  ImpactBudget(std::size_t bodies, double h, bool weightless)
+      : n_(static_cast<std::int64_t>(bodies)), stretch_(h / 64.0), weightless_(weightless) {}
+
+  // Whether an impact at time t is past the budget of its stretch.
+  bool spent(double t) {
+    if (t >= stretch_end_) {
+      stretch_end_ = t + stretch_;
+      resolved_ = lossless_ = 0;
+    }
+    return resolved_ == budget() || lossless_ == lossless_budget();
+  }
+  // Counts the impact of c and b about to be resolved.
+  void spend(const Components& k, EntityId c, EntityId b) { ++(lossless(k, c, b) ? lossless_ : resolved_); }
+
+ private:
+  std::int64_t budget() const { return 16 * n_ + 128; }
+  std::int64_t lossless_budget() const { return std::max(budget(), Ccd::elastic_work / n_); }
+  bool lossless(const Components& k, EntityId c, EntityId b) const {
+    const auto held_or_free = [&](EntityId e) { return std::isfinite(k.mass[e]) || Vector::is_zero(k.velocity[e]); };
+    return weightless_ && held_or_free(c) && held_or_free(b) &&
+           std::min(k.restitution[c], k.restitution[b]) == 1.0 && pair_friction(k, c, b) == 0.0;
+  }
+
+  std::int64_t n_;
+  double stretch_;
+  bool weightless_;
+  double stretch_end_ = -1.0;
+  std::int64_t resolved_ = 0, lossless_ = 0;
+};
+
 }  // namespace
 
 void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h, Vector gravity, bool exact_motion,
@@ -319,22 +371,9 @@ void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h, V
   ImpactQueue queue(k, entities, h, sel);
   for (const Pair& p : pairs_) queue.predict(p);
   const bool rules = k.any_rules();
-  // The budget is per stretch of time, not per substep: a jam (an inelastic
-  // collapse, a squeeze) piles its impacts up at one instant, while a body
-  // that really meets many things in a substep (a bullet bouncing between
-  // the walls hundreds of times) spreads them over it. A stretch begins at
-  // the first impact past the last one's end and lasts h/64, so a substep
-  // holds at most 65 of them, and a jam is still cut after one budget.
-  const std::int64_t budget = 16 * static_cast<std::int64_t>(entities.size()) + 128;
-  const double stretch = h / 64.0;
-  double stretch_end = -1.0;
-  std::int64_t resolved = 0;
+  ImpactBudget budget(entities.size(), h, Vector::is_zero(gravity));
   while (const auto ev = queue.next()) {
-    if (ev->t >= stretch_end) {
-      stretch_end = ev->t + stretch;
-      resolved = 0;
-    }
-    if (resolved == budget) {
+    if (budget.spent(ev->t)) {
       ++stats.capped_substeps;
       if (rules)
         stop_at_impacts<true>(k, queue, *ev, entities, h, gravity, sense);
@@ -348,9 +387,9 @@ void Ccd::resolve(Components& k, std::span<const EntityId> entities, double h, V
     const auto hit = time_of_impact(k, c, b, ev->t, h);
     if (!hit || hit->t != ev->t) continue;
     sense.piece(c, ev->t), sense.piece(b, ev->t);
+    budget.spend(k, c, b);
     const auto [jn, jt] = impact(k, c, b, hit->n, ev->t, h, gravity, exact_motion);
     events.touch(c, b, hit->n, jn, jt);
-    ++resolved;
     ++stats.impacts;
     if (rules)
       queue.predict_again<true>(*ev);

@@ -93,7 +93,8 @@ class Ccd {
   // Resolves the impacts of the next h ms between the given bodies (the
   // Collision system's, in registration order), as described above. A
   // substep resolves at most 16·n + 128 impacts within any h/64 of it
-  // (a stretch: see resolve); past that (an inelastic
+  // (a stretch; without gravity, lossless impacts have a larger budget of
+  // their own: ImpactBudget in ccd.cpp); past that (an inelastic
   // collapse in a resting stack, a light body squeezed between two heavy
   // ones, which takes ~π·sqrt(M/m) impacts) each body still to meet
   // something stops at its next impact for the rest of the substep, with the
@@ -115,6 +116,11 @@ class Ccd {
   static std::optional<Impact> time_of_impact(const Components& k, EntityId c, EntityId b, double t0, double t1);
 
   CcdStats stats;
+
+  // The work a stretch of lossless impacts may take without gravity:
+  // elastic_work / n impacts with e = 1 and no friction, between bodies
+  // finite or at rest (ImpactBudget in ccd.cpp).
+  static constexpr std::int64_t elastic_work = 4'000'000;
 
  private:
   std::vector<Pair> pairs_;

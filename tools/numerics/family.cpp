@@ -711,7 +711,7 @@ const std::vector<FailingDraw>& failing_today() {
     {"big-step-stack/5", "course substeps16"},
     {"push-into-wall/1", "course"},
     {"push-into-wall/2", "course substeps16 ccd stable+ccd"},
-    {"push-into-wall/3", "course substeps16 ccd stable+ccd"},
+    {"push-into-wall/3", "course substeps16"},
     {"push-into-wall/4", "ccd stable+ccd"},
     {"push-into-wall/5", "course ccd stable+ccd"},
     {"push-row/1", "course"},
