@@ -256,8 +256,9 @@ void write_friction(std::ostream& md, const std::vector<SlideRow>& rows) {
      << "A 40 px block launched at " << num(s.v0) << " px/ms along the floor, friction " << num(s.mu)
      << " (the pair's sqrt(mu_a mu_b)), gravity " << num(s.g) << " px/ms², e = 0: it stops after v0²/(2 mu g) = "
      << num(s.exact()) << " px. Not against the event reference (it has no friction) but against that closed form; "
-        "the error is v0·dt/2 (first order), early for the stable solver and CCD, late for the course pass, which "
-        "moves before friction acts.\n\n"
+        "the error is v0·dt/2 (first order), early for CCD, late for the course pass, which moves before friction "
+        "acts (auto takes this slide with the course pass); the stable solver moves a slider on the trapezoid of "
+        "its velocity over the substep (src/engine/slide.hpp), exact but for the last substep's mu·g·h²/2.\n\n"
      << "| family | setting | stop distance (px) | error | cost (ms/s) |\n|---|---|---|---|---|\n";
   for (const SlideRow& r : rows)
     md << "| " << r.setting.family << " | " << r.setting.label << " | " << num(r.result.distance, 6) << " | "

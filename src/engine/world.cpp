@@ -146,6 +146,7 @@ SolverSettings solver_settings(const Params& p) {
 
 void World::before_forces() {
   if (exact_motion() && declares(SystemId::move)) exact_.start(components, bodies(SystemId::move));
+  if (slides()) slide_.start(components);
 }
 
 void World::before_move(double h) {
@@ -162,8 +163,9 @@ void World::before_move(double h) {
       if (params.ccd) sweep(colliding, h);
     }
   }
-  // Last, so that it sees which velocities the solver and CCD changed, and
-  // timed with Move, whose result it corrects.
+  // Last, so that they see which velocities the solver and CCD changed, and
+  // timed with Move, whose result they correct.
+  if (slides()) times.time(Stage::move, [&] { slide_.shift(components, h); });
   if (exact) times.time(Stage::move, [&] { exact_.shift(components, bodies(SystemId::move), h); });
 }
 
@@ -187,6 +189,7 @@ void World::auto_before_move(std::span<const EntityId> bodies, double h) {
     contact_solver.solve_velocities(components, bodies, h, params.gravity, s, broadphase, times);
     automatic.after_solver(components, bodies, contact_solver.constraints(), h);
     automatic.roll_back(components, bodies, contact_solver.constraints());
+    slide_.after_solver(components, contact_solver.constraints(), contact_solver.friction_rows());
     record_solver_contacts();
   }
   if (automatic.fast_count() == 0) return;
@@ -197,6 +200,7 @@ void World::auto_before_move(std::span<const EntityId> bodies, double h) {
 
 void World::solve_velocities(std::span<const EntityId> bodies, double h, const SolverSettings& s) {
   contact_solver.solve_velocities(components, bodies, h, params.gravity, s, broadphase, times);
+  slide_.after_solver(components, contact_solver.constraints(), contact_solver.friction_rows());
   record_solver_contacts();
 }
 

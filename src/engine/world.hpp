@@ -20,6 +20,7 @@
 #include "engine/integrator.hpp"
 #include "engine/limits.hpp"
 #include "engine/pairs.hpp"
+#include "engine/slide.hpp"
 #include "engine/system_set.hpp"
 #include "engine/tiles.hpp"
 #include "engine/timing.hpp"
@@ -183,6 +184,8 @@ struct World {
   void gather_tiles(double h);
   std::vector<EntityId> colliding_, proxies_, created_;  // gather_tiles' lists
   ExactIntegrator exact_;  // Params::integrator == Integrator::exact
+  SlideIntegrator slide_;  // friction's motion under the stable solver (engine/slide.hpp)
+  bool slides() const { return params.solver != Solver::course && declares(SystemId::collision); }
   std::array<std::optional<std::vector<EntityId>>, all_systems.size()> stages_;  // by SystemId
   std::vector<std::uint8_t> destroyed_;  // by id (1 destroyed, 2 a proxy); shorter than the arrays until either
 };

@@ -1,0 +1,47 @@
+#include "engine/slide.hpp"
+
+#include <cmath>
+
+namespace physics {
+
+void SlideIntegrator::start(const Components& k) {
+  v_start_.assign(k.velocity.begin(), k.velocity.end());
+  sliders_.clear();
+}
+
+void SlideIntegrator::after_solver(const Components& k, std::span<const ContactConstraint> contacts,
+                                   std::span<const FrictionRow> rows) {
+  sliders_.clear();
+  if (rows.empty()) return;  // no contact had friction
+  touched_.assign(k.size(), 0);
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const ContactConstraint& ct = contacts[i];
+    // Against a finite body (one that moves with the slide) the shift is not taken: bit 4.
+    const bool fixed = !std::isfinite(k.mass[ct.c]) || !std::isfinite(k.mass[ct.b]);
+    const std::uint8_t bits = static_cast<std::uint8_t>((ct.axis < 2 ? 1 : 2) | (ct.resting && fixed ? 0 : 4) |
+                                                        (rows[i].lambda + rows[i].lambda2 != 0.0 ? 8 : 0));
+    touched_[ct.c] |= bits;
+    touched_[ct.b] |= bits;
+  }
+  for (std::size_t i = 0; i < contacts.size(); ++i)
+    for (const EntityId e : {contacts[i].c, contacts[i].b}) {
+      const std::uint8_t t = touched_[e];
+      touched_[e] = 0;  // each body once
+      if (!std::isfinite(k.mass[e]) || (t & 8) == 0 || (t & 4) != 0 || (t & 3) == 3 || (t & 3) == 0) continue;
+      const bool along_x = (t & 3) == 2;  // y-normal contacts: a floor or a ceiling
+      sliders_.push_back({e, along_x, along_x ? k.velocity[e].x : k.velocity[e].y});
+    }
+}
+
+void SlideIntegrator::shift(Components& k, double h) {
+  for (const Slider& s : sliders_) {
+    Vector& p = k.position[s.e];
+    const Vector v = k.velocity[s.e], v0 = v_start_[s.e];
+    if ((s.along_x ? v.x : v.y) != s.v) continue;  // CCD changed it since
+    if (s.along_x) p.x -= 0.5 * h * (v.x - v0.x);
+    else p.y -= 0.5 * h * (v.y - v0.y);
+  }
+  sliders_.clear();
+}
+
+}  // namespace physics
