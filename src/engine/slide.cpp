@@ -5,7 +5,7 @@
 namespace physics {
 
 void SlideIntegrator::start(const Components& k) {
-  v_start_.assign(k.velocity.begin(), k.velocity.end());
+  v_start_ = k.velocity;
   sliders_.clear();
 }
 
@@ -14,6 +14,7 @@ void SlideIntegrator::after_solver(const Components& k, std::span<const ContactC
   sliders_.clear();
   if (rows.empty()) return;  // no contact had friction
   touched_.assign(k.size(), 0);
+  v_end_.resize(k.size());
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const ContactConstraint& ct = contacts[i];
     // Against a finite body (one that moves with the slide) the shift is not taken: bit 4.
@@ -26,19 +27,22 @@ void SlideIntegrator::after_solver(const Components& k, std::span<const ContactC
   for (std::size_t i = 0; i < contacts.size(); ++i)
     for (const EntityId e : {contacts[i].c, contacts[i].b}) {
       const std::uint8_t t = touched_[e];
-      touched_[e] = 0;  // each body once
+      if (t & 16) continue;  // listed already
+      touched_[e] = 0;       // each body once
       if (!std::isfinite(k.mass[e]) || (t & 8) == 0 || (t & 4) != 0 || (t & 3) == 3 || (t & 3) == 0) continue;
-      const bool along_x = (t & 3) == 2;  // y-normal contacts: a floor or a ceiling
-      sliders_.push_back({e, along_x, along_x ? k.velocity[e].x : k.velocity[e].y});
+      touched_[e] = t | 16;  // kept for shift(): (t & 3) == 2, y-normal contacts (a floor or a ceiling): along x
+      v_end_[e] = k.velocity[e];
+      sliders_.push_back(e);
     }
 }
 
 void SlideIntegrator::shift(Components& k, double h) {
-  for (const Slider& s : sliders_) {
-    Vector& p = k.position[s.e];
-    const Vector v = k.velocity[s.e], v0 = v_start_[s.e];
-    if ((s.along_x ? v.x : v.y) != s.v) continue;  // CCD changed it since
-    if (s.along_x) p.x -= 0.5 * h * (v.x - v0.x);
+  for (const EntityId e : sliders_) {
+    Vector& p = k.position[e];
+    const Vector v = k.velocity[e], v0 = v_start_[e];
+    const bool along_x = (touched_[e] & 3) == 2;
+    if (along_x ? v.x != v_end_[e].x : v.y != v_end_[e].y) continue;  // CCD changed it since
+    if (along_x) p.x -= 0.5 * h * (v.x - v0.x);
     else p.y -= 0.5 * h * (v.y - v0.y);
   }
   sliders_.clear();

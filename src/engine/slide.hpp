@@ -43,14 +43,12 @@ class SlideIntegrator {
   void shift(Components& k, double h);
 
  private:
-  struct Slider {
-    EntityId e;
-    bool along_x;  // the surface's direction: x for a floor or a ceiling
-    double v;      // its velocity along it after the solver
-  };
   std::vector<Vector> v_start_;        // by entity id: the velocity before Forces
-  std::vector<std::uint8_t> touched_;  // by entity id: 1 x-normal, 2 y-normal, 4 an impact, 8 friction
-  std::vector<Slider> sliders_;
+  std::vector<Vector> v_end_;          // by entity id: a slider's velocity after the solver
+  // By entity id, over its contacts: 1 x-normal, 2 y-normal, 4 an impact or a
+  // finite support, 8 friction; a slider keeps its bits, and 16, until shift().
+  std::vector<std::uint8_t> touched_;
+  std::vector<EntityId> sliders_;
 };
 
 }  // namespace physics
