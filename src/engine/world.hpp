@@ -185,7 +185,10 @@ struct World {
   std::vector<EntityId> colliding_, proxies_, created_;  // gather_tiles' lists
   ExactIntegrator exact_;  // Params::integrator == Integrator::exact
   SlideIntegrator slide_;  // friction's motion under the stable solver (engine/slide.hpp)
-  bool slides() const { return params.solver != Solver::course && declares(SystemId::collision); }
+  // (It corrects Move's result: without Move nothing moves, and nothing is shifted.)
+  bool slides() const {
+    return params.solver != Solver::course && declares(SystemId::collision) && declares(SystemId::move);
+  }
   std::array<std::optional<std::vector<EntityId>>, all_systems.size()> stages_;  // by SystemId
   std::vector<std::uint8_t> destroyed_;  // by id (1 destroyed, 2 a proxy); shorter than the arrays until either
 };
