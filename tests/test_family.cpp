@@ -190,8 +190,8 @@ BOOST_AUTO_TEST_CASE(ccd_keeps_a_chain_of_elastic_impacts_at_one_instant_going) 
 // within one stretch of the substep: CCD's budget for lossless impacts
 // without gravity takes them all (it cut them at 176 and lost the time, and
 // auto gave the jam to the solver, which lost up to 85 % of the energy), and
-// none of the substeps runs out of budget any more; a
-// wall at rest counts as lossless too (push-into-wall 17: a 3e11 pusher).
+// none of the substeps runs out of budget any more; a wall at rest counts as
+// lossless too (push-into-wall 17: a 3e11 pusher).
 BOOST_AUTO_TEST_CASE(ccd_takes_an_elastic_squeeze_to_its_end_without_gravity) {
   for (const std::string mode : {"ccd", "stable+ccd", "auto"})
     for (const std::uint64_t seed : {11, 20, 27, 42, 46, 48}) {

@@ -29,7 +29,7 @@ void SlideIntegrator::after_solver(const Components& k, std::span<const ContactC
       const std::uint8_t t = touched_[e];
       if (t & 16) continue;  // listed already
       touched_[e] = 0;       // each body once
-      if (!std::isfinite(k.mass[e]) || (t & 8) == 0 || (t & 4) != 0 || (t & 3) == 3 || (t & 3) == 0) continue;
+      if (!std::isfinite(k.mass[e]) || (t & 8) == 0 || (t & 4) != 0 || (t & 3) == 3) continue;
       touched_[e] = t | 16;  // kept for shift(): (t & 3) == 2, y-normal contacts (a floor or a ceiling): along x
       v_end_[e] = k.velocity[e];
       sliders_.push_back(e);
