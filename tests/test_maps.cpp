@@ -240,6 +240,9 @@ BOOST_AUTO_TEST_CASE(tiled_maps_it_does_not_take_are_one_line_errors) {
   // of none read as "an integer in [0, -1]"; a tileset that is a pipe blocked the load.
   expect_map_error("platform.tmj", [](json& m) { m["tilesets"][0]["tilecount"] = 0; },
                    "tilesets[0] \"terrain\": lists tiles but has none (tilecount 0)");
+  // A tile listed twice has two kinds, or the same one twice: which wins would be a guess.
+  expect_map_error("platform.tmj", [](json& m) { m["tilesets"][0]["tiles"].push_back(m["tilesets"][0]["tiles"][0]); },
+                   "tilesets[0] \"terrain\": lists tile 1 twice");
   {
     const TempDir fifo_dir;
     const std::string fifo = (fifo_dir.path / "pipe.tsj").string();

@@ -190,14 +190,20 @@ bool AutoMode::landing(const Components& k, std::span<const EntityId> bodies, do
   return closing_.size() > 1 && meeting([](EntityId, EntityId) { return true; });
 }
 
+// closing_ by the left edge of its boxes (meeting's sweep). Not in the
+// template: one sort for both callers (the web build's size).
+void AutoMode::sort_closing() {
+  std::sort(closing_.begin(), closing_.end(), [](const Candidate& a, const Candidate& b) {
+    return a.box.x0 < b.box.x0 || (a.box.x0 == b.box.x0 && a.e < b.e);
+  });
+}
+
 // Calls f(a, b) for each pair of closing_'s boxes that overlap (a sort on x
 // and a sweep, not all pairs) until f returns true; whether one did.
 template <class F>
 bool AutoMode::meeting(F&& f) {
-  std::vector<Candidate>& c = closing_;
-  std::sort(c.begin(), c.end(), [](const Candidate& a, const Candidate& b) {
-    return a.box.x0 < b.box.x0 || (a.box.x0 == b.box.x0 && a.e < b.e);
-  });
+  sort_closing();
+  const std::vector<Candidate>& c = closing_;
   for (std::size_t i = 0; i < c.size(); ++i)
     for (std::size_t j = i + 1; j < c.size() && c[j].box.x0 < c[i].box.x1; ++j)
       if (c[j].box.y0 < c[i].box.y1 && c[i].box.y0 < c[j].box.y1 && f(c[i].e, c[j].e)) return true;

@@ -171,6 +171,7 @@ class AutoMode {
   static Candidate candidate(const Components& k, EntityId e, double h) { return {swept_box(k, e, 0.0, h, false), e}; }
   template <class F>
   bool meeting(F&& f);
+  void sort_closing();
   bool landing(const Components& k, std::span<const EntityId> bodies, double h);
   std::vector<std::uint8_t> impacted_;  // by entity id: had an impact in the solver this substep
   void count_pressed();

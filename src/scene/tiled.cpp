@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cstdint>
 #include <filesystem>
-#include <unordered_map>
 
 #include "scene/map.hpp"
 #include "scene/scene_json.hpp"
@@ -29,7 +28,10 @@ constexpr std::uint64_t gid_flags = 0xF0000000u;  // flips and rotation: a flipp
 // properties make it other than solid.
 struct Tileset {
   std::int64_t first = 1, count = 0;
-  std::unordered_map<std::int64_t, char> kinds;  // by tile id
+  // The listed tiles, id << 8 | kind, sorted (a binary search per cell; a
+  // hash table would add its code to the web build for this alone). A tile
+  // not listed is solid.
+  std::vector<std::uint64_t> kinds;
 };
 
 // What the readers of one map share: the file, its folder, its tile size, its tilesets.
@@ -117,8 +119,13 @@ Tileset read_tileset(const Map& c, const json& ref, const std::string& at) {
     for (const json& tile : *tiles) {
       if (t.count == 0) fail(c.source, what, "lists tiles but has none (tilecount 0)");
       const std::int64_t id = integer(c.source, need(tile, "id", c.source, what + ", a tile"), what + ", a tile's id", 0, t.count - 1);
-      if (const char k = tile_kind(c, tile, what + ", tile " + std::to_string(id)); k != map_io::solid_cell) t.kinds[id] = k;
+      const char k = tile_kind(c, tile, what + ", tile " + std::to_string(id));
+      t.kinds.push_back(std::uint64_t(id) << 8 | static_cast<unsigned char>(k));
     }
+  std::sort(t.kinds.begin(), t.kinds.end());
+  for (std::size_t i = 1; i < t.kinds.size(); ++i)
+    if (t.kinds[i] >> 8 == t.kinds[i - 1] >> 8)
+      fail(c.source, what, "lists tile " + std::to_string(t.kinds[i] >> 8) + " twice");
   return t;
 }
 
@@ -139,8 +146,9 @@ char cell_of(const Map& c, std::uint64_t raw, const std::string& what, std::size
   auto set = std::upper_bound(c.sets.begin(), c.sets.end(), gid, [](std::int64_t g, const Tileset& t) { return g < t.first; });
   if (set == c.sets.begin() || gid - (--set)->first >= set->count)
     fail(c.source, what + ".data[" + std::to_string(index) + "]", "gid " + std::to_string(gid) + " is in no tileset");
-  const auto k = set->kinds.find(gid - set->first);
-  return k == set->kinds.end() ? map_io::solid_cell : k->second;
+  const std::uint64_t id = static_cast<std::uint64_t>(gid - set->first);
+  const auto k = std::lower_bound(set->kinds.begin(), set->kinds.end(), id << 8);
+  return k != set->kinds.end() && *k >> 8 == id ? static_cast<char>(*k & 0xff) : map_io::solid_cell;
 }
 
 // A tile layer (CSV data: an array of gids, row by row) as an entry of "tiles".
