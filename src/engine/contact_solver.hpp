@@ -55,6 +55,7 @@
 
 #include "engine/components.hpp"
 #include "engine/contact.hpp"
+#include "engine/island_solve.hpp"
 #include "engine/pairs.hpp"
 #include "engine/timing.hpp"
 
@@ -83,6 +84,10 @@ struct SolverSettings {
   // its last round stops the bullet), and as the cheapest passing mode
   // there it puts auto's cost at 3-9x its own (branch autofix-stable-axes).
   bool physical_axes = false;
+  // By entity id, the velocities before this substep's Forces (the slide
+  // integrator's, engine/slide.hpp); with CCD on, the pairs Forces turned to
+  // close within the substep are left to it (turned_by_forces()). Empty: none.
+  std::span<const Vector> before_forces;
 };
 
 // A resting contact's impulses at the end of a substep: what the next
@@ -156,6 +161,7 @@ class ContactSolver {
  private:
   // The stages of solve_velocities, in order.
   void prepare(const Components& k, double h, Vector g, const SolverSettings& s);
+  static bool turned_by_forces(const SolverSettings& s, const Pair& p, Vector n);
   void schedule(const Components& k, Vector g);
   void warm_start(Components& k);
   void warm_start_search(Components& k);
@@ -213,6 +219,7 @@ class ContactSolver {
 
   std::vector<Pair> pairs_;
   std::vector<ContactConstraint> contacts_;
+  IslandSolve islands_solve_;  // relax's exact solve of small free islands (engine/island_solve.hpp)
   // The iterations' copy of the contacts and their bodies (schedule()):
   // what the hot loop reads and nothing else, bodies by a dense slot.
   struct SolverBody {

@@ -41,6 +41,8 @@ class SlideIntegrator {
   void after_solver(const Components& k, std::span<const ContactConstraint> contacts,
                     std::span<const FrictionRow> rows);
   void shift(Components& k, double h);
+  // By entity id, the velocities before this substep's Forces (start()).
+  std::span<const Vector> before_forces() const { return v_start_; }
 
  private:
   std::vector<Vector> v_start_;        // by entity id: the velocity before Forces

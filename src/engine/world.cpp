@@ -198,7 +198,8 @@ void World::auto_before_move(std::span<const EntityId> bodies, double h) {
   automatic.after_sweep(sweep(bodies, h, &selection));
 }
 
-void World::solve_velocities(std::span<const EntityId> bodies, double h, const SolverSettings& s) {
+void World::solve_velocities(std::span<const EntityId> bodies, double h, SolverSettings s) {
+  if (slides()) s.before_forces = slide_.before_forces();
   contact_solver.solve_velocities(components, bodies, h, params.gravity, s, broadphase, times);
   slide_.after_solver(components, contact_solver.constraints(), contact_solver.friction_rows());
   record_solver_contacts();

@@ -178,7 +178,7 @@ struct World {
   void record_solver_contacts();  // before_move's, after the stable solver's velocities
   void auto_before_move(std::span<const EntityId> bodies, double h);
   // The stable solver's velocities (and their contacts' events).
-  void solve_velocities(std::span<const EntityId> bodies, double h, const SolverSettings& s);
+  void solve_velocities(std::span<const EntityId> bodies, double h, SolverSettings s);
   // CCD over the bodies (a selection's only, if given); whether it ran out of budget.
   bool sweep(std::span<const EntityId> bodies, double h, const CcdSelection* selection = nullptr);
   void gather_tiles(double h);
