@@ -173,7 +173,8 @@ std::vector<ShockPass> shock_passes(const Components& k, const Contacts& contact
 
 void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> entities, double h, Vector g,
                                      const SolverSettings& s, BroadPhase& broadphase, StageTimes& times) {
-  times.time(Stage::pairs, [&] { broadphase.find(k, entities, h, s.margin, pairs_); });
+  StageTimes::Laps laps(times);
+  laps.time(Stage::pairs, [&] { broadphase.find(k, entities, h, s.margin, pairs_); });
   for (const EntityId e : shifted_) line_start_[e] = 0.0;
   shifted_.clear();
   line_start_.resize(k.size(), 0.0);
@@ -183,26 +184,26 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
   earlier_jt_.clear();
   for (int round = 0;; ++round) {
     last_round_ = s.rounds > 0 && round == s.rounds;
-    times.time(Stage::prepare, [&] {
+    laps.time(Stage::prepare, [&] {
       // Once per body, not per contact end (a division each).
       inverse_mass_.resize(k.size());
       for (const EntityId e : entities) inverse_mass_[e] = inverse_mass(k.mass[e]);
       prepare(k, h, g, s);
     });
     // Later rounds start from velocities that hold this substep's impulses already.
-    if (round == 0) times.time(Stage::warm_start, [&] { warm_start(k); });
-    times.time(Stage::relax, [&] { relax<false>(k, g, s); });
-    times.time(Stage::restitution, [&] { restitution(k, g, s); });
-    times.time(Stage::impact_time, [&] { impact_time(k, h, g, s.exact_motion); });
+    if (round == 0) laps.time(Stage::warm_start, [&] { warm_start(k); });
+    laps.time(Stage::relax, [&] { relax<false>(k, g, s); });
+    laps.time(Stage::restitution, [&] { restitution(k, g, s); });
+    laps.time(Stage::impact_time, [&] { impact_time(k, h, g, s.exact_motion); });
     // With CCD on, it sweeps every pair after the solver: what the solve
     // turned towards each other is its business.
     if (!s.impacts || round == s.rounds) break;
     bool again = false;
-    times.time(Stage::pairs, [&] { again = turned_to_meet(k, entities, h, s, broadphase); });
+    laps.time(Stage::pairs, [&] { again = turned_to_meet(k, entities, h, s, broadphase); });
     if (!again) break;
     keep_round();
   }
-  times.time(Stage::store, [&] { store(); });
+  laps.time(Stage::store, [&] { store(); });
   if (!earlier_.empty()) keep_round();
 }
 
@@ -234,11 +235,7 @@ void ContactSolver::prepare(const Components& k, double h, Vector g, const Solve
     const Vector n = axis_normal[axis];
     const double vn = Vector::dot(v, n);
     const bool impact = vn < -threshold && gap + vn * h <= 0.0;
-    // With CCD on, impacts are its business: it finds each one's exact time
-    // and resolves chains of them one after the other (a cradle). The solver
-    // keeps the resting contacts, which CCD alone cannot hold.
-    if (impact && !s.impacts) continue;
-    if (!s.impacts && !impact && gap > s.touch && gap + vn * h <= 0.0 && turned_by_forces(s, p, n)) continue;
+    if (!s.impacts && left_to_ccd(s, p, n, impact, gap + vn * h <= 0.0 && gap > s.touch)) continue;
     const double wc = inverse_mass_[p.c], wb = inverse_mass_[p.b];
     moving_fixed_ = moving_fixed_ || (wc == 0.0 && !Vector::is_zero(k.velocity[p.c])) ||
                     (wb == 0.0 && !Vector::is_zero(k.velocity[p.b]));
@@ -278,10 +275,20 @@ void ContactSolver::prepare(const Components& k, double h, Vector g, const Solve
 // impact gives back upward with gravity's kick added: an e = 1 block hopping
 // on the floor gained 8.3e-7 of the energy in play (the family's ratio-stack
 // seed 27, under stable+ccd and auto). CCD takes it at its instant.
+// A tile strip gather_tiles() made in this substep, after the copy, has no
+// velocity before Forces there: its pair stays the solver's.
 bool ContactSolver::turned_by_forces(const SolverSettings& s, const Pair& p, Vector n) {
   const std::span<const Vector> v = s.before_forces;
   if (p.c >= v.size() || p.b >= v.size()) return false;
   return Vector::dot(v[p.c] - v[p.b], n) >= 0.0;
+}
+
+// With CCD on, impacts are its business: it finds each one's exact time and
+// resolves chains of them one after the other (a cradle), and so are the
+// pairs Forces turned to close within the substep (above). The solver keeps
+// the resting contacts, which CCD alone cannot hold.
+bool ContactSolver::left_to_ccd(const SolverSettings& s, const Pair& p, Vector n, bool impact, bool closes_apart) {
+  return impact || (closes_apart && turned_by_forces(s, p, n));
 }
 
 // A contact is a pair close or closing at the start of the substep
@@ -817,8 +824,9 @@ void ContactSolver::solve_positions(Components& k, std::span<const EntityId> ent
                                     const SolverSettings& s, BroadPhase& broadphase, StageTimes& times) {
   // Touching pairs too (within the margin): they take no correction but link
   // the support graph of the bottom-up pass down to the ground.
-  times.time(Stage::pairs, [&] { broadphase.find(k, entities, 0.0, s.margin, pairs_); });
-  times.time(Stage::positions, [&] {
+  StageTimes::Laps laps(times);
+  laps.time(Stage::pairs, [&] { broadphase.find(k, entities, 0.0, s.margin, pairs_); });
+  laps.time(Stage::positions, [&] {
     if (prepare_positions(k, s)) project(k, g, s);
   });
 }

@@ -162,6 +162,7 @@ class ContactSolver {
   // The stages of solve_velocities, in order.
   void prepare(const Components& k, double h, Vector g, const SolverSettings& s);
   static bool turned_by_forces(const SolverSettings& s, const Pair& p, Vector n);
+  static bool left_to_ccd(const SolverSettings& s, const Pair& p, Vector n, bool impact, bool closes_apart);
   void schedule(const Components& k, Vector g);
   void warm_start(Components& k);
   void warm_start_search(Components& k);

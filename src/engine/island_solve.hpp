@@ -18,7 +18,9 @@
 // impulse would pull is dropped and one left approaching is added, until
 // none does (an active-set method: a few rounds at most on a chain). The
 // impulses are the contact law's (engine/contact.hpp), so momentum is kept
-// exactly; a singular system or no convergence leaves the iterations' result.
+// exactly; a singular system, one too ill-conditioned (a chain past a mass
+// ratio of about 1e9: solve_active()) or no convergence leaves the
+// iterations' result.
 #pragma once
 
 #include <array>
@@ -50,9 +52,9 @@ class IslandSolve {
   std::vector<std::uint64_t> keys_;         // root << 32 | contact, of the free islands' contacts
   // The island's system, by member: A = J M^-1 J^T, r = target - v_n, the
   // accumulated impulses, rounding's slack, the solution, the active set.
-  std::array<std::array<double, max_contacts>, max_contacts> a_;
-  std::array<double, max_contacts> r_, lambda_, tol_, delta_;
-  std::array<bool, max_contacts> active_;
+  std::array<std::array<double, max_contacts>, max_contacts> a_{};
+  std::array<double, max_contacts> r_{}, lambda_{}, tol_{}, delta_{};
+  std::array<bool, max_contacts> active_{};
 };
 
 }  // namespace physics
