@@ -233,13 +233,10 @@ void AutoMode::roll_back(Components& k, std::span<const EntityId> bodies, std::s
   undone_.resize(k.size(), 0);
   root_.resize(k.size());
   islands_.resize(k.size());
-  for (const EntityId e : bodies) root_[e] = e, islands_[e] = {};
-  const auto find = [&](EntityId e) {
-    while (root_[e] != e) e = root_[e] = root_[root_[e]];
-    return e;
-  };
+  for (const EntityId e : bodies) root_.add(e), islands_[e] = {};
+  const auto find = [&](EntityId e) { return root_.find(e); };
   for (const ContactConstraint& ct : contacts)
-    if (ct.wc > 0.0 && ct.wb > 0.0) root_[find(ct.c)] = find(ct.b);
+    if (ct.wc > 0.0 && ct.wb > 0.0) root_.join(ct.c, ct.b);
   // Per body, its pushing contacts (1: one, 2: a bounce among them, 3: a chain).
   for (const ContactConstraint& ct : contacts) {
     if (!(ct.lambda + ct.lambda2 > 0.0)) continue;  // no impulse: it changed nothing

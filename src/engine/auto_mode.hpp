@@ -44,6 +44,7 @@
 #include "engine/ccd.hpp"
 #include "engine/contact.hpp"
 #include "engine/contact_solver.hpp"
+#include "engine/union_find.hpp"
 
 namespace physics {
 
@@ -199,7 +200,7 @@ class AutoMode {
     bool chain = false, elastic = true;
     double before = 0, after = 0;  // kinetic energy
   };
-  std::vector<EntityId> root_;        // roll_back()'s islands (union-find), by entity id
+  UnionFind root_;                    // roll_back()'s islands, by entity id
   std::vector<Island> islands_;       // by entity id (of the root)
   std::vector<std::uint8_t> undone_;  // by entity id
   bool solver_path_ = false;

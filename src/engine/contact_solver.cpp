@@ -770,14 +770,11 @@ bool ContactSolver::any_body_gained(const Components& k) const {
 // order the sums are taken in).
 void ContactSolver::island_energies(const Components& k) {
   const auto n = k.size();
-  parent_.resize(n);
-  for (const ContactConstraint& ct : contacts_) parent_[ct.c] = ct.c, parent_[ct.b] = ct.b;
-  const auto find = [&](EntityId x) {
-    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
-    return x;
-  };
+  islands_.resize(n);
+  for (const ContactConstraint& ct : contacts_) islands_.add(ct.c), islands_.add(ct.b);
+  const auto find = [&](EntityId x) { return islands_.find(x); };
   for (const ContactConstraint& ct : contacts_)
-    if (ct.wc > 0.0 && ct.wb > 0.0) parent_[find(ct.c)] = find(ct.b);
+    if (ct.wc > 0.0 && ct.wb > 0.0) islands_.join(ct.c, ct.b);
   // Found by marking: no sort.
   bodies_.clear();
   seen_.assign(n, 0);

@@ -58,6 +58,7 @@
 #include "engine/island_solve.hpp"
 #include "engine/pairs.hpp"
 #include "engine/timing.hpp"
+#include "engine/union_find.hpp"
 
 namespace physics {
 
@@ -279,7 +280,7 @@ class ContactSolver {
   bool moving_fixed_ = false;  // some contact of the substep has a fixed body that moves
   std::vector<IslandEnergy> sums_;
   std::vector<EntityId> bodies_;               // finite bodies of the contacts, by id
-  std::vector<EntityId> parent_;               // union-find of islands
+  UnionFind islands_;                          // the energy guard's islands
   std::vector<std::uint32_t> island_;
   std::vector<std::uint8_t> seen_;             // guard_energy: bodies of the contacts
   std::vector<std::uint32_t> root_index_;      // guard_energy: island of each root

@@ -35,18 +35,15 @@ void IslandSolve::solve(Components& k, std::span<ContactConstraint> contacts, st
   // joins its island to one more node, `held` (k.size()): such islands are
   // left to the iterations (and shock propagation).
   const auto held = static_cast<EntityId>(k.size());
-  parent_.resize(k.size() + 1);
-  parent_[held] = held;
-  for (const ContactConstraint& ct : contacts) parent_[ct.c] = ct.c, parent_[ct.b] = ct.b;
-  const auto find = [&](EntityId e) {
-    while (parent_[e] != e) e = parent_[e] = parent_[parent_[e]];
-    return e;
-  };
+  islands_.resize(k.size() + 1);
+  islands_.add(held);
+  for (const ContactConstraint& ct : contacts) islands_.add(ct.c), islands_.add(ct.b);
+  const auto find = [&](EntityId e) { return islands_.find(e); };
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const ContactConstraint& ct = contacts[i];
     const bool left = !free_pair(ct) || (!friction.empty() && friction[i].mu > 0.0);
-    parent_[find(ct.c)] = find(ct.b);
-    if (left) parent_[find(ct.b)] = find(held);
+    islands_.join(ct.c, ct.b);
+    if (left) islands_.join(ct.b, held);
   }
   // The free islands' contacts, grouped by root (in their order within each).
   keys_.clear();

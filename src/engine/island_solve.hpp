@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "engine/components.hpp"
+#include "engine/union_find.hpp"
 
 namespace physics {
 
@@ -48,7 +49,7 @@ class IslandSolve {
   bool violated(const Components& k, const ContactConstraint& ct) const;
   bool solve_island(Components& k, std::span<ContactConstraint> contacts, std::span<const std::uint64_t> members);
   bool solve_active(std::size_t m);
-  std::vector<EntityId> parent_;            // union-find over bodies, and `held` (solve)
+  UnionFind islands_;                       // over bodies, and `held` (solve)
   std::vector<std::uint64_t> keys_;         // root << 32 | contact, of the free islands' contacts
   // The island's system, by member: A = J M^-1 J^T, r = target - v_n, the
   // accumulated impulses, rounding's slack, the solution, the active set.

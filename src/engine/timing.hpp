@@ -39,8 +39,10 @@ struct StageTimes {
   void time(Stage s, F&& f) {
     const auto t0 = std::chrono::steady_clock::now();
     f();
-    ns[static_cast<std::size_t>(s)] +=
-        std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - t0).count();
+    add(s, std::chrono::steady_clock::now() - t0);
+  }
+  void add(Stage s, std::chrono::steady_clock::duration d) {
+    ns[static_cast<std::size_t>(s)] += std::chrono::duration_cast<std::chrono::nanoseconds>(d).count();
   }
 
   // Stages run one after the other: each lap ends where the next one starts,
@@ -56,7 +58,7 @@ struct StageTimes {
     void time(Stage s, F&& f) {
       f();
       const auto now = std::chrono::steady_clock::now();
-      times_.ns[static_cast<std::size_t>(s)] += std::chrono::duration_cast<std::chrono::nanoseconds>(now - last_).count();
+      times_.add(s, now - last_);
       last_ = now;
     }
 
