@@ -269,7 +269,11 @@ void UniformGrid::sort_pairs(std::size_t n) {
   for (const PairKey k : found_) ++first_count_[pair_first(k)];
   for (std::size_t i = 1; i <= n; ++i) first_count_[i] += first_count_[i - 1];
   pairs_.resize(found_.size());
-  for (const PairKey k : found_) pairs_[--first_count_[pair_first(k)]] = k;
+  // Placed from the last found backwards, so that each run keeps the order
+  // the pairs were found in, which is mostly increasing (a cell's bodies are
+  // in index order): insertion sort is then nearly free, where a reversed
+  // run cost O(len²) (1 000 blocks on one spot: 0.1 s a pass).
+  for (auto k = found_.rbegin(); k != found_.rend(); ++k) pairs_[--first_count_[pair_first(*k)]] = *k;
   // first_count_[i] is now where the pairs of first index i begin.
   for (std::size_t i = 0; i < n; ++i) {
     PairKey* const run = pairs_.data() + first_count_[i];

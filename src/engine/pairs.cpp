@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 
 namespace physics {
 
@@ -35,8 +36,9 @@ BroadPhase::CoursePairs BroadPhase::course_pairs(const Components& k, std::span<
   course_build(k);
   stats_.candidates = grid_.pairs().size();
   // Past this many bodies out of their boxes (a crowded or overlapping
-  // start), rebuilding at the current positions is cheaper than querying on.
-  rebuild_after_ = std::max<std::size_t>(256, entities.size() / 4);
+  // start), looking up each body's pairs when the loop reaches it costs less
+  // than queuing every pair a move may form.
+  rows_after_ = std::max<std::size_t>(256, entities.size() / 4);
   next_ = moved_ = 0;
   last_ = ~PairKey{0};  // never a pair: i < j < 2^32 - 1
   started_ = false;
@@ -80,17 +82,79 @@ bool BroadPhase::refresh(const Components& k, std::uint32_t i, PairKey current) 
 void BroadPhase::pushed_out(const Components& k) {
   // The pair handed out last was corrected: bodies it pushed out of their
   // boxes get their new pairs.
+  if (stats_.by_rows) return row_pushed_out(k);
   moved_ += refresh(k, pair_first(last_), last_) + refresh(k, pair_second(last_), last_);
-  if (moved_ <= rebuild_after_) return;
-  course_build(k);
-  const std::vector<PairKey>& rebuilt = grid_.pairs();
-  next_ = static_cast<std::size_t>(std::upper_bound(rebuilt.begin(), rebuilt.end(), last_) - rebuilt.begin());
+  if (moved_ > rows_after_) start_rows();
+}
+
+// ---- the course pass, row by row ----
+//
+// Many bodies pushed out (blocks placed on top of each other: each
+// correction pushes the next block out, and every block in the pile is
+// queued again) would fill found_late_ with copies of pairs listed ahead. On
+// from here, the loop's row i takes its pairs (i, j > i) from a grid of the
+// boxes as they are when it begins; only moves of i itself during its row
+// look its pairs up again. A move of j changes no pair of row i but (i, j),
+// which is done, so it only updates the grid for the rows ahead. Same pairs,
+// same order: every pair that overlaps when the loop reaches it is listed.
+
+void BroadPhase::start_rows() {
+  stats_.by_rows = true;
+  row_grid_.index(boxes_);
+  row_moves_ = 0;
   found_late_.clear();
-  moved_ = 0;
-  ++stats_.rebuilds;
+  next_ = std::numeric_limits<std::size_t>::max();  // the listed pairs are done with: course_next takes the slow path
+  row_ = pair_first(last_);
+  row_candidates(row_, pair_second(last_));
+}
+
+void BroadPhase::row_candidates(std::uint32_t i, std::uint32_t after) {
+  row_pairs_.clear();
+  row_next_ = 0;
+  const FloatBox box = boxes_[i];
+  // The grid may report a body for a box it has left, or twice: the test on
+  // its box now and the sort keep each body that overlaps once.
+  row_grid_.query(box, [&](std::uint32_t j) {
+    if (j > after && !(fixed_[i] && fixed_[j]) && overlap(boxes_[j], box)) row_pairs_.push_back(j);
+  });
+  std::sort(row_pairs_.begin(), row_pairs_.end());
+  row_pairs_.erase(std::unique(row_pairs_.begin(), row_pairs_.end()), row_pairs_.end());
+}
+
+bool BroadPhase::row_next(Pair& out) {
+  while (row_next_ == row_pairs_.size()) {
+    if (++row_ >= course_entities_.size()) return false;
+    row_candidates(row_, row_);
+  }
+  last_ = pair_key(row_, row_pairs_[row_next_++]);
+  out = {course_entities_[row_], course_entities_[pair_second(last_)]};
+  return true;
+}
+
+bool BroadPhase::row_refresh(const Components& k, std::uint32_t i) {
+  if (inside(k, i)) return false;
+  const EntityId e = course_entities_[i];
+  boxes_[i] = FloatBox::around(k.position[e], k.box[e], course_margin);
+  // Old boxes stay in the grid's cells; index afresh before they outnumber the bodies.
+  if (++row_moves_ > boxes_.size() + 1024) {
+    row_grid_.index(boxes_);
+    row_moves_ = 0;
+  } else {
+    row_grid_.move(i, boxes_[i]);
+  }
+  ++stats_.requeries;
+  return true;
+}
+
+void BroadPhase::row_pushed_out(const Components& k) {
+  const std::uint32_t i = pair_first(last_), j = pair_second(last_);
+  row_refresh(k, j);
+  // i moved: the rest of its row, looked up again from its new box.
+  if (row_refresh(k, i)) row_candidates(i, j);
 }
 
 bool BroadPhase::course_next_slow(Pair& out) {
+  if (stats_.by_rows) return row_next(out);
   for (;;) {
     const std::vector<PairKey>& listed = grid_.pairs();
     const bool in_list = next_ < listed.size();

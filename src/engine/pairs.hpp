@@ -10,6 +10,10 @@
 //    form that the loop has not reached yet are found and merged in. So the
 //    pass resolves exactly the pairs the all-pairs loop finds overlapping,
 //    in the same order, with the same values (tests/test_broadphase.cpp).
+//    When many bodies leave their boxes (blocks started on top of each
+//    other), the pass goes on row by row instead: each body's pairs with the
+//    bodies after it are looked up when the loop reaches it, in a grid that
+//    follows the corrections, so no list of the whole world is sorted again.
 //  - find(h, reach): every pair whose boxes, each swept over h ms at its
 //    velocity and grown by `reach`, overlap or touch; exactly the all-pairs
 //    definition brute_force_pairs() keeps for the tests. The grid is built
@@ -57,7 +61,7 @@ class BroadPhase {
 
   // After a course pass, before anything else asks: calls f(pair) for each
   // pair the pass's grid lists (boxes grown by course_margin that overlapped
-  // when the pass began, or at its last rebuild), in the sheet's order. No
+  // when the pass began), in the sheet's order. No
   // grid is built, so it costs a walk over a list: the health check's look
   // for deep overlaps (engine/health.hpp). Nothing when the grid is find()'s.
   template <class F>
@@ -80,7 +84,7 @@ class BroadPhase {
   struct Stats {
     std::size_t candidates = 0;  // pairs found when the pass began
     std::size_t requeries = 0;   // bodies pushed out of their box during the pass
-    std::size_t rebuilds = 0;    // grid rebuilt during the pass (many bodies pushed out)
+    bool by_rows = false;        // went on row by row (many bodies pushed out)
   };
   const Stats& stats() const { return stats_; }
   const UniformGrid& grid() const { return grid_; }
@@ -105,6 +109,12 @@ class BroadPhase {
     return boxes_[i].contains(k.position[e], k.box[e]);
   }
   bool refresh(const Components& k, std::uint32_t i, PairKey current);
+  // Row by row: the pairs (i, j > after) whose boxes overlap now.
+  void start_rows();
+  void row_candidates(std::uint32_t i, std::uint32_t after);
+  bool row_next(Pair& out);
+  void row_pushed_out(const Components& k);
+  bool row_refresh(const Components& k, std::uint32_t i);
   // find().
   void fat_rebuild(const Components& k, std::span<const EntityId> entities, double h);
 
@@ -119,10 +129,17 @@ class BroadPhase {
   bool course_rules_ = false;  // some body has contact rules: test each pair
   double course_h_ = 0.0;
   std::vector<PairKey> found_late_;  // min-heap: pairs found after a body left its box
-  std::size_t next_ = 0, moved_ = 0, rebuild_after_ = 0;
+  std::size_t next_ = 0, moved_ = 0, rows_after_ = 0;
   PairKey last_ = ~PairKey{0};
   bool started_ = false;
   Stats stats_;
+  // Row by row (stats_.by_rows): a grid of the boxes as they are now, the
+  // loop's current row and its candidates, sorted.
+  UniformGrid row_grid_;
+  std::size_t row_moves_ = 0;  // moves since row_grid_ was indexed
+  std::uint32_t row_ = 0;
+  std::vector<std::uint32_t> row_pairs_;
+  std::size_t row_next_ = 0;
 
   // find() state.
   std::vector<Bounds> current_;  // this call's exact boxes
