@@ -42,6 +42,7 @@ struct Scene {
   double dt = 1.0 / 60.0;    // s per step
   bool resting = false;      // bodies come to rest in contact (ours: stable solver)
   double time_scale = 1.0;   // steps and warm-up are the harness's times this (rain_phase)
+  int steps = 0, warmup = 0;  // if steps > 0: this scene's own (times time_scale), not the harness's (rain_falling)
   std::vector<Body> bodies;  // fixed bodies (walls, shelves) first
   std::vector<std::size_t> tops;  // pyramids' top blocks (indices in bodies): the harness reports how far they move
   TileMap map;               // tiles_SIDE: ours makes it a tile layer, the peers its map_boxes (not in bodies)
@@ -54,6 +55,13 @@ Scene make_gas(std::size_t n, std::uint64_t seed = 42);
 // rain: N unit squares on a grid (area fraction 0.25 of the container) fall
 // under gravity 10 m/s² into it, e = 0.5.
 Scene make_rain(std::size_t n);
+// rain_settled: the rain's N squares at rest where it lands: rows wall to
+// wall from the floor up (2k squares a row fill its 2k m container exactly),
+// each square on the one below, the last row's remainder centred; e = 0.5.
+// Every engine loads the same pile, so the settled phase is compared without
+// running each to rest (a frictionless pile of 100 000 keeps flowing for
+// thousands of steps).
+Scene make_rain_settled(std::size_t n);
 // pyramid: Box2D's large_pyramid, a base of 100 squares, 5050 in all,
 // resting on the floor; fixed rotation, e = 0.
 Scene make_pyramid(std::size_t base = 100);

@@ -150,7 +150,9 @@ std::unique_ptr<bench::Engine> engine_or_throw(const std::string& engine, const 
 }
 
 // gas and rain take the size asked; the pyramids are Box2D's fixed scenes.
-bool sized(const std::string& scene) { return scene == "gas" || scene == "rain" || scene == "rain_phase"; }
+bool sized(const std::string& scene) {
+  return scene == "gas" || scene.starts_with("rain");
+}
 
 // rain_phase: the rain over the same phase at every size. The rain's steps
 // 61-600 are a different phase at each size: its grid fills the container,
@@ -168,17 +170,33 @@ Scene make_rain_phase(std::size_t n) {
   return s;
 }
 
+// rain_falling: the rain's first second (60 steps, the first 5 left out),
+// its steps scaled as rain_phase's: each size is timed over the same share of
+// its fall, in which the grid falls and its lowest rows land.
+Scene make_rain_falling(std::size_t n) {
+  Scene s = make_rain_phase(n);
+  s.name = "rain_falling";
+  s.steps = 65, s.warmup = 5;
+  return s;
+}
+
 Scene make_scene(const std::string& name, std::size_t n) {
   if (name.starts_with("tiles_")) return bench::make_tiles(std::stoi(name.substr(6)));
   if (name == "gas") return bench::make_gas(n);
   if (name == "rain") return bench::make_rain(n);
   if (name == "rain_phase") return make_rain_phase(n);
+  if (name == "rain_falling") return make_rain_falling(n);
+  if (name == "rain_settled") return bench::make_rain_settled(n);
   if (name == "pyramid") return bench::make_pyramid();
   if (name == "pyramid_friction") return bench::make_pyramid_friction();
   if (name == "many_pyramids") return bench::make_many_pyramids();
   throw std::invalid_argument("unknown scene '" + name +
-                              "' (gas, rain, rain_phase, pyramid, pyramid_friction, many_pyramids, tiles_SIDE)");
+                              "' (gas, rain, rain_phase, rain_falling, rain_settled, pyramid, pyramid_friction, "
+                              "many_pyramids, tiles_SIDE)");
 }
+
+// The steps a run of s takes: the scene's own, or the harness's, times its time scale.
+double planned_steps(const Scene& s, const Options& o) { return (s.steps > 0 ? s.steps : o.steps) * s.time_scale; }
 
 double largest_top_move(const Scene& s, const std::vector<Body>& end) {
   double moved = 0;
@@ -203,8 +221,8 @@ Result run(const std::string& engine, const Scene& s, const Options& o) {
   r.map_mb = e->map_mb;
   // Every step's time; the first `warmup` are left out of the statistics
   // unless the budget stopped the run before it got past them.
-  const int steps = static_cast<int>(std::lround(o.steps * s.time_scale));
-  const int warmup = static_cast<int>(std::lround(o.warmup * s.time_scale));
+  const int steps = static_cast<int>(std::lround(planned_steps(s, o)));
+  const int warmup = static_cast<int>(std::lround((s.steps > 0 ? s.warmup : o.warmup) * s.time_scale));
   const double budget = s.name == "rain_phase" ? o.phase_budget : o.budget;
   std::vector<double> times;
   times.reserve(static_cast<std::size_t>(steps));
@@ -297,9 +315,10 @@ const char* usage =
     "             [--peers build/bench-peers (adds box2d3,chipmunk-release)] [--peer-sources TEXT]\n"
     "             [--steps 600] [--warmup 60] [--out bench/RESULTS.md]\n"
     "             [--compare 0|1] [--budget 30 (s per run)] [--phase-budget 150 (s)] [--isolate 0|1]\n"
-    "             (engines also: ours-course, our course solver on every scene; scenes also: rain_phase,\n"
-    "             the rain over the same share of its fall at every size, run by ours alone after the rain\n"
-    "             at sizes from 10 000 up)\n";
+    "             (engines also: ours-course, our course solver on every scene; scenes also, each run\n"
+    "             after the rain at its sizes from 10 000 up: rain_phase, the rain over the same share of\n"
+    "             its fall at every size, by ours alone; rain_falling, its first second at every size's\n"
+    "             pace; rain_settled, its squares at rest where it lands, loaded by every engine)\n";
 
 std::vector<std::size_t> sizes_of(const std::string& v) {
   std::vector<std::size_t> out;
@@ -507,8 +526,9 @@ void run_scene(const std::string& self, const Scene& s, bool alone, const Option
     if (engine == "ours") ours_ms = r.median_ms;
     // A run cut short by the budget says how far it got; one run alone says why.
     std::string label = engine;
-    if (r.steps_run < std::lround(o.steps * s.time_scale)) label += " (" + std::to_string(r.steps_run) + " steps)";
+    if (r.steps_run < std::lround(planned_steps(s, o))) label += " (" + std::to_string(r.steps_run) + " steps)";
     if (s.name == "rain_phase") label += " (alone, steps x" + fmt("%.2f", s.time_scale) + ")";
+    else if (s.time_scale != 1.0) label += " (steps x" + fmt("%.2f", s.time_scale) + ")";
     else if (alone) label += " (alone: peers over budget)";
     report.add(r, ours_ms, label);
   }
@@ -525,9 +545,11 @@ void run_all(const std::string& self, const Options& o, Report& report) {
     if (name == "gas")
       for (const std::size_t n : o.ours_only_gas) run_scene(self, make_scene(name, n), true, o, report);
     // Ours alone: the peers' 100 000-body rain would take minutes over 1068 steps.
+    // The rain's phases apart, from 10 000 bodies up: falling and settled, every engine.
     if (name == "rain")
-      for (const std::size_t n : sizes)
-        if (n >= 10000) run_scene(self, make_scene("rain_phase", n), true, o, report);
+      for (const char* phase : {"rain_phase", "rain_falling", "rain_settled"})
+        for (const std::size_t n : sizes)
+          if (n >= 10000) run_scene(self, make_scene(phase, n), phase == std::string("rain_phase"), o, report);
   }
 }
 
@@ -564,6 +586,11 @@ void write_markdown(const Options& o, const std::string& command, const std::str
         "the square root of its container's side over the 10 000-body one's (the time its grid takes to fall): "
         "each size is timed over the same share of its fall, landing and settling, where the rain's steps 61-600 "
         "catch a 10 000-body pile settled and a 100 000-body one landing (bench/main.cpp, make_rain_phase). ";
+  md << "`rain_falling`: the rain's first 65 steps, the first 5 left out, scaled as rain_phase's: the grid falls "
+        "and its lowest rows land (bench/main.cpp, make_rain_falling). `rain_settled`: the rain's squares at rest "
+        "where it lands, loaded by every engine: rows wall to wall from the floor up, each square on the one below, "
+        "no velocity (bench/scenes.cpp, make_rain_settled; a frictionless pile run to rest would keep flowing for "
+        "thousands of steps). ";
   md << "`tiles_SIDE`: a map of SIDE x SIDE cells of 1 m, rooms of 20 x 20 cells walled by solid cells (two thick "
         "between rooms, 18 x 18 inside, a ledge of 8 cells in each), 10 000 squares in the 100 rooms of its "
         "top-left corner fall under 10 m/s², e = 0.5, our stable solver: the same bodies on every map (section "

@@ -84,6 +84,20 @@ Scene make_rain(std::size_t n) {
   return s;
 }
 
+Scene make_rain_settled(std::size_t n) {
+  Scene s = make_rain(n);
+  s.name = "rain_settled";
+  std::erase_if(s.bodies, [](const Body& b) { return !b.fixed; });  // the walls stay
+  const auto per_row = static_cast<std::size_t>(std::lround(s.width));  // unit squares wall to wall
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t row = i / per_row, col = i % per_row;
+    const std::size_t in_row = std::min(per_row, n - row * per_row);
+    const double x0 = 0.5 * static_cast<double>(per_row - in_row);  // a short last row, centred
+    s.bodies.push_back({x0 + 0.5 + static_cast<double>(col), 0.5 + static_cast<double>(row), 0.5, 0.5, 0, 0, false});
+  }
+  return s;
+}
+
 Scene make_pyramid(std::size_t base) {
   Scene s;
   s.name = "pyramid";

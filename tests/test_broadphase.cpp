@@ -130,6 +130,36 @@ BOOST_AUTO_TEST_CASE(boxes_are_rounded_outwards_and_contain_the_body) {
   BOOST_TEST(!FloatBox::around({nan, 0}, r, 1.0).valid());
 }
 
+BOOST_AUTO_TEST_CASE(a_box_around_a_body_is_its_bounds_rounded_outwards_to_float) {
+  // around() (vectorised where SSE2 is there) against outward() (scalar) on
+  // the bounds it is defined by: the same values on every kind of
+  // coordinate, including float overflow, infinities, NaN, zeros and values
+  // just around a float.
+  const auto same = [](float a, float b) { return a == b || (a != a && b != b); };
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> xs = {0.0, -0.0, 1e-320, -1e-320, 1e-50, -1e-50, 0.1, -0.1, 1.0 / 3.0, 16777217.0,
+                            -16777217.0, 3.4028234663852886e38, 3.4028235677973366e38, 3.5e38, 1e39, -1e39, 1e300,
+                            -1e300, inf, -inf, nan};
+  Random rng(7);
+  for (int i = 0; i < 2000; ++i) {
+    const double x = rng.uniform(-1, 1) * std::pow(10.0, rng.uniform(-8, 9));
+    xs.push_back(x);
+    xs.push_back(static_cast<double>(static_cast<float>(x)));  // exactly a float
+  }
+  for (const double margin : {0.0, 1.0, 0.3}) {
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+      const Vector p{xs[i], xs[(i * 7 + 3) % xs.size()]};
+      const Rect r{static_cast<int>(i % 50), static_cast<int>(i % 17)};
+      const FloatBox a = FloatBox::around(p, r, margin);
+      const FloatBox b =
+          FloatBox::outward(p.x - margin, p.y - margin, (p.x + r.width) + margin, (p.y + r.height) + margin);
+      BOOST_TEST((same(a.min_x, b.min_x) && same(a.min_y, b.min_y) && same(a.max_x, b.max_x) &&
+                  same(a.max_y, b.max_y)),
+                 "p = (" << p.x << ", " << p.y << "), margin " << margin);
+    }
+  }
+}
+
 BOOST_AUTO_TEST_CASE(the_grid_finds_exactly_the_overlapping_pairs_in_loop_order) {
   for (std::uint64_t seed = 1; seed <= 40; ++seed) {
     Random rng(seed);

@@ -47,12 +47,14 @@ constexpr double large_factor = 4.0;
 // to walk and a bigger table to clear).
 constexpr double cells_per_body = 2.0;
 
+
 }  // namespace
 
+#if !defined(__SSE2__)
 FloatBox FloatBox::around(Vector p, Rect r, double margin) {
-  return {float_down(p.x - margin), float_down(p.y - margin), float_up((p.x + r.width) + margin),
-          float_up((p.y + r.height) + margin)};
+  return outward(p.x - margin, p.y - margin, (p.x + r.width) + margin, (p.y + r.height) + margin);
 }
+#endif
 
 FloatBox FloatBox::outward(double x0, double y0, double x1, double y1) {
   return {float_down(x0), float_down(y0), float_up(x1), float_up(y1)};

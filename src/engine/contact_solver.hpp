@@ -186,6 +186,7 @@ class ContactSolver {
   // Another round when a solve turned apart pairs towards each other.
   bool turned_to_meet(const Components& k, std::span<const EntityId> entities, double h, const SolverSettings& s,
                       BroadPhase& broadphase);
+  void add_unknown_pairs();
   bool swept_further(const Components& k, double h, double reach) const;
   void keep_round();
   bool last_round_ = false;             // round `rounds`: no bounce
@@ -195,6 +196,7 @@ class ContactSolver {
   std::vector<std::uint32_t> pair_of_;  // by contact: its index in pairs_
   std::vector<Pair> later_;             // turned_to_meet(): the pairs for the solved velocities
   std::vector<std::uint64_t> known_;    // turned_to_meet(): pairs_' keys, sorted
+  bool known_valid_ = false;            // known_ holds this substep's pairs_
   // The earlier rounds' contacts and friction rows (then the last round's
   // too: constraints()), and their resting impulses by pair (store()).
   std::vector<ContactConstraint> earlier_;
