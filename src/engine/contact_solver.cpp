@@ -585,27 +585,47 @@ void ContactSolver::store_rows(Components& k) {
 // settled pile, warm started with last substep's impulses, often gets there
 // after one or two sweeps (Box2D's benchmark many_pyramids: 9 steps in 10
 // after the second), and the rest of its sweeps cost nothing.
+//
+// Every normal is an axis (axis_normal), so a row is one-dimensional: it
+// reads and changes one velocity component of each body (its tangent the
+// other), with the sign of its normal. The values are those of the dot
+// products and vector updates with the zero component written out, which
+// added (±0) to the other component: only a zero's sign may differ. Half
+// the arithmetic of the row (a pile: 94 -> 60 instructions a row).
 template <bool friction>
 void ContactSolver::iterate(const SolverSettings& s) {
+  // By axis (-x, +x, -y, +y): the normal's sign, the tangent's (tangent(n) = (-n.y, n.x)).
+  static constexpr double normal_sign[4] = {-1.0, 1.0, -1.0, 1.0};
+  static constexpr double tangent_sign[4] = {-1.0, 1.0, 1.0, -1.0};
   for (int it = 0; it < s.iterations; ++it) {
     bool changed = false;
     for (std::size_t i = 0; i < rows_.size(); ++i) {
       SolverRow& r = rows_[i];
       SolverBody& bc = solver_bodies_[r.c];
       SolverBody& bb = solver_bodies_[r.b];
-      const Vector n = axis_normal[r.axis];
-      const double vn = Vector::dot(bc.v - bb.v, n);
+      const bool y = r.axis >= 2;
+      double& vc = y ? bc.v.y : bc.v.x;
+      double& vb = y ? bb.v.y : bb.v.x;
+      const double sn = normal_sign[r.axis];
+      const double vn = sn * (vc - vb);
       const double lambda = std::max(r.lambda - (vn - r.target) * r.inv_w, 0.0);
-      apply_normal_impulse(bc.v, bb.v, n, lambda - r.lambda, bc.w, bb.w);
+      const double dn = lambda - r.lambda;
+      vc = vc + (bc.w * dn) * sn;
+      vb = vb - (bb.w * dn) * sn;
       changed |= std::bit_cast<std::uint64_t>(lambda) != std::bit_cast<std::uint64_t>(r.lambda);
       r.lambda = lambda;
       if constexpr (friction) {
         FrictionHot& f = friction_rows_[i];
         if (f.mu == 0.0) continue;
-        const double vt = Vector::dot(bc.v - bb.v, tangent(n));
+        double& tc = y ? bc.v.x : bc.v.y;
+        double& tb = y ? bb.v.x : bb.v.y;
+        const double st = tangent_sign[r.axis];
+        const double vt = st * (tc - tb);
         const double limit = f.mu * lambda;
         const double lt = std::clamp(f.lambda - vt * r.inv_w, -limit, limit);
-        apply_normal_impulse(bc.v, bb.v, tangent(n), lt - f.lambda, bc.w, bb.w);
+        const double dt = lt - f.lambda;
+        tc = tc + (bc.w * dt) * st;
+        tb = tb - (bb.w * dt) * st;
         changed |= std::bit_cast<std::uint64_t>(lt) != std::bit_cast<std::uint64_t>(f.lambda);
         f.lambda = lt;
       }
