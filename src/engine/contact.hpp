@@ -32,6 +32,15 @@ inline void apply_normal_impulse(Vector& vc, Vector& vb, Vector n, double j, dou
   vb = vb - (wb * j) * n;
 }
 
+// The same along one axis: vc and vb are the bodies' velocity components
+// along the normal's axis, `sign` the normal's (±1) along it. The values are
+// apply_normal_impulse's for an axis normal, whose zero component only added
+// ±0 to the other one (the stable solver's rows, ContactSolver::iterate).
+inline void apply_axis_impulse(double& vc, double& vb, double sign, double j, double wc, double wb) {
+  vc = vc + (wc * j) * sign;
+  vb = vb - (wb * j) * sign;
+}
+
 // The same law given the change dv of the normal relative velocity instead
 // of the impulse: j = dv / (w_c + w_b), applied as dv·w_c/(w_c + w_b) and
 // dv·w_b/(w_c + w_b), which is exact when one body is fixed (ratio 1: a wall
