@@ -164,7 +164,16 @@ std::vector<ShockPass> shock_passes(const Components& k, const Contacts& contact
       if (sign > 0) supports.push_back({contacts[i].b, contacts[i].c, fb, fc, index});
       else supports.push_back({contacts[i].c, contacts[i].b, fc, fb, index});
     }
-    if (auto order = bottom_up(k.size(), supports); !order.empty()) out.push_back({down, std::move(order)});
+    const auto order = bottom_up(k.size(), supports);
+    if (order.empty()) continue;
+    // Every listed contact's upper body is deeper than its lower one, so not fixed: the pass can move it.
+    ShockPass& pass = out.emplace_back(ShockPass{down, {}});
+    pass.rows.reserve(order.size());
+    for (const std::size_t i : order) {
+      const auto& ct = contacts[i];
+      pass.rows.push_back({ct.c, ct.b, static_cast<std::uint32_t>(i), static_cast<std::uint8_t>(ct.axis),
+                           support_sign(ct.axis, down) > 0});
+    }
   }
   return out;
 }
@@ -212,6 +221,7 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
 // separating axis, or will be within this substep (speculative).
 void ContactSolver::prepare(const Components& k, double h, Vector g, const SolverSettings& s) {
   contacts_.clear();
+  targets_.clear();
   impacts_.clear();
   apart_.clear();
   pair_of_.clear();
@@ -253,6 +263,7 @@ void ContactSolver::prepare(const Components& k, double h, Vector g, const Solve
       ct.target = gap > 0.0 ? -gap / h : 0.0;
     }
     contacts_.push_back(ct);
+    targets_.push_back(ct.target);
     pair_of_.push_back(static_cast<std::uint32_t>(i));
     friction = friction || pair_friction(k, p.c, p.b) > 0.0;
     const std::uint32_t flags = static_cast<std::uint32_t>(axis) | (wc == 0.0) << 2 | (wb == 0.0) << 3 |
@@ -451,7 +462,6 @@ void ContactSolver::warm_start_one(Components& k, std::size_t i, double jn, doub
 // depends only on the contacts, not on velocities: both relaxations share it.
 template <bool after_bounce>
 void ContactSolver::relax(Components& k, Vector g, const SolverSettings& s) {
-  const auto target = [&](const ContactConstraint& ct) { return after_bounce && !ct.resting ? 0.0 : ct.target; };
   load_rows<after_bounce>(k);
   if (friction_.empty())
     iterate<false>(s);
@@ -461,18 +471,22 @@ void ContactSolver::relax(Components& k, Vector g, const SolverSettings& s) {
   if (!after_bounce && Vector::is_zero(g)) islands_solve_.solve(k, contacts_, friction_);
   if (!s.shock_propagation) return;
   if (!have_order_) support_order_ = shock_passes(k, contacts_, g), have_order_ = true;
+  if (after_bounce) {
+    bounce_targets_.assign(targets_.begin(), targets_.end());
+    for (const std::uint32_t i : impacts_) bounce_targets_[i] = 0.0;  // no approach allowed at the impacts
+  }
+  const std::vector<double>& targets = after_bounce ? bounce_targets_ : targets_;
   for (const ShockPass& pass : support_order_)
-    for (const std::size_t i : pass.contacts) {
-      const ContactConstraint& ct = contacts_[i];
-      const Vector n = axis_normal[ct.axis];
-      const double vn = Vector::dot(k.velocity[ct.c] - k.velocity[ct.b], n);
-      if (vn >= target(ct)) continue;
+    for (const ShockRow& r : pass.rows) {
+      const Vector n = axis_normal[r.axis];
+      const double target = targets[r.index];
+      const double vn = Vector::dot(k.velocity[r.c] - k.velocity[r.b], n);
+      if (vn >= target) continue;
       // The lower body is immovable for this pass: the upper takes it all.
-      if (support_sign(ct.axis, pass.down) > 0) {
-        if (ct.wc > 0.0) k.velocity[ct.c] = k.velocity[ct.c] + (target(ct) - vn) * n;
-      } else {
-        if (ct.wb > 0.0) k.velocity[ct.b] = k.velocity[ct.b] - (target(ct) - vn) * n;
-      }
+      if (r.c_upper)
+        k.velocity[r.c] = k.velocity[r.c] + (target - vn) * n;
+      else
+        k.velocity[r.b] = k.velocity[r.b] - (target - vn) * n;
     }
 }
 
@@ -984,16 +998,15 @@ void ContactSolver::project(Components& k, Vector g, const SolverSettings& s) {
   if (!have_position_order_ || g != position_g_ || position_keys_ != position_keys_next_)
     position_order_ = shock_passes(k, positions_, g), position_g_ = g, have_position_order_ = true;
   for (const ShockPass& pass : position_order_)
-    for (const std::size_t i : pass.contacts) {
-      const PositionContact& ct = positions_[i];
+    for (const ShockRow& r : pass.rows) {
+      const PositionContact& ct = positions_[r.index];
       const double depth = -gap(k, ct) - s.slop;
       if (!(depth > 0.0)) continue;
       const Vector n = axis_normal[ct.axis];
-      if (support_sign(ct.axis, pass.down) > 0) {
-        if (std::isfinite(k.mass[ct.c])) k.position[ct.c] = k.position[ct.c] + depth * n;
-      } else {
-        if (std::isfinite(k.mass[ct.b])) k.position[ct.b] = k.position[ct.b] - depth * n;
-      }
+      if (r.c_upper)
+        k.position[ct.c] = k.position[ct.c] + depth * n;
+      else
+        k.position[ct.b] = k.position[ct.b] - depth * n;
     }
 }
 

@@ -131,12 +131,25 @@ struct FrictionRow {
   double lambda2;    // the same in the relaxation after the bounces
 };
 
+// A contact of a bottom-up pass, as the pass reads it: its bodies, axis and
+// index among the solver's contacts, and which end is the upper body (the
+// one the pass moves; the lower is immovable for it).
+struct ShockRow {
+  EntityId c, b;
+  std::uint32_t index;
+  std::uint8_t axis;
+  bool c_upper;
+};
+
 // One bottom-up pass of shock propagation: the direction taken as down (the
 // lower body of a contact lies that way and is immovable for the pass) and
-// the contacts in order, lowest first.
+// its contacts in order, lowest first. Only contacts whose upper body can
+// move are listed (the others would change nothing), each with what the
+// pass reads of it: a pile's pass reads this list in order and the
+// velocities and targets, not the solver's 80-byte contacts at random.
 struct ShockPass {
   Vector down;
-  std::vector<std::size_t> contacts;
+  std::vector<ShockRow> rows;
 };
 
 class ContactSolver {
@@ -265,6 +278,8 @@ class ContactSolver {
   std::vector<FrictionRow> friction_;          // empty, or one per contact
   std::vector<ShockPass> support_order_;       // bottom-up passes over this substep's contacts
   bool have_order_ = false;
+  std::vector<double> targets_;                // by contact: its target (the bottom-up pass's copy)
+  std::vector<double> bounce_targets_;         // the same after the bounces: 0 at the impacts
   std::vector<double> inverse_mass_;           // by entity id, this substep's (solve_velocities)
   std::vector<Vector> v_start_, v_inelastic_;  // by slot
   std::vector<std::uint32_t> impacts_;         // the contacts that are not resting, in order
