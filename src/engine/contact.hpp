@@ -143,9 +143,9 @@ inline ContactAxis contact_axis(const Components& k, EntityId c, EntityId b, dou
 
 // 1 if the boxes touch along x face to face (within ±touch along x,
 // overlapping by more than touch along y), 2 the same along y, 0 otherwise:
-// what contact_axis's `faces` collects over a body's pairs.
-inline int touching_face(const Components& k, EntityId c, EntityId b, double touch) {
-  const ContactAxis a = contact_axis(k, c, b, touch);
+// what contact_axis's `faces` collects over a body's pairs, from `a`, the
+// pair's contact_axis without faces.
+inline int touching_face(const ContactAxis& a, double touch) {
   if (a.corner || std::abs(a.gap) > touch || a.axis != a.separating) return 0;  // (else separated along the other)
   return a.axis < 2 ? 1 : 2;
 }

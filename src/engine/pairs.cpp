@@ -11,7 +11,10 @@ namespace {
 using Bounds = BroadPhase::Bounds;
 
 // The box swept over [0, h] at constant velocity, grown by `reach`.
-Bounds swept(const Components& k, EntityId e, double h, double reach) {
+// Inlined: called, it returned the box through the stack, which the caller
+// read back in 16-byte loads from its 8-byte stores (a store-forwarding
+// stall, a fifth of find()'s time on the pyramid, perf annotate).
+[[gnu::always_inline]] inline Bounds swept(const Components& k, EntityId e, double h, double reach) {
   const Vector p = k.position[e];
   const Vector q = p + h * k.velocity[e];
   const double w = k.box[e].width, hh = k.box[e].height;
