@@ -102,7 +102,8 @@ class Engine {
 // fixed rotation, sleeping off, and keeps the engine's default iterations.
 // Ours runs the course's solver on scenes without resting contact and the
 // stable solver on the others, unless `course` forces the course's solver.
-std::unique_ptr<Engine> make_ours(const Scene& s, bool course = false);
+// `threads`: WorldDef::threads (ours-2t: 2).
+std::unique_ptr<Engine> make_ours(const Scene& s, bool course = false, int threads = 1);
 std::unique_ptr<Engine> make_box2d(const Scene& s);     // Debian's 2.4.1 (build/bench)
 std::unique_ptr<Engine> make_box2d3(const Scene& s);    // v3.2 from source (build/bench-peers only)
 // Chipmunk 7.0.3: Debian's build in build/bench, the release build in

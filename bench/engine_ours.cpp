@@ -17,7 +17,8 @@ constexpr double px_per_m = 10.0;
 
 class Ours final : public Engine {
  public:
-  Ours(const Scene& s, bool course) : height_(s.height), world_(physics::create_world(def(s, course))) {
+  Ours(const Scene& s, bool course, int threads)
+      : height_(s.height), world_(physics::create_world(def(s, course, threads))) {
     if (!s.map.cells.empty()) {  // first, in an empty world: what the heap grows by is the layer's
       const std::size_t before = heap_bytes();
       add_map(s);
@@ -74,8 +75,9 @@ class Ours final : public Engine {
   // so it runs without Forces (and pays nothing for it). Scenes where bodies
   // come to rest on each other use the stable solver (the course's single
   // pass cannot hold a pile, see docs/numerics.md).
-  static physics::WorldDef def(const Scene& s, bool course) {
+  static physics::WorldDef def(const Scene& s, bool course, int threads) {
     physics::WorldDef d = physics::default_world_def();
+    d.threads = threads;
     d.forces = s.gravity != 0.0;
     d.dt = s.dt * 1000.0;
     d.gravity = {0.0, s.gravity * px_per_m / 1e6};
@@ -90,6 +92,8 @@ class Ours final : public Engine {
 
 }  // namespace
 
-std::unique_ptr<Engine> make_ours(const Scene& s, bool course) { return std::make_unique<Ours>(s, course); }
+std::unique_ptr<Engine> make_ours(const Scene& s, bool course, int threads) {
+  return std::make_unique<Ours>(s, course, threads);
+}
 
 }  // namespace bench

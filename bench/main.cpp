@@ -47,6 +47,9 @@ struct Options {
   // Gas sizes run by ours alone: the peers' 100 000-body runs already take
   // most of the budget, ten times as many bodies would only be cut short.
   std::vector<std::size_t> ours_only_gas{1000000};
+  // Ours on two threads too (ours-2t, right after ours) on the stable
+  // solver's scenes of at least this many bodies (0: never).
+  std::size_t two_threads_from = 100000;
   std::vector<std::string> engines{"ours", "box2d", "chipmunk"};
   bool engines_given = false;  // without --engines, --peers puts the peers' engines second and third
   std::string peers;           // build/bench-peers: the binary holding box2d3 and chipmunk-release
@@ -312,10 +315,13 @@ const char* usage =
     "usage: bench [--scenes gas,rain,pyramid,pyramid_friction,many_pyramids,tiles] [--sizes 1000,10000,100000]\n"
     "             [--map-sides 200,1000,2000 (the tiles scene's maps, cells a side)]\n"
     "             [--ours-only-gas 1000000 (gas sizes for ours alone; 0: none)] [--engines ours,box2d,chipmunk]\n"
+    "             [--two-threads-from 100000 (ours-2t, ours on 2 threads, after ours on the stable solver's\n"
+    "             scenes of this many bodies and more; 0: never)]\n"
     "             [--peers build/bench-peers (adds box2d3,chipmunk-release)] [--peer-sources TEXT]\n"
     "             [--steps 600] [--warmup 60] [--out bench/RESULTS.md]\n"
     "             [--compare 0|1] [--budget 30 (s per run)] [--phase-budget 150 (s)] [--isolate 0|1]\n"
-    "             (engines also: ours-course, our course solver on every scene; scenes also, each run\n"
+    "             (engines also: ours-course, our course solver on every scene; ours-2t, ours on two\n"
+    "             threads; scenes also, each run\n"
     "             after the rain at its sizes from 10 000 up: rain_phase, the rain over the same share of\n"
     "             its fall at every size, by ours alone; rain_falling, its first second at every size's\n"
     "             pace; rain_settled, its squares at rest where it lands, loaded by every engine)\n";
@@ -334,6 +340,7 @@ bool set_option(Options& o, const std::string& a, const std::string& v) {
   else if (a == "--sizes") o.sizes = sizes_of(v);
   else if (a == "--map-sides") o.map_sides = sizes_of(v);
   else if (a == "--ours-only-gas") o.ours_only_gas = sizes_of(v);
+  else if (a == "--two-threads-from") o.two_threads_from = static_cast<std::size_t>(std::stoul(v));
   else if (a == "--peers") o.peers = v;
   else if (a == "--peer-sources") o.peer_sources = v;
   else if (a == "--steps") o.steps = std::stoi(v);
@@ -413,6 +420,7 @@ std::string source_of(const Options& o, const std::string& word) {
 std::string engine_note(const std::string& e, const Options& o) {
   if (e == "ours") return "`ours`: this engine (course solver on gas, stable solver on the rest)";
   if (e == "ours-course") return "`ours-course`: this engine with the course solver on every scene";
+  if (e == "ours-2t") return "`ours-2t`: this engine on two threads (WorldDef::threads = 2: the same bits as one)";
   if (e == "box2d3")
     return "`box2d3`: Box2D v3.2.0 built from source" + source_of(o, "box2d") +
            " (CMake Release, its defaults otherwise: SSE2, no AVX2; BOX2D_VALIDATE off), one worker thread, its "
@@ -517,20 +525,31 @@ class Report {
   std::vector<Result> results_;
 };
 
-// One scene at one size, every engine (ours alone if `alone`).
+// A row's engine, with how its run differed from the plan.
+std::string label_of(const std::string& engine, const Result& r, const Scene& s, bool alone, const Options& o) {
+  // A run cut short by the budget says how far it got; one run alone says why.
+  std::string label = engine;
+  if (r.steps_run < std::lround(planned_steps(s, o))) label += " (" + std::to_string(r.steps_run) + " steps)";
+  if (s.name == "rain_phase") label += " (alone, steps x" + fmt("%.2f", s.time_scale) + ")";
+  else if (s.time_scale != 1.0) label += " (steps x" + fmt("%.2f", s.time_scale) + ")";
+  else if (alone) label += " (alone: peers over budget)";
+  return label;
+}
+
+// One scene at one size, every engine (ours alone if `alone`); ours on two
+// threads too (ours-2t) on the stable solver's scenes from two_threads_from
+// bodies up.
 void run_scene(const std::string& self, const Scene& s, bool alone, const Options& o, Report& report) {
   double ours_ms = 0;
   for (const std::string& engine : o.engines) {
     if (alone && engine != "ours") continue;
     const Result r = o.isolate ? run_isolated(self, engine, s, o) : run(engine, s, o);
     if (engine == "ours") ours_ms = r.median_ms;
-    // A run cut short by the budget says how far it got; one run alone says why.
-    std::string label = engine;
-    if (r.steps_run < std::lround(planned_steps(s, o))) label += " (" + std::to_string(r.steps_run) + " steps)";
-    if (s.name == "rain_phase") label += " (alone, steps x" + fmt("%.2f", s.time_scale) + ")";
-    else if (s.time_scale != 1.0) label += " (steps x" + fmt("%.2f", s.time_scale) + ")";
-    else if (alone) label += " (alone: peers over budget)";
-    report.add(r, ours_ms, label);
+    report.add(r, ours_ms, label_of(engine, r, s, alone, o));
+    const bool two = o.two_threads_from > 0 && s.resting && s.dynamic_count() >= o.two_threads_from;
+    if (engine != "ours" || !two || std::find(o.engines.begin(), o.engines.end(), "ours-2t") != o.engines.end()) continue;
+    const Result r2 = o.isolate ? run_isolated(self, "ours-2t", s, o) : run("ours-2t", s, o);
+    report.add(r2, ours_ms, label_of("ours-2t", r2, s, alone, o));
   }
 }
 
@@ -567,11 +586,14 @@ void write_markdown(const Options& o, const std::string& command, const std::str
   md << title(o) << "\n\n"
      << "Written by `make bench` (`" << command << "`); do not edit by hand.\n\n"
      << "Machine: " << machine << ". Steps: " << o.steps << ", the first " << o.warmup
-     << " discarded; times are per step, single thread, each run in a fresh process. A run that passes " << o.budget
+     << " discarded; times are per step, single thread (but ours-2t), each run in a fresh process. A run that passes " << o.budget
      << " s stops early: its row says after how many steps (its statistics then cover the steps past the warm-up, "
         "or all of them if it did not get that far; its quality is the state where it stopped).\n\n"
      << "Engines:\n\n";
   for (const std::string& e : o.engines) md << "- " << engine_note(e, o) << ".\n";
+  if (o.two_threads_from > 0 && std::find(o.engines.begin(), o.engines.end(), "ours-2t") == o.engines.end())
+    md << "- " << engine_note("ours-2t", o) << ", run after `ours` on the stable solver's scenes of "
+       << o.two_threads_from << " bodies and more; its ÷ours is its time over ours on one thread.\n";
   md << "\nScenes (bench/scenes.cpp): unit squares of mass 1, fixed rotation, friction 0 (but in pyramid_friction), "
         "sleeping off, each engine's default iterations; 1 m = 10 px in our engine. `gas`: area fraction 0.10, "
         "random velocities up to 5 m/s per axis (seed 42), no gravity, e = 1, our course solver. `rain`: a grid at "

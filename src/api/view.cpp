@@ -20,6 +20,7 @@ WorldDef def_of(const World& w) {
   d.move = w.declares(SystemId::move);
   d.collision = w.declares(SystemId::collision);
   d.contact_events = w.events.enabled;
+  d.threads = w.workers.threads();
   return d;
 }
 }  // namespace

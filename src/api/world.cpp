@@ -43,6 +43,11 @@ api::Live make(const WorldDef& d) {
   api::Live w;
   w.owned = std::make_unique<World>(systems_of(d), p);
   w.world = w.owned.get();
+  try {
+    w.world->workers = Workers(d.threads);
+  } catch (const std::invalid_argument& e) {
+    throw Error(std::string("bad WorldDef: ") + e.what());
+  }
   w.table.def = d;
   if (d.bounds) {
     const Aabb& b = *d.bounds;

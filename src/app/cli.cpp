@@ -96,7 +96,10 @@ po::options_description descriptions() {
        "or run flag with it)")
       ("headless", "run without a window and print a summary (also when there is no display)")
       ("frames", po::value<std::string>()->value_name("N"),
-       "frames to run: headless default 600; in a window, quit after N (default: when the user quits)");
+       "frames to run: headless default 600; in a window, quit after N (default: when the user quits)")
+      ("threads", po::value<std::string>()->value_name("N"),
+       "threads of the stable and auto solvers' loops and their broad phase (in [1, 64], default 1; the course "
+       "solver runs on one): the same results, bit for bit, for any number (docs/performance.md)");
   world_options(d);
   d.add_options()
       ("seed", po::value<std::string>()->value_name("S"),
@@ -132,7 +135,7 @@ po::options_description descriptions() {
 void conflicts(const po::variables_map& vm) {
   if (vm.count("print-scene"))
     for (const char* flag : {"dump", "trace", "events", "save", "screenshot", "record", "replay", "headless",
-                             "frames", "strict", "overlays", "course"})
+                             "frames", "strict", "overlays", "course", "threads"})
       if (vm.count(flag))
         throw UsageError(std::string("--print-scene and --") + flag + ": --print-scene prints the scene and exits, "
                          "it would ignore --" + flag + " (give one of them)");
@@ -420,6 +423,7 @@ Options parse(std::span<const std::string> args) {
     if (o.scene.empty()) throw UsageError("--scene: needs a scene name or a file");
   }
   if (has("frames")) o.frames = integer("--frames", get("frames"), 0, max_frames);
+  if (has("threads")) o.threads = static_cast<int>(integer("--threads", get("threads"), 1, max_threads));
   Overrides& ov = o.overrides;
   world_values(vm, ov);
   if (has("seed")) {
@@ -459,8 +463,13 @@ Options parse(std::span<const std::string> args) {
 }
 
 WorldMaker world_maker(const Options& o) {
-  if (o.course) return CourseWorld::make;
-  return make_world;
+  const WorldMaker make = o.course ? WorldMaker(CourseWorld::make) : WorldMaker(make_scene_world);
+  if (o.threads == 1) return make;
+  return [make, threads = o.threads](const SceneSpec& s, const std::vector<Body>& bodies, bool with_draw) {
+    World w = make(s, bodies, with_draw);
+    w.workers = Workers(threads);
+    return w;
+  };
 }
 
 SceneSpec resolve_scene(const std::string& name) {

@@ -38,6 +38,7 @@ struct Options {
   std::string scene{"many"};
   bool scene_given = false;  // --scene was given (else a replay runs on its log's scene)
   std::optional<std::int64_t> frames;
+  int threads = 1;  // World::workers
   Overrides overrides;
   std::string dump, trace, screenshot, events, save;
   std::string record, replay;  // input logs (app/input_log.hpp)

@@ -99,7 +99,7 @@ class Testbed {
   // (--course: the course's functions). Throws SceneError if the first scene
   // is invalid.
   Testbed(std::vector<SceneSpec> scenes, std::size_t current, Overrides overrides = {}, Overlays overlays = {},
-          WorldMaker make = make_world);
+          WorldMaker make = make_scene_world);
 
   enum class Action { none, quit };
   Action handle(const InputEvent& e);

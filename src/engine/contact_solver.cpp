@@ -19,7 +19,7 @@ std::uint64_t key(EntityId c, EntityId b) { return Pair{c, b}.key(); }
 // Whether a body of inverse mass w and velocity v links the contacts it is
 // in (ContactSolver::schedule): any finite mass; a fixed body only when a
 // component of its velocity is -0 (which a contact would turn to +0).
-bool links(double w, Vector v) {
+bool links(double w, const Vector& v) {  // (v read only for a fixed body)
   return w > 0.0 || (v.x == 0.0 && std::signbit(v.x)) || (v.y == 0.0 && std::signbit(v.y));
 }
 
@@ -183,7 +183,8 @@ std::vector<ShockPass> shock_passes(const Components& k, const Contacts& contact
 void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> entities, double h, Vector g,
                                      const SolverSettings& s, BroadPhase& broadphase, StageTimes& times) {
   StageTimes::Laps laps(times);
-  laps.time(Stage::pairs, [&] { broadphase.find(k, entities, h, s.margin, pairs_); });
+  workers_ = s.workers;
+  laps.time(Stage::pairs, [&] { broadphase.find(k, entities, h, s.margin, pairs_, PairRule::solvable, s.workers); });
   known_valid_ = false;
   for (const EntityId e : shifted_) line_start_[e] = 0.0;
   shifted_.clear();
@@ -218,72 +219,112 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
 }
 
 // Contacts are the pairs whose boxes are closer than the margin along their
-// separating axis, or will be within this substep (speculative).
+// separating axis, or will be within this substep (speculative). In two
+// passes over ranges of the pairs (one per thread: Workers::for_ranges),
+// so that each range knows where its contacts go: what each pair is, and
+// how many of each a range has; then the contacts, written in place.
 void ContactSolver::prepare(const Components& k, double h, Vector g, const SolverSettings& s) {
-  contacts_.clear();
-  targets_.clear();
-  impacts_.clear();
-  apart_.clear();
-  pair_of_.clear();
-  moving_fixed_ = false;
-  topology_next_.clear();
-  bool friction = false;
   // Slower than the speed gravity gives in two substeps: a resting contact,
   // not an impact, so no bounce (otherwise a block on the floor would hop).
   const double threshold = 2.0 * Vector::norm(g) * h + 1e-12;
   contact_axes(k, s);
   physical_axes(k, s);
-  for (std::size_t i = 0; i < pairs_.size(); ++i) {
-    const Pair& p = pairs_[i];
-    const auto [axis, gap, separation, separating, corner] = axes_[i];
-    const Vector v = k.velocity[p.c] - k.velocity[p.b];
-    // Speculative: a pair further apart than the margin is a contact only if
-    // it closes the gap within this substep.
-    if (separation > s.margin && separation + Vector::dot(v, axis_normal[separating]) * h > 0.0) {
-      apart_.push_back(static_cast<std::uint32_t>(i));
-      continue;
+  Workers& w = workers_or_one(workers_);
+  const std::size_t n = pairs_.size();
+  kinds_.resize(n);
+  normal_speeds_.resize(n);
+  counts_.assign(static_cast<std::size_t>(w.threads()) + 1, {});
+  w.for_ranges(n, min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
+    RangeCount c;
+    for (std::size_t i = begin; i < end; ++i) {
+      const PairKind kind = kinds_[i] = pair_kind(k, i, h, threshold, s);
+      c.apart += kind == PairKind::apart;
+      c.contacts += kind >= PairKind::contact;
+      c.impacts += kind == PairKind::impact;
     }
-    const Vector n = axis_normal[axis];
-    const double vn = Vector::dot(v, n);
-    const bool impact = vn < -threshold && gap + vn * h <= 0.0;
-    if (!s.impacts && left_to_ccd(s, p, n, impact, gap + vn * h <= 0.0 && gap > s.touch)) continue;
-    const double wc = inverse_mass_[p.c], wb = inverse_mass_[p.b];
-    moving_fixed_ = moving_fixed_ || (wc == 0.0 && !Vector::is_zero(k.velocity[p.c])) ||
-                    (wb == 0.0 && !Vector::is_zero(k.velocity[p.b]));
-    // Each field written in place: a whole contact built aside and copied in
-    // was read back in 16-byte loads from narrower stores (a store-forwarding
-    // stall: 10 % of the pyramid's step, perf annotate).
-    ContactConstraint& ct = contacts_.emplace_back();
-    ct.c = p.c, ct.b = p.b, ct.axis = axis, ct.wc = wc, ct.wb = wb, ct.inv_w = 1.0 / (wc + wb);
-    ct.lambda = ct.lambda2 = 0.0;
-    if (impact) {
-      // A real impact this substep: stopped here (target 0), then bounced by
-      // e times the stopping impulse once the iterations are done.
-      ct.restitution = std::min(k.restitution[p.c], k.restitution[p.b]);
-      ct.resting = false;
-      ct.target = 0.0;
-      ct.toi = gap > 0.0 ? gap / -vn : 0.0;
-      impacts_.push_back(static_cast<std::uint32_t>(contacts_.size() - 1));
-    } else {
-      // Close at most the gap (a speculative contact), never approach once touching.
-      ct.restitution = ct.toi = 0.0;
-      ct.resting = true;
-      ct.target = gap > 0.0 ? -gap / h : 0.0;
+    counts_[static_cast<std::size_t>(t) + 1] = c;
+  });
+  for (std::size_t t = 1; t < counts_.size(); ++t)
+    counts_[t].apart += counts_[t - 1].apart, counts_[t].contacts += counts_[t - 1].contacts,
+        counts_[t].impacts += counts_[t - 1].impacts;
+  const RangeCount& all = counts_.back();
+  contacts_.resize(all.contacts), targets_.resize(all.contacts), pair_of_.resize(all.contacts);
+  topology_next_.resize(all.contacts), impacts_.resize(all.impacts), apart_.resize(all.apart);
+  range_flags_.assign(static_cast<std::size_t>(w.threads()), 0);
+  w.for_ranges(n, min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
+    RangeCount at = counts_[static_cast<std::size_t>(t)];
+    std::uint8_t flags = 0;
+    for (std::size_t i = begin; i < end; ++i) {
+      if (kinds_[i] == PairKind::apart) apart_[at.apart++] = static_cast<std::uint32_t>(i);
+      if (kinds_[i] < PairKind::contact) continue;
+      if (kinds_[i] == PairKind::impact) impacts_[at.impacts++] = static_cast<std::uint32_t>(at.contacts);
+      flags |= make_contact(k, i, h, at.contacts++);
     }
-    targets_.push_back(ct.target);
-    pair_of_.push_back(static_cast<std::uint32_t>(i));
-    friction = friction || pair_friction(k, p.c, p.b) > 0.0;
-    const std::uint32_t flags = static_cast<std::uint32_t>(axis) | (wc == 0.0) << 2 | (wb == 0.0) << 3 |
-                                links(wc, k.velocity[p.c]) << 4 | links(wb, k.velocity[p.b]) << 5;
-    topology_next_.push_back({p.c, p.b, flags});
-  }
+    range_flags_[static_cast<std::size_t>(t)] = flags;
+  });
+  std::uint8_t flags = 0;
+  for (const std::uint8_t f : range_flags_) flags |= f;
+  moving_fixed_ = flags & 1;
   stats.contacts += static_cast<std::int64_t>(contacts_.size());
-  prepare_friction(k, friction);
+  prepare_friction(k, flags & 2);
   schedule(k, g);
   // Velocities before any impulse, for the energy guard and the impact time.
   v_start_.resize(slot_body_.size());
   v_inelastic_.resize(slot_body_.size());
   for (std::size_t i = 0; i < slot_body_.size(); ++i) v_start_[i] = k.velocity[slot_body_[i]];
+}
+
+// What prepare() makes of pair i (its axis in axes_); keeps its normal speed.
+ContactSolver::PairKind ContactSolver::pair_kind(const Components& k, std::size_t i, double h, double threshold,
+                                                 const SolverSettings& s) {
+  const Pair& p = pairs_[i];
+  const auto [axis, gap, separation, separating, corner] = axes_[i];
+  const Vector v = k.velocity[p.c] - k.velocity[p.b];
+  // Speculative: a pair further apart than the margin is a contact only if
+  // it closes the gap within this substep.
+  if (separation > s.margin && separation + Vector::dot(v, axis_normal[separating]) * h > 0.0) return PairKind::apart;
+  const Vector n = axis_normal[axis];
+  const double vn = normal_speeds_[i] = Vector::dot(v, n);
+  const bool impact = vn < -threshold && gap + vn * h <= 0.0;
+  if (!s.impacts && left_to_ccd(s, p, n, impact, gap + vn * h <= 0.0 && gap > s.touch)) return PairKind::left;
+  return impact ? PairKind::impact : PairKind::contact;
+}
+
+// Contact j, of pair i (pair_kind: contact or impact). Returns bit 0: a
+// fixed body of it moves; bit 1: it has friction.
+std::uint8_t ContactSolver::make_contact(const Components& k, std::size_t i, double h, std::size_t j) {
+  const Pair& p = pairs_[i];
+  const auto [axis, gap, separation, separating, corner] = axes_[i];
+  const double vn = normal_speeds_[i];
+  const double wc = inverse_mass_[p.c], wb = inverse_mass_[p.b];
+  // (The bodies' velocities are read again only for a fixed one.)
+  const bool moving_fixed = (wc == 0.0 && !Vector::is_zero(k.velocity[p.c])) ||
+                            (wb == 0.0 && !Vector::is_zero(k.velocity[p.b]));
+  // Each field written in place: a whole contact built aside and copied in
+  // was read back in 16-byte loads from narrower stores (a store-forwarding
+  // stall: 10 % of the pyramid's step, perf annotate).
+  ContactConstraint& ct = contacts_[j];
+  ct.c = p.c, ct.b = p.b, ct.axis = axis, ct.wc = wc, ct.wb = wb, ct.inv_w = 1.0 / (wc + wb);
+  ct.lambda = ct.lambda2 = 0.0;
+  if (kinds_[i] == PairKind::impact) {
+    // A real impact this substep: stopped here (target 0), then bounced by
+    // e times the stopping impulse once the iterations are done.
+    ct.restitution = std::min(k.restitution[p.c], k.restitution[p.b]);
+    ct.resting = false;
+    ct.target = 0.0;
+    ct.toi = gap > 0.0 ? gap / -vn : 0.0;
+  } else {
+    // Close at most the gap (a speculative contact), never approach once touching.
+    ct.restitution = ct.toi = 0.0;
+    ct.resting = true;
+    ct.target = gap > 0.0 ? -gap / h : 0.0;
+  }
+  targets_[j] = ct.target;
+  pair_of_[j] = static_cast<std::uint32_t>(i);
+  const std::uint32_t flags = static_cast<std::uint32_t>(axis) | (wc == 0.0) << 2 | (wb == 0.0) << 3 |
+                              links(wc, k.velocity[p.c]) << 4 | links(wb, k.velocity[p.b]) << 5;
+  topology_next_[j] = {p.c, p.b, flags};
+  return static_cast<std::uint8_t>(moving_fixed | (pair_friction(k, p.c, p.b) > 0.0) << 1);
 }
 
 // With CCD on, a pair apart and not closing before Forces, whose kick closes
@@ -342,7 +383,7 @@ bool ContactSolver::turned_to_meet(const Components& k, std::span<const EntityId
   };
   bool any = std::any_of(apart_.begin(), apart_.end(), [&](std::uint32_t i) { return closes(pairs_[i]); });
   if (!swept_further(k, h, s.margin)) return any;
-  broadphase.find(k, entities, h, s.margin, later_);
+  broadphase.find(k, entities, h, s.margin, later_, PairRule::solvable, s.workers);
   const std::size_t added = pairs_.size();
   add_unknown_pairs();
   return any || std::any_of(pairs_.begin() + static_cast<std::ptrdiff_t>(added), pairs_.end(), closes);
@@ -558,37 +599,47 @@ void ContactSolver::schedule(const Components& k, Vector g) {
 // accumulators (`after_bounce`: lambda2, no approach allowed at the impacts).
 template <bool after_bounce>
 void ContactSolver::load_rows(const Components& k) {
+  Workers& w = workers_or_one(workers_);
   solver_bodies_.resize(slot_body_.size());
-  for (std::size_t i = 0; i < slot_body_.size(); ++i) {
-    const EntityId e = slot_body_[i];
-    solver_bodies_[i] = {k.velocity[e], inverse_mass_[e]};
-  }
+  w.for_ranges(slot_body_.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const EntityId e = slot_body_[i];
+      solver_bodies_[i] = {k.velocity[e], inverse_mass_[e]};
+    }
+  });
   rows_.resize(order_.size());
-  for (std::size_t i = 0; i < order_.size(); ++i) {
-    const ContactConstraint& ct = contacts_[order_[i]];
-    const double target = after_bounce && !ct.resting ? 0.0 : ct.target;
-    rows_[i] = {slot_of_[ct.c], slot_of_[ct.b], static_cast<std::uint32_t>(ct.axis), ct.inv_w, target,
-                after_bounce ? 0.0 : ct.lambda};
-  }
   friction_rows_.resize(friction_.size());
-  for (std::size_t i = 0; i < friction_.size(); ++i) {
-    const FrictionRow& f = friction_[order_[i]];
-    friction_rows_[i] = {f.mu, after_bounce ? 0.0 : f.lambda};
-  }
+  w.for_ranges(order_.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const ContactConstraint& ct = contacts_[order_[i]];
+      const double target = after_bounce && !ct.resting ? 0.0 : ct.target;
+      rows_[i] = {slot_of_[ct.c], slot_of_[ct.b], static_cast<std::uint32_t>(ct.axis), ct.inv_w, target,
+                  after_bounce ? 0.0 : ct.lambda};
+    }
+    for (std::size_t i = begin; i < std::min(end, friction_.size()); ++i) {
+      const FrictionRow& f = friction_[order_[i]];
+      friction_rows_[i] = {f.mu, after_bounce ? 0.0 : f.lambda};
+    }
+  });
 }
 
 // The relaxation's results back: accumulators and velocities.
 template <bool after_bounce>
 void ContactSolver::store_rows(Components& k) {
-  for (std::size_t i = 0; i < order_.size(); ++i) {
-    ContactConstraint& ct = contacts_[order_[i]];
-    (after_bounce ? ct.lambda2 : ct.lambda) = rows_[i].lambda;
-  }
-  for (std::size_t i = 0; i < friction_rows_.size(); ++i) {
-    FrictionRow& f = friction_[order_[i]];
-    (after_bounce ? f.lambda2 : f.lambda) = friction_rows_[i].lambda;
-  }
-  for (std::size_t i = 0; i < slot_body_.size(); ++i) k.velocity[slot_body_[i]] = solver_bodies_[i].v;
+  Workers& w = workers_or_one(workers_);
+  w.for_ranges(order_.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      ContactConstraint& ct = contacts_[order_[i]];
+      (after_bounce ? ct.lambda2 : ct.lambda) = rows_[i].lambda;
+    }
+    for (std::size_t i = begin; i < std::min(end, friction_rows_.size()); ++i) {
+      FrictionRow& f = friction_[order_[i]];
+      (after_bounce ? f.lambda2 : f.lambda) = friction_rows_[i].lambda;
+    }
+  });
+  w.for_ranges(slot_body_.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) k.velocity[slot_body_[i]] = solver_bodies_[i].v;
+  });
 }
 
 // Sequential impulses with accumulated clamping, on the hot copies: the
@@ -729,15 +780,18 @@ void ContactSolver::impact_time(Components& k, double h, Vector g, bool exact_mo
 void ContactSolver::store() {
   last_jn_.resize(contacts_.size());
   last_jt_.resize(contacts_.size());
-  for (std::size_t i = 0; i < contacts_.size(); ++i) {
-    const ContactConstraint& ct = contacts_[i];
-    const std::uint32_t p = pair_of_[i];
-    const bool earlier = p < earlier_jn_.size();  // earlier rounds of this substep (keep_round())
-    const double jn = ct.lambda + ct.lambda2 + (earlier ? earlier_jn_[p] : 0.0);
-    const bool keep = ct.resting && jn > 0.0;
-    last_jn_[i] = keep ? jn : 0.0;
-    last_jt_[i] = (friction_.empty() ? 0.0 : friction_[i].lambda + friction_[i].lambda2) + (earlier ? earlier_jt_[p] : 0.0);
-  }
+  workers_or_one(workers_).for_ranges(contacts_.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const ContactConstraint& ct = contacts_[i];
+      const std::uint32_t p = pair_of_[i];
+      const bool earlier = p < earlier_jn_.size();  // earlier rounds of this substep (keep_round())
+      const double jn = ct.lambda + ct.lambda2 + (earlier ? earlier_jn_[p] : 0.0);
+      const bool keep = ct.resting && jn > 0.0;
+      last_jn_[i] = keep ? jn : 0.0;
+      last_jt_[i] = (friction_.empty() ? 0.0 : friction_[i].lambda + friction_[i].lambda2) +
+                    (earlier ? earlier_jt_[p] : 0.0);
+    }
+  });
   restored_ = false;
 }
 
@@ -885,7 +939,8 @@ void ContactSolver::solve_positions(Components& k, std::span<const EntityId> ent
   // Touching pairs too (within the margin): they take no correction but link
   // the support graph of the bottom-up pass down to the ground.
   StageTimes::Laps laps(times);
-  laps.time(Stage::pairs, [&] { broadphase.find(k, entities, 0.0, s.margin, pairs_); });
+  workers_ = s.workers;
+  laps.time(Stage::pairs, [&] { broadphase.find(k, entities, 0.0, s.margin, pairs_, PairRule::solvable, s.workers); });
   laps.time(Stage::positions, [&] {
     if (prepare_positions(k, s)) project(k, g, s);
   });
@@ -938,12 +993,17 @@ void ContactSolver::physical_axes(const Components& k, const SolverSettings& s) 
 // with bit 2 of faces_) are looked at for them, and only when there is such a pair.
 void ContactSolver::contact_axes(const Components& k, const SolverSettings& s) {
   axes_.resize(pairs_.size());
-  bool corners = false;
-  for (std::size_t i = 0; i < pairs_.size(); ++i) {
-    axes_[i] = contact_axis(k, pairs_[i].c, pairs_[i].b, s.touch);
-    corners = corners || axes_[i].corner;
-  }
-  if (!corners) return;
+  Workers& w = workers_or_one(s.workers);
+  range_flags_.assign(static_cast<std::size_t>(w.threads()), 0);
+  w.for_ranges(pairs_.size(), min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
+    bool corners = false;
+    for (std::size_t i = begin; i < end; ++i) {
+      axes_[i] = contact_axis(k, pairs_[i].c, pairs_[i].b, s.touch);
+      corners = corners || axes_[i].corner;
+    }
+    range_flags_[static_cast<std::size_t>(t)] = corners;
+  });
+  if (std::none_of(range_flags_.begin(), range_flags_.end(), [](std::uint8_t f) { return f != 0; })) return;
   constexpr std::uint8_t wanted = 4;
   faces_.assign(k.size(), 0);
   for (std::size_t i = 0; i < pairs_.size(); ++i)

@@ -59,6 +59,7 @@
 #include "engine/pairs.hpp"
 #include "engine/timing.hpp"
 #include "engine/union_find.hpp"
+#include "engine/workers.hpp"
 
 namespace physics {
 
@@ -89,6 +90,9 @@ struct SolverSettings {
   // integrator's, engine/slide.hpp); with CCD on, the pairs Forces turned to
   // close within the substep are left to it (turned_by_forces()). Empty: none.
   std::span<const Vector> before_forces;
+  // The threads of the loops whose items are independent (the same bits for
+  // any number); none: one thread.
+  Workers* workers = nullptr;
 };
 
 // A resting contact's impulses at the end of a substep: what the next
@@ -175,6 +179,15 @@ class ContactSolver {
  private:
   // The stages of solve_velocities, in order.
   void prepare(const Components& k, double h, Vector g, const SolverSettings& s);
+  enum class PairKind : std::uint8_t { apart, left /* to CCD */, contact, impact };
+  PairKind pair_kind(const Components& k, std::size_t i, double h, double threshold, const SolverSettings& s);
+  std::uint8_t make_contact(const Components& k, std::size_t i, double h, std::size_t j);
+  struct RangeCount {
+    std::size_t apart = 0, contacts = 0, impacts = 0;
+  };
+  std::vector<PairKind> kinds_;         // by pair (prepare())
+  std::vector<double> normal_speeds_;   // by pair: (v_c - v_b)·n (prepare())
+  std::vector<RangeCount> counts_;  // prepare(): by range, then where each range's go
   static bool turned_by_forces(const SolverSettings& s, const Pair& p, Vector n);
   static bool left_to_ccd(const SolverSettings& s, const Pair& p, Vector n, bool impact, bool closes_apart);
   void schedule(const Components& k, Vector g);
@@ -221,6 +234,8 @@ class ContactSolver {
   std::vector<EntityId> shifted_;    // the bodies whose line_start_ is set this substep
   std::vector<ContactAxis> axes_;    // by pair: its normal (contact_axes())
   std::vector<std::uint8_t> faces_;  // by entity id: touching_face's bits over its pairs (contact_axes())
+  Workers* workers_ = nullptr;  // this call's (SolverSettings::workers)
+  std::vector<std::uint8_t> range_flags_;  // a loop's result per range of its items (Workers::for_ranges)
   // solve_positions' stages.
   bool prepare_positions(const Components& k, const SolverSettings& s);
   void project(Components& k, Vector g, const SolverSettings& s);

@@ -186,27 +186,40 @@ bool BroadPhase::course_skip_unsolvable(const Components& k, Pair& out, bool don
 // ---- find() ----
 
 void BroadPhase::find(const Components& k, std::span<const EntityId> entities, double h, double reach,
-                      std::vector<Pair>& out, PairRule rule) {
+                      std::vector<Pair>& out, PairRule rule, Workers* workers) {
+  Workers& w = workers_or_one(workers);
   const std::size_t n = entities.size();
   current_.resize(n);
-  bool reuse = fat_built_ && n == entities_.size() && std::equal(entities.begin(), entities.end(), entities_.begin());
-  for (std::size_t i = 0; i < n; ++i) {
-    const Bounds s = current_[i] = swept(k, entities[i], h, reach);
-    // (A NaN fails the test: a rebuild, which handles it.)
-    if (!reuse) continue;  // (reuse implies fat_ holds the same n bodies)
-    const Bounds& f = fat_[i];
-    reuse = f.x0 <= s.x0 && f.y0 <= s.y0 && s.x1 <= f.x1 && s.y1 <= f.y1 &&
-            fixed_[i] == !std::isfinite(k.mass[entities[i]]);
-  }
-  if (!reuse) fat_rebuild(k, entities, h);
+  const bool same = fat_built_ && n == entities_.size() && std::equal(entities.begin(), entities.end(), entities_.begin());
+  range_inside_.assign(static_cast<std::size_t>(w.threads()), 1);
+  w.for_ranges(n, min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
+    bool inside = same;  // (same implies fat_ holds the same n bodies)
+    for (std::size_t i = begin; i < end; ++i) {
+      const Bounds s = current_[i] = swept(k, entities[i], h, reach);
+      // (A NaN fails the test: a rebuild, which handles it.)
+      if (!inside) continue;
+      const Bounds& f = fat_[i];
+      inside = f.x0 <= s.x0 && f.y0 <= s.y0 && s.x1 <= f.x1 && s.y1 <= f.y1 &&
+               fixed_[i] == !std::isfinite(k.mass[entities[i]]);
+    }
+    range_inside_[static_cast<std::size_t>(t)] = inside;
+  });
+  if (!std::all_of(range_inside_.begin(), range_inside_.end(), [](std::uint8_t in) { return in != 0; }))
+    fat_rebuild(k, entities, h, w);
+  // The candidates that touch, each range's in order, then joined in range order.
+  const auto candidates = grid_.pairs();
   out.clear();
-  out.reserve(grid_.pairs().size());
-  for (const PairKey key : grid_.pairs()) {
-    const std::uint32_t i = pair_first(key), j = pair_second(key);
-    const Bounds& a = current_[i];
-    const Bounds& b = current_[j];
-    if (touch(a, b)) out.push_back({entities[i], entities[j]});
-  }
+  out.reserve(candidates.size());
+  range_pairs_.resize(static_cast<std::size_t>(w.threads()));
+  for (auto& part : range_pairs_) part.clear();
+  w.for_ranges(candidates.size(), min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
+    std::vector<Pair>& part = t == 0 ? out : range_pairs_[static_cast<std::size_t>(t)];
+    for (std::size_t c = begin; c < end; ++c) {
+      const std::uint32_t i = pair_first(candidates[c]), j = pair_second(candidates[c]);
+      if (touch(current_[i], current_[j])) part.push_back({entities[i], entities[j]});
+    }
+  });
+  for (std::size_t t = 1; t < range_pairs_.size(); ++t) out.insert(out.end(), range_pairs_[t].begin(), range_pairs_[t].end());
   if (k.any_rules()) std::erase_if(out, [&](Pair p) { return !keeps(rule, k, p.c, p.b, h); });
 }
 
@@ -236,24 +249,26 @@ void BroadPhase::find_selected(const Components& k, std::span<const EntityId> en
   }
 }
 
-void BroadPhase::fat_rebuild(const Components& k, std::span<const EntityId> entities, double h) {
+void BroadPhase::fat_rebuild(const Components& k, std::span<const EntityId> entities, double h, Workers& w) {
   const std::size_t n = entities.size();
   fat_.resize(n);
   boxes_.resize(n);
   fixed_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const Bounds& c = current_[i];
-    // Ahead along the velocity too, and only ahead: a falling body stays in
-    // its box for a few calls instead of leaving it at every one, and the
-    // box does not grow behind it (where it only adds candidate pairs).
-    const Vector d = (fat_steps * h) * k.velocity[entities[i]];
-    fat_[i] = {c.x0 - fat_margin + std::min(d.x, 0.0), c.y0 - fat_margin + std::min(d.y, 0.0),
-               c.x1 + fat_margin + std::max(d.x, 0.0), c.y1 + fat_margin + std::max(d.y, 0.0)};
-    // Rounded outwards to float: the grid's boxes contain the exact ones, so
-    // it finds a superset of the pairs, which the exact test trims.
-    boxes_[i] = FloatBox::outward(fat_[i].x0, fat_[i].y0, fat_[i].x1, fat_[i].y1);
-    fixed_[i] = !std::isfinite(k.mass[entities[i]]);
-  }
+  w.for_ranges(n, min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const Bounds& c = current_[i];
+      // Ahead along the velocity too, and only ahead: a falling body stays in
+      // its box for a few calls instead of leaving it at every one, and the
+      // box does not grow behind it (where it only adds candidate pairs).
+      const Vector d = (fat_steps * h) * k.velocity[entities[i]];
+      fat_[i] = {c.x0 - fat_margin + std::min(d.x, 0.0), c.y0 - fat_margin + std::min(d.y, 0.0),
+                 c.x1 + fat_margin + std::max(d.x, 0.0), c.y1 + fat_margin + std::max(d.y, 0.0)};
+      // Rounded outwards to float: the grid's boxes contain the exact ones, so
+      // it finds a superset of the pairs, which the exact test trims.
+      boxes_[i] = FloatBox::outward(fat_[i].x0, fat_[i].y0, fat_[i].x1, fat_[i].y1);
+      fixed_[i] = !std::isfinite(k.mass[entities[i]]);
+    }
+  });
   grid_.build(boxes_, fixed_);
   entities_.assign(entities.begin(), entities.end());
   fat_built_ = true;

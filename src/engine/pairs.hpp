@@ -32,6 +32,7 @@
 #include "engine/components.hpp"
 #include "engine/broadphase.hpp"
 #include "engine/rules.hpp"
+#include "engine/workers.hpp"
 
 namespace physics {
 
@@ -50,8 +51,10 @@ class BroadPhase {
   // valid until the next call on this broad phase.
   CoursePairs course_pairs(const Components& k, std::span<const EntityId> entities, double h);
 
+  // `workers`: the threads of its loops over the bodies and the candidates
+  // (the same pairs, in the same order, for any number); none: one thread.
   void find(const Components& k, std::span<const EntityId> entities, double h, double reach, std::vector<Pair>& out,
-            PairRule rule = PairRule::solvable);
+            PairRule rule = PairRule::solvable, Workers* workers = nullptr);
   // The pairs of find(h, 0) that include a selected body (`selected`, by
   // entity id; CCD's fast bodies in the auto mode). A few selected bodies
   // are each tested against every body, which costs less than a grid of the
@@ -116,7 +119,7 @@ class BroadPhase {
   void row_pushed_out(const Components& k);
   bool row_refresh(const Components& k, std::uint32_t i);
   // find().
-  void fat_rebuild(const Components& k, std::span<const EntityId> entities, double h);
+  void fat_rebuild(const Components& k, std::span<const EntityId> entities, double h, Workers& w);
 
   UniformGrid grid_;
   std::vector<EntityId> entities_;   // the bodies of find()'s fat grid, in registration order
@@ -145,6 +148,8 @@ class BroadPhase {
   std::vector<Bounds> current_;  // this call's exact boxes
   std::vector<Bounds> scan_;     // find_selected()'s swept boxes
   std::vector<Bounds> fat_;      // the boxes the grid was built on
+  std::vector<std::uint8_t> range_inside_;        // find() with threads: each range's bodies all in their fat boxes
+  std::vector<std::vector<Pair>> range_pairs_;  // find() with threads: each range's pairs, joined in order
 };
 
 // The course pass's pairs as a range: `for (const Pair p : pairs)`. Moving on

@@ -128,8 +128,9 @@ void World::destroy(EntityId e) {
 }
 
 namespace {
-SolverSettings solver_settings(const Params& p) {
+SolverSettings solver_settings(const Params& p, Workers& workers) {
   SolverSettings s;
+  s.workers = &workers;
   s.iterations = p.iterations;
   s.impacts = !p.ccd;  // with CCD on, impacts are its business
   s.exact_motion = p.integrator == Integrator::exact;
@@ -159,7 +160,7 @@ void World::before_move(double h) {
     if (params.solver == Solver::automatic) {
       auto_before_move(colliding, h);
     } else {
-      if (params.solver == Solver::stable) solve_velocities(colliding, h, solver_settings(params));
+      if (params.solver == Solver::stable) solve_velocities(colliding, h, solver_settings(params, workers));
       if (params.ccd) sweep(colliding, h);
     }
   }
@@ -177,7 +178,7 @@ void World::auto_before_move(std::span<const EntityId> bodies, double h) {
   // The choice is not timed: two clock reads would cost a tenth of a small
   // scene's step, more than the choice itself (an O(n) look at velocities).
   if (automatic.plan(components, bodies, h, params.gravity)) {
-    SolverSettings s = solver_settings(params);
+    SolverSettings s = solver_settings(params, workers);
     s.impacts = !automatic.sweep_all();
     if (automatic.sweep_all()) {
       solve_velocities(bodies, h, s);
@@ -254,7 +255,7 @@ void World::end_frame() {
 
 void World::after_move() {
   if (!declares(SystemId::collision) || !solver_step()) return;
-  contact_solver.solve_positions(components, colliding(), params.gravity, solver_settings(params),
+  contact_solver.solve_positions(components, colliding(), params.gravity, solver_settings(params, workers),
                                  broadphase, times);
 }
 

@@ -24,6 +24,7 @@
 #include "engine/system_set.hpp"
 #include "engine/tiles.hpp"
 #include "engine/timing.hpp"
+#include "engine/workers.hpp"
 
 namespace physics {
 
@@ -90,6 +91,9 @@ struct World {
   BroadPhase broadphase;
   Ccd ccd;
   ContactSolver contact_solver;
+  // The threads of the stable solver's loops and their broad phase
+  // (WorldDef::threads, --threads): the same bits for any number.
+  Workers workers;
   AutoMode automatic;  // Solver::automatic's choices and counts
   // What the checks after each step found (engine/health.hpp).
   Health health;

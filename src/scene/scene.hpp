@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -306,6 +307,10 @@ World make_world(const SceneSpec& s, const std::vector<Body>& bodies, bool with_
 World make_world(const SceneSpec& s, bool with_draw, const std::string& source = "scene");
 // What builds a scene's world from its bodies: make_world, or the course's
 // functions for the sheet's scenes (app/course_world.hpp, --course).
-using WorldMaker = World (*)(const SceneSpec& s, const std::vector<Body>& bodies, bool with_draw);
+using WorldMaker = std::function<World(const SceneSpec& s, const std::vector<Body>& bodies, bool with_draw)>;
+// make_world (the overload above) as a WorldMaker.
+inline World make_scene_world(const SceneSpec& s, const std::vector<Body>& bodies, bool with_draw) {
+  return make_world(s, bodies, with_draw);
+}
 
 }  // namespace physics

@@ -1,0 +1,87 @@
+// The engine's threads (WorldDef::threads, --threads N): a fixed team that
+// runs one task on every thread at once, for the loops of a step whose items
+// are independent (each writes its own results), so a step's results are the
+// same bits for any number of threads.
+//
+// A team of our own rather than a task scheduler's pool (oneTBB's): the
+// solver's stages come in bursts of a few microseconds each, many per
+// substep, and a task scheduler promises no concurrency (its tasks may run
+// one after the other on one thread), which a loop whose threads wait for
+// each other cannot live with. Here every thread of the team takes part in
+// every task; between tasks the helpers spin for a short while (the next
+// stage is usually microseconds away), then sleep on an atomic wait. As
+// Box2D v3 leaves its task system to the game, a game that wants a pool of
+// its own keeps threads at 1.
+//
+// A build without threads (WebAssembly under WASI) has a team of one only:
+// asking for more throws std::invalid_argument.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <memory>
+
+namespace physics {
+
+inline constexpr int max_threads = 64;
+// Fewer items than this run on one thread: a loop over them takes a few
+// microseconds, about what waking the team costs.
+inline constexpr std::size_t min_parallel_items = 4096;
+
+class Workers {
+ public:
+  // Throws std::invalid_argument unless 1 <= threads <= max_threads (and 1
+  // in a build without threads).
+  explicit Workers(int threads = 1);
+  // A copy has a team of its own, of the same size.
+  Workers(const Workers& other) : Workers(other.threads()) {}
+  Workers& operator=(const Workers& other);
+  Workers(Workers&&) noexcept;
+  Workers& operator=(Workers&&) noexcept;
+  ~Workers();
+
+  int threads() const { return threads_; }
+
+  // Runs task(t) for every t in [0, threads()) at once, t = 0 on the calling
+  // thread, and returns when every one has returned. The task must not throw.
+  template <class Task>
+  void run(Task&& task) {
+    if (threads_ == 1) {
+      task(0);
+      return;
+    }
+    start(+[](void* context, int t) { (*static_cast<Task*>(context))(t); }, &task);
+  }
+
+  // Splits [0, n) into threads() contiguous ranges, in order, and runs
+  // body(t, begin, end) on each at once; one range [0, n) on the calling
+  // thread when n < min_items (a few microseconds of work is not worth
+  // waking the team for).
+  template <class Body>
+  void for_ranges(std::size_t n, std::size_t min_items, Body&& body) {
+    if (threads_ == 1 || n < min_items) {
+      body(0, std::size_t{0}, n);
+      return;
+    }
+    run([&](int t) { body(t, range_start(n, t), range_start(n, t + 1)); });
+  }
+  // Where range t of for_ranges(n) starts (range threads() starts at n).
+  std::size_t range_start(std::size_t n, int t) const {
+    return n / static_cast<std::size_t>(threads_) * static_cast<std::size_t>(t) +
+           std::min(n % static_cast<std::size_t>(threads_), static_cast<std::size_t>(t));
+  }
+
+ private:
+  struct Team;  // the helpers (threads - 1 of them) and what they share
+  void start(void (*task)(void*, int), void* context);
+  int threads_ = 1;
+  std::unique_ptr<Team> team_;
+};
+
+// *w, or a team of one when there is none.
+inline Workers& workers_or_one(Workers* w) {
+  static Workers one;  // (no helpers: nothing to share between callers)
+  return w ? *w : one;
+}
+
+}  // namespace physics

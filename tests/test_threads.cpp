@@ -1,0 +1,130 @@
+// The engine's threads (engine/workers.hpp, WorldDef::threads, --threads):
+// the team's ranges, and the same bits for any number of threads on worlds
+// big enough for every parallel loop to split (min_parallel_items).
+#include <bit>
+#include <cstdint>
+#include <vector>
+
+#include "helpers.hpp"
+#include "engine/workers.hpp"
+#include "physics/physics.hpp"
+
+namespace {
+
+using namespace physics;
+
+BOOST_AUTO_TEST_SUITE(threads)
+
+// Every index once, in contiguous ranges in order, one per thread.
+BOOST_AUTO_TEST_CASE(ranges_cover_every_item_once_in_order) {
+  for (const int threads : {1, 2, 3, 7}) {
+    Workers w(threads);
+    BOOST_TEST(w.threads() == threads);
+    for (const std::size_t n : {std::size_t{0}, std::size_t{5}, std::size_t{4096}, std::size_t{10001}}) {
+      std::vector<int> seen(n, 0);
+      std::vector<std::size_t> starts(static_cast<std::size_t>(threads), n + 1), ends(starts);
+      w.for_ranges(n, 1, [&](int t, std::size_t begin, std::size_t end) {
+        starts[static_cast<std::size_t>(t)] = begin, ends[static_cast<std::size_t>(t)] = end;
+        for (std::size_t i = begin; i < end; ++i) ++seen[i];
+      });
+      for (std::size_t i = 0; i < n; ++i) BOOST_TEST_REQUIRE(seen[i] == 1);
+      for (int t = 0; t < threads && n > 0; ++t) {  // (n = 0 < min_items: one empty range)
+        BOOST_TEST(starts[static_cast<std::size_t>(t)] == w.range_start(n, t));
+        BOOST_TEST(ends[static_cast<std::size_t>(t)] == w.range_start(n, t + 1));
+      }
+      BOOST_TEST(w.range_start(n, threads) == n);
+    }
+  }
+}
+
+// Every thread runs the task once per run, many runs in a row (the helpers
+// spinning between them, then asleep).
+BOOST_AUTO_TEST_CASE(every_thread_runs_each_task_once) {
+  Workers w(3);
+  std::vector<int> runs(3, 0);
+  for (int r = 0; r < 2000; ++r) w.run([&](int t) { ++runs[static_cast<std::size_t>(t)]; });
+  BOOST_TEST(runs == std::vector<int>(3, 2000), boost::test_tools::per_element());
+  Workers copy(w);  // a team of its own, as large
+  BOOST_TEST(copy.threads() == 3);
+  copy.run([&](int t) { ++runs[static_cast<std::size_t>(t)]; });
+  BOOST_TEST(runs == std::vector<int>(3, 2001), boost::test_tools::per_element());
+}
+
+BOOST_AUTO_TEST_CASE(a_bad_number_of_threads_is_refused) {
+  BOOST_CHECK_THROW(Workers(0), std::invalid_argument);
+  BOOST_CHECK_THROW(Workers(max_threads + 1), std::invalid_argument);
+  WorldDef def = default_world_def();
+  def.threads = 0;
+  BOOST_CHECK_THROW(create_world(def), Error);
+  def.threads = 2;
+  const WorldId w = create_world(def);
+  BOOST_TEST(world_def(w).threads == 2);
+  destroy_world(w);
+}
+
+// A walled box: a settled pile of rows (contacts far beyond
+// min_parallel_items) and squares raining onto it (impacts, bounces, apart
+// pairs), under `solver`, with friction on every other body.
+std::vector<double> run_rain(int threads, SolverKind solver, int steps) {
+  WorldDef def = default_world_def();
+  def.gravity = {0.0, 0.001};
+  def.solver = solver;
+  def.substeps = 2;
+  def.threads = threads;
+  const WorldId w = create_world(def);
+  BodyDef wall = default_body_def();
+  wall.mass = fixed_mass;
+  wall.restitution = 0.5;
+  for (const auto& [pos, size] : {std::pair<Vec2, Vec2>{{0, 600}, {1000, 40}}, {{-40, 0}, {40, 640}}, {{1000, 0}, {40, 640}}}) {
+    wall.position = pos, wall.size = size;
+    create_body(w, wall);
+  }
+  BodyDef b = default_body_def();
+  b.size = {10, 10};
+  b.restitution = 0.5;
+  int n = 0;
+  for (int row = 0; row < 30; ++row)  // 3 000 squares at rest, wall to wall: about 9 000 pairs
+    for (int col = 0; col < 100; ++col, ++n) {
+      b.position = {col * 10.0, 590.0 - row * 10.0};
+      b.friction = n % 2 ? 0.5 : 0.0;
+      create_body(w, b);
+    }
+  for (int row = 0; row < 6; ++row)  // 300 falling, spaced apart
+    for (int col = 0; col < 50; ++col, ++n) {
+      b.position = {col * 20.0 + (row % 2) * 5.0, 100.0 - row * 20.0};
+      b.velocity = {0.01 * ((col % 5) - 2), 0.2};
+      b.friction = n % 2 ? 0.5 : 0.0;
+      create_body(w, b);
+    }
+  for (int s = 0; s < steps; ++s) step(w);
+  std::vector<double> state;
+  for (const BodyId id : bodies(w))
+    for (const Vec2 v : {position(id), velocity(id)}) state.push_back(v.x), state.push_back(v.y);
+  destroy_world(w);
+  return state;
+}
+
+// Bit for bit (a NaN or a -0 differs too: the bits are compared).
+std::vector<std::uint64_t> bits(const std::vector<double>& v) {
+  std::vector<std::uint64_t> out;
+  for (const double x : v) out.push_back(std::bit_cast<std::uint64_t>(x));
+  return out;
+}
+
+BOOST_AUTO_TEST_CASE(the_stable_solver_gives_the_same_bits_on_any_number_of_threads) {
+  const auto one = bits(run_rain(1, SolverKind::stable, 60));
+  BOOST_TEST(one == bits(run_rain(2, SolverKind::stable, 60)));
+  BOOST_TEST(one == bits(run_rain(3, SolverKind::stable, 60)));
+  // Something happened: the rain has fallen onto the pile.
+  const auto start = bits(run_rain(1, SolverKind::stable, 0));
+  BOOST_TEST(one != start);
+}
+
+BOOST_AUTO_TEST_CASE(the_auto_mode_gives_the_same_bits_on_any_number_of_threads) {
+  const auto one = bits(run_rain(1, SolverKind::automatic, 40));
+  BOOST_TEST(one == bits(run_rain(2, SolverKind::automatic, 40)));
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace
