@@ -96,7 +96,7 @@ BOOST_AUTO_TEST_CASE(help_documents_every_flag) {
   BOOST_TEST(r.code == 0);
   for (const char* flag : {"--scene", "--headless", "--frames", "--dt", "--substeps", "--gravity", "--restitution",
                            "--seed", "--dump", "--trace", "--screenshot", "--ccd", "--solver", "--iterations", "--integrator",
-                           "--list-scenes", "--print-scene", "--overlays", "--friction", "--events", "--save"})
+                           "--list-scenes", "--print-scene", "--overlays", "--friction", "--events", "--save", "--threads"})
     BOOST_TEST(has(r.out, flag), flag);
 }
 
@@ -453,6 +453,9 @@ BOOST_AUTO_TEST_CASE(bad_values_on_the_command_line) {
   expect_bad({"--substeps", "0"}, "--substeps: must be an integer in [1, 1000] (got '0')");
   expect_bad({"--substeps", "2.5"}, "--substeps");
   expect_bad({"--iterations", "0"}, "--iterations");
+  expect_bad({"--threads", "0"}, "--threads: must be an integer in [1, 64] (got '0')");
+  expect_bad({"--threads", "65"}, "--threads");
+  expect_bad({"--threads", "two"}, "--threads");
   expect_bad({"--restitution", "1.5"}, "--restitution: must be in [0, 1] (got '1.5')");
   expect_bad({"--restitution=-0.1"}, "--restitution");
   expect_bad({"--frames=-1"}, "--frames");
