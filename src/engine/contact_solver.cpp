@@ -248,22 +248,19 @@ void ContactSolver::prepare(const Components& k, double h, Vector g, const Solve
     counts_[t].apart += counts_[t - 1].apart, counts_[t].contacts += counts_[t - 1].contacts,
         counts_[t].impacts += counts_[t - 1].impacts;
   const RangeCount& all = counts_.back();
-  contacts_.resize(all.contacts), targets_.resize(all.contacts), pair_of_.resize(all.contacts);
+  contacts_.resize(all.contacts), pair_of_.resize(all.contacts);
   topology_next_.resize(all.contacts), impacts_.resize(all.impacts), apart_.resize(all.apart);
-  range_flags_.assign(static_cast<std::size_t>(w.threads()), 0);
-  w.for_ranges(n, min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
+  const std::uint8_t flags = w.or_over_ranges(n, min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
     RangeCount at = counts_[static_cast<std::size_t>(t)];
-    std::uint8_t flags = 0;
+    std::uint8_t bits = 0;
     for (std::size_t i = begin; i < end; ++i) {
       if (kinds_[i] == PairKind::apart) apart_[at.apart++] = static_cast<std::uint32_t>(i);
       if (kinds_[i] < PairKind::contact) continue;
       if (kinds_[i] == PairKind::impact) impacts_[at.impacts++] = static_cast<std::uint32_t>(at.contacts);
-      flags |= make_contact(k, i, h, at.contacts++);
+      bits |= make_contact(k, i, h, at.contacts++);
     }
-    range_flags_[static_cast<std::size_t>(t)] = flags;
+    return bits;
   });
-  std::uint8_t flags = 0;
-  for (const std::uint8_t f : range_flags_) flags |= f;
   moving_fixed_ = flags & 1;
   stats.contacts += static_cast<std::int64_t>(contacts_.size());
   prepare_friction(k, flags & 2);
@@ -319,7 +316,6 @@ std::uint8_t ContactSolver::make_contact(const Components& k, std::size_t i, dou
     ct.resting = true;
     ct.target = gap > 0.0 ? -gap / h : 0.0;
   }
-  targets_[j] = ct.target;
   pair_of_[j] = static_cast<std::uint32_t>(i);
   const std::uint32_t flags = static_cast<std::uint32_t>(axis) | (wc == 0.0) << 2 | (wb == 0.0) << 3 |
                               links(wc, k.velocity[p.c]) << 4 | links(wb, k.velocity[p.b]) << 5;
@@ -519,15 +515,10 @@ void ContactSolver::relax(Components& k, Vector g, const SolverSettings& s) {
   if (!after_bounce && Vector::is_zero(g)) islands_solve_.solve(k, contacts_, friction_);
   if (!s.shock_propagation) return;
   if (!have_order_) support_order_ = shock_passes(k, contacts_, g), have_order_ = true;
-  if (after_bounce) {
-    bounce_targets_.assign(targets_.begin(), targets_.end());
-    for (const std::uint32_t i : impacts_) bounce_targets_[i] = 0.0;  // no approach allowed at the impacts
-  }
-  const std::vector<double>& targets = after_bounce ? bounce_targets_ : targets_;
   for (const ShockPass& pass : support_order_)
     for (const ShockRow& r : pass.rows) {
       const Vector n = axis_normal[r.axis];
-      const double target = targets[r.index];
+      const double target = targets_[r.index];  // this relaxation's (load_rows)
       const double vn = Vector::dot(k.velocity[r.c] - k.velocity[r.b], n);
       if (vn >= target) continue;
       // The lower body is immovable for this pass: the upper takes it all.
@@ -608,6 +599,7 @@ void ContactSolver::load_rows(const Components& k) {
     }
   });
   rows_.resize(order_.size());
+  targets_.resize(order_.size());
   friction_rows_.resize(friction_.size());
   w.for_ranges(order_.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
@@ -615,6 +607,7 @@ void ContactSolver::load_rows(const Components& k) {
       const double target = after_bounce && !ct.resting ? 0.0 : ct.target;
       rows_[i] = {slot_of_[ct.c], slot_of_[ct.b], static_cast<std::uint32_t>(ct.axis), ct.inv_w, target,
                   after_bounce ? 0.0 : ct.lambda};
+      targets_[order_[i]] = target;  // by contact, for the bottom-up pass
     }
     for (std::size_t i = begin; i < std::min(end, friction_.size()); ++i) {
       const FrictionRow& f = friction_[order_[i]];
@@ -994,16 +987,15 @@ void ContactSolver::physical_axes(const Components& k, const SolverSettings& s) 
 void ContactSolver::contact_axes(const Components& k, const SolverSettings& s) {
   axes_.resize(pairs_.size());
   Workers& w = workers_or_one(s.workers);
-  range_flags_.assign(static_cast<std::size_t>(w.threads()), 0);
-  w.for_ranges(pairs_.size(), min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
-    bool corners = false;
+  const bool corners = w.or_over_ranges(pairs_.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+    bool any = false;
     for (std::size_t i = begin; i < end; ++i) {
       axes_[i] = contact_axis(k, pairs_[i].c, pairs_[i].b, s.touch);
-      corners = corners || axes_[i].corner;
+      any = any || axes_[i].corner;
     }
-    range_flags_[static_cast<std::size_t>(t)] = corners;
+    return static_cast<std::uint8_t>(any);
   });
-  if (std::none_of(range_flags_.begin(), range_flags_.end(), [](std::uint8_t f) { return f != 0; })) return;
+  if (!corners) return;
   constexpr std::uint8_t wanted = 4;
   faces_.assign(k.size(), 0);
   for (std::size_t i = 0; i < pairs_.size(); ++i)

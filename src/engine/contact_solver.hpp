@@ -235,7 +235,6 @@ class ContactSolver {
   std::vector<ContactAxis> axes_;    // by pair: its normal (contact_axes())
   std::vector<std::uint8_t> faces_;  // by entity id: touching_face's bits over its pairs (contact_axes())
   Workers* workers_ = nullptr;  // this call's (SolverSettings::workers)
-  std::vector<std::uint8_t> range_flags_;  // a loop's result per range of its items (Workers::for_ranges)
   // solve_positions' stages.
   bool prepare_positions(const Components& k, const SolverSettings& s);
   void project(Components& k, Vector g, const SolverSettings& s);
@@ -293,8 +292,7 @@ class ContactSolver {
   std::vector<FrictionRow> friction_;          // empty, or one per contact
   std::vector<ShockPass> support_order_;       // bottom-up passes over this substep's contacts
   bool have_order_ = false;
-  std::vector<double> targets_;                // by contact: its target (the bottom-up pass's copy)
-  std::vector<double> bounce_targets_;         // the same after the bounces: 0 at the impacts
+  std::vector<double> targets_;                // by contact: its target in this relaxation (load_rows(), for the bottom-up pass)
   std::vector<double> inverse_mass_;           // by entity id, this substep's (solve_velocities)
   std::vector<Vector> v_start_, v_inelastic_;  // by slot
   std::vector<std::uint32_t> impacts_;         // the contacts that are not resting, in order

@@ -191,8 +191,7 @@ void BroadPhase::find(const Components& k, std::span<const EntityId> entities, d
   const std::size_t n = entities.size();
   current_.resize(n);
   const bool same = fat_built_ && n == entities_.size() && std::equal(entities.begin(), entities.end(), entities_.begin());
-  range_inside_.assign(static_cast<std::size_t>(w.threads()), 1);
-  w.for_ranges(n, min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
+  const bool left = w.or_over_ranges(n, min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
     bool inside = same;  // (same implies fat_ holds the same n bodies)
     for (std::size_t i = begin; i < end; ++i) {
       const Bounds s = current_[i] = swept(k, entities[i], h, reach);
@@ -202,10 +201,9 @@ void BroadPhase::find(const Components& k, std::span<const EntityId> entities, d
       inside = f.x0 <= s.x0 && f.y0 <= s.y0 && s.x1 <= f.x1 && s.y1 <= f.y1 &&
                fixed_[i] == !std::isfinite(k.mass[entities[i]]);
     }
-    range_inside_[static_cast<std::size_t>(t)] = inside;
+    return static_cast<std::uint8_t>(!inside);  // a body of the range left its box (or a different list)
   });
-  if (!std::all_of(range_inside_.begin(), range_inside_.end(), [](std::uint8_t in) { return in != 0; }))
-    fat_rebuild(k, entities, h, w);
+  if (left) fat_rebuild(k, entities, h, w);
   // The candidates that touch, each range's in order, then joined in range order.
   const auto candidates = grid_.pairs();
   out.clear();

@@ -148,7 +148,6 @@ class BroadPhase {
   std::vector<Bounds> current_;  // this call's exact boxes
   std::vector<Bounds> scan_;     // find_selected()'s swept boxes
   std::vector<Bounds> fat_;      // the boxes the grid was built on
-  std::vector<std::uint8_t> range_inside_;        // find() with threads: each range's bodies all in their fat boxes
   std::vector<std::vector<Pair>> range_pairs_;  // find() with threads: each range's pairs, joined in order
 };
 

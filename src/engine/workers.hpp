@@ -18,7 +18,9 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 
 namespace physics {
@@ -64,6 +66,18 @@ class Workers {
       return;
     }
     run([&](int t) { body(t, range_start(n, t), range_start(n, t + 1)); });
+  }
+  // for_ranges, where body(t, begin, end) returns bits about its range:
+  // their OR over the ranges (any corner, any fixed body that moves...).
+  template <class Body>
+  std::uint8_t or_over_ranges(std::size_t n, std::size_t min_items, Body&& body) {
+    std::array<std::uint8_t, max_threads> bits{};
+    for_ranges(n, min_items, [&](int t, std::size_t begin, std::size_t end) {
+      bits[static_cast<std::size_t>(t)] = body(t, begin, end);
+    });
+    std::uint8_t all = 0;
+    for (const std::uint8_t b : bits) all |= b;
+    return all;
   }
   // Where range t of for_ranges(n) starts (range threads() starts at n).
   std::size_t range_start(std::size_t n, int t) const {
