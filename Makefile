@@ -479,7 +479,12 @@ WEB_CXX       := clang++-14
 # binaryen's wasm-opt -Oz with --low-memory-unused (the low 1 KiB is the
 # bottom of the 1 MiB stack, reached only on overflow: pointer offsets fold,
 # -9.3 KB; emscripten's default): 861 KB at -O2 (docs/web.md has the sizes).
-WEB_OPT       ?= -Oz -flto -fno-rtti
+WEB_OPT       ?= -Oz -flto -fno-rtti $(WEB_FEATURES)
+# WebAssembly 2.0's conversions that saturate instead of trapping (a double
+# to an integer without range checks around each: -1.4 KB) and its
+# sign-extension instructions (-0.7 KB), which current browsers and Node run
+# (docs/web.md). Bulk memory would add 0.2 KB.
+WEB_FEATURES  := -mnontrapping-fptoint -msign-ext
 WEB_FLAGS     := --target=wasm32-wasi -std=c++20 $(WEB_OPT) -fwasm-exceptions -Wall -Wextra -Werror -ffp-contract=off -Iweb/compat -Iinclude \
                  -Isrc -Itests -isystem $(WEB)/include -DJSON_HAS_FILESYSTEM=0 -DJSON_HAS_EXPERIMENTAL_FILESYSTEM=0 -MMD -MP
 # (src/scene/save.cpp: the save key S of the command line, with std::filesystem.)

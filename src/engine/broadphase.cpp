@@ -248,17 +248,22 @@ void UniformGrid::pairs_of_large() {
     const std::uint32_t i = large_[l];
     query_grid(large_box_[l], [&](std::uint32_t j) { emit(i, j); });
   }
+  // By min_x, then by index: keys whose order is the floats' (one sort of
+  // integers, shared with the pairs', instead of one more of its own).
   large_order_.resize(large_.size());
-  for (std::size_t l = 0; l < large_.size(); ++l) large_order_[l] = static_cast<std::uint32_t>(l);
-  std::sort(large_order_.begin(), large_order_.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return large_box_[a].min_x < large_box_[b].min_x || (large_box_[a].min_x == large_box_[b].min_x && a < b);
-  });
+  for (std::size_t l = 0; l < large_.size(); ++l) {
+    const auto bits = std::bit_cast<std::uint32_t>(large_box_[l].min_x + 0.0f);  // (-0 as +0)
+    const std::uint32_t ordered = bits >> 31 ? ~bits : bits | 0x80000000u;
+    large_order_[l] = std::uint64_t{ordered} << 32 | l;
+  }
+  std::sort(large_order_.begin(), large_order_.end());
+  const auto at = [&](std::size_t a) { return static_cast<std::uint32_t>(large_order_[a]); };  // (l)
   for (std::size_t a = 0; a < large_order_.size(); ++a) {
-    const FloatBox& box = large_box_[large_order_[a]];
+    const FloatBox& box = large_box_[at(a)];
     for (std::size_t b = a + 1; b < large_order_.size(); ++b) {
-      const FloatBox& other = large_box_[large_order_[b]];
+      const FloatBox& other = large_box_[at(b)];
       if (other.min_x > box.max_x) break;
-      if (overlap(box, other)) emit(large_[large_order_[a]], large_[large_order_[b]]);
+      if (overlap(box, other)) emit(large_[at(a)], large_[at(b)]);
     }
   }
 }

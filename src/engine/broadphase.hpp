@@ -179,7 +179,7 @@ class UniformGrid {
   std::vector<std::uint32_t> large_;       // indices of the large bodies
   std::vector<FloatBox> large_box_;            // their current boxes
   std::vector<std::int32_t> large_slot_;   // per body: position in large_, or -1
-  std::vector<std::uint32_t> large_order_; // scratch: large_ sorted by min_x
+  std::vector<std::uint64_t> large_order_; // scratch: (min_x, l) keys, sorted
   std::vector<std::uint8_t> fixed_;        // per body, copied from build()
 
   // Bodies moved after build(), per cell (linked lists, reset at each build).

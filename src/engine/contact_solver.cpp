@@ -167,12 +167,11 @@ std::vector<ShockPass> shock_passes(const Components& k, const Contacts& contact
     const auto order = bottom_up(k.size(), supports);
     if (order.empty()) continue;
     // Every listed contact's upper body is deeper than its lower one, so not fixed: the pass can move it.
-    ShockPass& pass = out.emplace_back(ShockPass{down, {}});
-    pass.rows.reserve(order.size());
-    for (const std::size_t i : order) {
-      const auto& ct = contacts[i];
-      pass.rows.push_back({ct.c, ct.b, static_cast<std::uint32_t>(i), static_cast<std::uint8_t>(ct.axis),
-                           support_sign(ct.axis, down) > 0});
+    ShockPass& pass = out.emplace_back(ShockPass{down, std::vector<ShockRow>(order.size())});
+    for (std::size_t r = 0; r < order.size(); ++r) {
+      const auto& ct = contacts[order[r]];
+      pass.rows[r] = {ct.c, ct.b, static_cast<std::uint32_t>(order[r]), static_cast<std::uint8_t>(ct.axis),
+                      support_sign(ct.axis, down) > 0};
     }
   }
   return out;
@@ -244,7 +243,7 @@ void ContactSolver::prepare(const Components& k, double h, Vector g, const Solve
     }
     counts_[static_cast<std::size_t>(t) + 1] = c;
   });
-  for (std::size_t t = 1; t < counts_.size(); ++t)
+  for (std::size_t t = 1; t <= static_cast<std::size_t>(w.threads()); ++t)
     counts_[t].apart += counts_[t - 1].apart, counts_[t].contacts += counts_[t - 1].contacts,
         counts_[t].impacts += counts_[t - 1].impacts;
   const RangeCount& all = counts_.back();

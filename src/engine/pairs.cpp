@@ -217,7 +217,10 @@ void BroadPhase::find(const Components& k, std::span<const EntityId> entities, d
       if (touch(current_[i], current_[j])) part.push_back({entities[i], entities[j]});
     }
   });
-  for (std::size_t t = 1; t < range_pairs_.size(); ++t) out.insert(out.end(), range_pairs_[t].begin(), range_pairs_[t].end());
+  for (int t = 1; t < w.threads(); ++t) {
+    const std::vector<Pair>& part = range_pairs_[static_cast<std::size_t>(t)];
+    out.insert(out.end(), part.begin(), part.end());
+  }
   if (k.any_rules()) std::erase_if(out, [&](Pair p) { return !keeps(rule, k, p.c, p.b, h); });
 }
 

@@ -7,9 +7,8 @@
 #include <string>
 #include <vector>
 
-#if !defined(__wasi__)
+#if PHYSICS_HAS_THREADS
 #include <thread>
-#define PHYSICS_HAS_THREADS 1
 #endif
 
 namespace physics {
@@ -40,7 +39,7 @@ T wait_change(const std::atomic<T>& a, T old) {
       pause();
       continue;
     }
-#ifdef PHYSICS_HAS_THREADS
+#if PHYSICS_HAS_THREADS
     std::this_thread::yield();
 #endif
     if (i % 16 == 0 && std::chrono::steady_clock::now() > until) break;
@@ -60,7 +59,7 @@ struct Workers::Team {
   std::atomic<bool> stop{false};
   void (*task)(void*, int) = nullptr;
   void* context = nullptr;
-#ifdef PHYSICS_HAS_THREADS
+#if PHYSICS_HAS_THREADS
   std::vector<std::thread> helpers;
 
   void serve(int index) {
@@ -76,15 +75,14 @@ struct Workers::Team {
 };
 
 Workers::Workers(int threads) : threads_(threads) {
-  if (threads < 1 || threads > max_threads)
-    throw std::invalid_argument("threads must be in [1, " + std::to_string(max_threads) + "] (got " +
-                                std::to_string(threads) + ")");
+  constexpr int most = has_threads ? max_threads : 1;
+  if (threads < 1 || threads > most)
+    throw std::invalid_argument("threads must be in [1, " + std::to_string(most) + "] (got " + std::to_string(threads) +
+                                (has_threads ? ")" : "): this build has no threads"));
+#if PHYSICS_HAS_THREADS
   if (threads == 1) return;
-#ifdef PHYSICS_HAS_THREADS
   team_ = std::make_unique<Team>();
   for (int t = 1; t < threads; ++t) team_->helpers.emplace_back([team = team_.get(), t] { team->serve(t); });
-#else
-  throw std::invalid_argument("threads must be 1: this build has no threads (got " + std::to_string(threads) + ")");
 #endif
 }
 
@@ -107,7 +105,7 @@ Workers& Workers::operator=(Workers&& other) noexcept {
 }
 
 Workers::~Workers() {
-#ifdef PHYSICS_HAS_THREADS
+#if PHYSICS_HAS_THREADS
   if (!team_) return;
   team_->stop.store(true, std::memory_order_release);
   team_->generation.fetch_add(1, std::memory_order_acq_rel);
