@@ -159,8 +159,13 @@ class UniformGrid {
   int cell_x(double x) const;
   int cell_y(double y) const;
   // build()'s stages.
-  std::size_t classify(std::span<const FloatBox> boxes, double& max_extent);
-  void size_grid(std::span<const FloatBox> boxes, std::size_t small, double max_extent);
+  struct SmallBoxes {
+    double lo_x, lo_y, hi_x, hi_y;  // the bounds of their corners (min_x, min_y)
+    double max_extent;              // the widest one's larger side
+    std::size_t count;
+  };
+  SmallBoxes classify(std::span<const FloatBox> boxes);
+  void size_grid(const SmallBoxes& small);
   void fill_cells(std::span<const FloatBox> boxes, std::size_t small);
   void pairs_in_grid();
   void pairs_of_large();
