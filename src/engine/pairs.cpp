@@ -61,15 +61,21 @@ void BroadPhase::course_build(const Components& k) {
   fat_built_ = false;
 }
 
-bool BroadPhase::refresh(const Components& k, std::uint32_t i, PairKey current) {
+bool BroadPhase::rebox(const Components& k, std::uint32_t i) {
+  if (inside(k, i)) return false;
   const EntityId e = course_entities_[i];
-  if (boxes_[i].contains(k.position[e], k.box[e])) return false;
+  boxes_[i] = FloatBox::around(k.position[e], k.box[e], course_margin);
+  ++stats_.requeries;
+  return true;
+}
+
+bool BroadPhase::refresh(const Components& k, std::uint32_t i, PairKey current) {
   // Pushed out of its box: the pairs found when the pass began may no longer
   // hold all of its contacts. Give it a new box and queue the pairs it may
   // now form that the pass has not reached yet (the earlier ones are behind
   // us in the sheet's loop too).
-  const FloatBox box = FloatBox::around(k.position[e], k.box[e], course_margin);
-  boxes_[i] = box;
+  if (!rebox(k, i)) return false;
+  const FloatBox box = boxes_[i];
   grid_.move(i, box);
   grid_.query(box, [&](std::uint32_t j) {
     if (j == i || (fixed_[i] && fixed_[j])) return;
@@ -78,7 +84,6 @@ bool BroadPhase::refresh(const Components& k, std::uint32_t i, PairKey current) 
     found_late_.push_back(key);
     std::push_heap(found_late_.begin(), found_late_.end(), std::greater<>());
   });
-  ++stats_.requeries;
   return true;
 }
 
@@ -135,9 +140,7 @@ bool BroadPhase::row_next(Pair& out) {
 }
 
 bool BroadPhase::row_refresh(const Components& k, std::uint32_t i) {
-  if (inside(k, i)) return false;
-  const EntityId e = course_entities_[i];
-  boxes_[i] = FloatBox::around(k.position[e], k.box[e], course_margin);
+  if (!rebox(k, i)) return false;
   // Old boxes stay in the grid's cells; index afresh before they outnumber the bodies.
   if (++row_moves_ > boxes_.size() + 1024) {
     row_grid_.index(boxes_);
@@ -145,7 +148,6 @@ bool BroadPhase::row_refresh(const Components& k, std::uint32_t i) {
   } else {
     row_grid_.move(i, boxes_[i]);
   }
-  ++stats_.requeries;
   return true;
 }
 

@@ -111,6 +111,8 @@ class BroadPhase {
     const EntityId e = course_entities_[i];
     return boxes_[i].contains(k.position[e], k.box[e]);
   }
+  // A new box for body i if it left its own (counted in stats_.requeries); whether it did.
+  bool rebox(const Components& k, std::uint32_t i);
   bool refresh(const Components& k, std::uint32_t i, PairKey current);
   // Row by row: the pairs (i, j > after) whose boxes overlap now.
   void start_rows();
