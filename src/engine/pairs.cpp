@@ -207,7 +207,7 @@ void BroadPhase::find(const Components& k, std::span<const EntityId> entities, d
   });
   if (left) fat_rebuild(k, entities, h, w);
   // The candidates that touch, each range's in order, then joined in range order.
-  const auto candidates = grid_.pairs();
+  const std::vector<PairKey>& candidates = grid_.pairs();
   out.clear();
   out.reserve(candidates.size());
   range_pairs_.resize(static_cast<std::size_t>(w.threads()));
