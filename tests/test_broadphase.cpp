@@ -189,6 +189,33 @@ BOOST_AUTO_TEST_CASE(the_grid_finds_exactly_the_overlapping_pairs_in_loop_order)
   }
 }
 
+// The large boxes' own pairs come from a sweep over them sorted by min_x as
+// integer keys: negative, zero (both signs) and positive corners, ties
+// included, must give the same pairs as testing every pair.
+BOOST_AUTO_TEST_CASE(large_boxes_on_both_sides_of_zero_find_the_same_pairs_as_all_pairs) {
+  Random rng(11);
+  std::vector<FloatBox> boxes;
+  std::vector<std::uint8_t> fixed;
+  for (int i = 0; i < 2000; ++i) {  // tiny ones: the mean size that makes the others large
+    const auto x = static_cast<float>(rng.uniform(-600, 600)), y = static_cast<float>(rng.uniform(-600, 600));
+    boxes.push_back({x, y, x + 0.5f, y + 0.5f});
+    fixed.push_back(0);
+  }
+  const float corners[] = {-0.0f, 0.0f, -1e-30f, 1e-30f, -250.0f, 250.0f};
+  for (int i = 0; i < 300; ++i) {
+    const float x = i < 60 ? corners[i % 6] : static_cast<float>(rng.uniform(-500, 500));
+    const auto y = static_cast<float>(rng.uniform(-500, 500));
+    boxes.push_back({x, y, x + static_cast<float>(rng.uniform(60, 120)), y + static_cast<float>(rng.uniform(60, 120))});
+    fixed.push_back(rng.uniform(0, 1) < 0.2);
+  }
+  UniformGrid grid;
+  grid.build(boxes, fixed);
+  const auto expected = brute_pairs(boxes, fixed);
+  BOOST_TEST(grid.large_count() >= 300u);
+  BOOST_TEST(expected.size() > 1000u);
+  BOOST_TEST((grid.pairs() == expected), grid.pairs().size() << " pairs, brute force " << expected.size());
+}
+
 BOOST_AUTO_TEST_CASE(a_query_after_moves_reports_every_overlapping_box) {
   Random rng(7);
   std::vector<FloatBox> boxes;
