@@ -36,6 +36,13 @@ float float_down(double x) {
 // The smallest float >= x.
 float float_up(double x) { return -float_down(-x); }
 
+// x's bits as an unsigned integer in x's order (-0 as +0; not for a NaN):
+// sorting these sorts the floats.
+std::uint32_t ordered_bits(float x) {
+  const auto bits = std::bit_cast<std::uint32_t>(x + 0.0f);
+  return bits >> 31 ? ~bits : bits | 0x80000000u;
+}
+
 // Boxes whose larger side exceeds this many times the mean one are kept out
 // of the grid (walls): otherwise one 1000-block-long wall would make every
 // cell 1000 blocks wide.
@@ -247,9 +254,7 @@ void UniformGrid::pairs_of_large() {
   // integers, shared with the pairs', instead of one more of its own).
   large_order_.resize(large_.size());
   for (std::size_t l = 0; l < large_.size(); ++l) {
-    const auto bits = std::bit_cast<std::uint32_t>(large_box_[l].min_x + 0.0f);  // (-0 as +0)
-    const std::uint32_t ordered = bits >> 31 ? ~bits : bits | 0x80000000u;
-    large_order_[l] = std::uint64_t{ordered} << 32 | l;
+    large_order_[l] = std::uint64_t{ordered_bits(large_box_[l].min_x)} << 32 | l;
   }
   std::sort(large_order_.begin(), large_order_.end());
   const auto at = [&](std::size_t a) { return static_cast<std::uint32_t>(large_order_[a]); };  // (l)
