@@ -57,6 +57,13 @@ struct Support {
 // body of depth d is at d + 1; bodies resting on nothing fixed get `none`.
 constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
 
+// Whether the boxes of pair p overlap by more than the slop (what the position stage corrects).
+bool overlaps(const Components& k, const Pair& p, double slop) { return best_axis(k, p.c, p.b).second < -slop; }
+
+// By axis (-x, +x, -y, +y): the normal's sign, the tangent's (tangent(n) = (-n.y, n.x)).
+constexpr double normal_sign[4] = {-1.0, 1.0, -1.0, 1.0};
+constexpr double tangent_sign[4] = {-1.0, 1.0, 1.0, -1.0};
+
 // Breadth-first from the fixed bodies along the weight-bearing contacts
 // (lower -> upper) finds the bodies that rest on something fixed; then each
 // gets the length of its longest support chain (Kahn's order: a body once all
@@ -215,6 +222,7 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
   }
   laps.time(Stage::store, [&] { store(); });
   if (!earlier_.empty()) keep_round();
+  velocity_finds_ = broadphase.finds();
 }
 
 // Contacts are the pairs whose boxes are closer than the margin along their
@@ -582,7 +590,20 @@ void ContactSolver::schedule(const Components& k, Vector g) {
     for (std::size_t i = start; i < end; ++i) order_[start + level_count_[level_[i]]++] = static_cast<std::uint32_t>(i);
     for (std::size_t i = start; i < end; ++i) last_level_[slot_of_[contacts_[i].c]] = last_level_[slot_of_[contacts_[i].b]] = 0;
   }
+  // The same order with the x rows first (iterate<false>).
+  by_axis_.clear();
+  for (const std::uint32_t i : order_)
+    if (contacts_[i].axis < 2) by_axis_.push_back(i);
+  x_rows_ = by_axis_.size();
+  for (const std::uint32_t i : order_)
+    if (contacts_[i].axis >= 2) by_axis_.push_back(i);
 }
+
+// The rows' order: without friction, a row reads and changes one velocity
+// component of each body (its normal's axis), so the x rows and the y rows
+// touch disjoint values and each group may run on its own (iterate<false>),
+// each in order_: the same bits.
+std::span<const std::uint32_t> ContactSolver::row_order() const { return friction_.empty() ? by_axis_ : order_; }
 
 // The hot copies for a relaxation: the bodies' velocities and inverse
 // masses by slot, the contacts in order_ with the relaxation's targets and
@@ -597,19 +618,20 @@ void ContactSolver::load_rows(const Components& k) {
       solver_bodies_[i] = {k.velocity[e], inverse_mass_[e]};
     }
   });
-  rows_.resize(order_.size());
-  targets_.resize(order_.size());
+  const std::span<const std::uint32_t> order = row_order();
+  rows_.resize(order.size());
+  targets_.resize(order.size());
   friction_rows_.resize(friction_.size());
-  w.for_ranges(order_.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+  w.for_ranges(order.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
-      const ContactConstraint& ct = contacts_[order_[i]];
+      const ContactConstraint& ct = contacts_[order[i]];
       const double target = after_bounce && !ct.resting ? 0.0 : ct.target;
       rows_[i] = {slot_of_[ct.c], slot_of_[ct.b], static_cast<std::uint32_t>(ct.axis), ct.inv_w, target,
                   after_bounce ? 0.0 : ct.lambda};
-      targets_[order_[i]] = target;  // by contact, for the bottom-up pass
+      targets_[order[i]] = target;  // by contact, for the bottom-up pass
     }
     for (std::size_t i = begin; i < std::min(end, friction_.size()); ++i) {
-      const FrictionRow& f = friction_[order_[i]];
+      const FrictionRow& f = friction_[order[i]];
       friction_rows_[i] = {f.mu, after_bounce ? 0.0 : f.lambda};
     }
   });
@@ -619,13 +641,14 @@ void ContactSolver::load_rows(const Components& k) {
 template <bool after_bounce>
 void ContactSolver::store_rows(Components& k) {
   Workers& w = workers_or_one(workers_);
-  w.for_ranges(order_.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+  const std::span<const std::uint32_t> order = row_order();
+  w.for_ranges(order.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
-      ContactConstraint& ct = contacts_[order_[i]];
+      ContactConstraint& ct = contacts_[order[i]];
       (after_bounce ? ct.lambda2 : ct.lambda) = rows_[i].lambda;
     }
     for (std::size_t i = begin; i < std::min(end, friction_rows_.size()); ++i) {
-      FrictionRow& f = friction_[order_[i]];
+      FrictionRow& f = friction_[order[i]];
       (after_bounce ? f.lambda2 : f.lambda) = friction_rows_[i].lambda;
     }
   });
@@ -656,27 +679,32 @@ void ContactSolver::store_rows(Components& k) {
 // products and vector updates with the zero component written out, which
 // added (±0) to the other component: only a zero's sign may differ. Less
 // arithmetic a row (a settled pile: 52 -> 46 instructions a row, callgrind).
+//
+// Without friction the x rows and the y rows share no value (row_order()):
+// each sweep runs the x rows, then the y rows, each group with its component
+// known (sweep_axis), which saves the per-row choice of component.
 template <bool friction>
 void ContactSolver::iterate(const SolverSettings& s) {
-  // By axis (-x, +x, -y, +y): the normal's sign, the tangent's (tangent(n) = (-n.y, n.x)).
-  static constexpr double normal_sign[4] = {-1.0, 1.0, -1.0, 1.0};
-  static constexpr double tangent_sign[4] = {-1.0, 1.0, 1.0, -1.0};
-  for (int it = 0; it < s.iterations; ++it) {
-    bool changed = false;
-    for (std::size_t i = 0; i < rows_.size(); ++i) {
-      SolverRow& r = rows_[i];
-      SolverBody& bc = solver_bodies_[r.c];
-      SolverBody& bb = solver_bodies_[r.b];
-      const bool y = r.axis >= 2;
-      double& vc = y ? bc.v.y : bc.v.x;
-      double& vb = y ? bb.v.y : bb.v.x;
-      const double sn = normal_sign[r.axis];
-      const double vn = sn * (vc - vb);
-      const double lambda = std::max(r.lambda - (vn - r.target) * r.inv_w, 0.0);
-      apply_axis_impulse(vc, vb, sn, lambda - r.lambda, bc.w, bb.w);
-      changed |= std::bit_cast<std::uint64_t>(lambda) != std::bit_cast<std::uint64_t>(r.lambda);
-      r.lambda = lambda;
-      if constexpr (friction) {
+  if constexpr (!friction) {
+    const std::span<SolverRow> rows(rows_);
+    for (int it = 0; it < s.iterations; ++it)
+      if (!(sweep_axis<&Vector::x>(rows.first(x_rows_)) | sweep_axis<&Vector::y>(rows.subspan(x_rows_)))) return;
+  } else {
+    for (int it = 0; it < s.iterations; ++it) {
+      bool changed = false;
+      for (std::size_t i = 0; i < rows_.size(); ++i) {
+        SolverRow& r = rows_[i];
+        SolverBody& bc = solver_bodies_[r.c];
+        SolverBody& bb = solver_bodies_[r.b];
+        const bool y = r.axis >= 2;
+        double& vc = y ? bc.v.y : bc.v.x;
+        double& vb = y ? bb.v.y : bb.v.x;
+        const double sn = normal_sign[r.axis];
+        const double vn = sn * (vc - vb);
+        const double lambda = std::max(r.lambda - (vn - r.target) * r.inv_w, 0.0);
+        apply_axis_impulse(vc, vb, sn, lambda - r.lambda, bc.w, bb.w);
+        changed |= std::bit_cast<std::uint64_t>(lambda) != std::bit_cast<std::uint64_t>(r.lambda);
+        r.lambda = lambda;
         FrictionHot& f = friction_rows_[i];
         if (f.mu == 0.0) continue;
         double& tc = y ? bc.v.x : bc.v.y;
@@ -689,9 +717,27 @@ void ContactSolver::iterate(const SolverSettings& s) {
         changed |= std::bit_cast<std::uint64_t>(lt) != std::bit_cast<std::uint64_t>(f.lambda);
         f.lambda = lt;
       }
+      if (!changed) return;
     }
-    if (!changed) return;
   }
+}
+
+// One sweep of iterate<false> over rows whose normals lie along component v
+// of the velocity; whether any accumulated impulse changed.
+template <double Vector::*v>
+bool ContactSolver::sweep_axis(std::span<SolverRow> rows) {
+  bool changed = false;
+  for (SolverRow& r : rows) {
+    SolverBody& bc = solver_bodies_[r.c];
+    SolverBody& bb = solver_bodies_[r.b];
+    const double sn = normal_sign[r.axis];
+    const double vn = sn * (bc.v.*v - bb.v.*v);
+    const double lambda = std::max(r.lambda - (vn - r.target) * r.inv_w, 0.0);
+    apply_axis_impulse(bc.v.*v, bb.v.*v, sn, lambda - r.lambda, bc.w, bb.w);
+    changed |= std::bit_cast<std::uint64_t>(lambda) != std::bit_cast<std::uint64_t>(r.lambda);
+    r.lambda = lambda;
+  }
+  return changed;
 }
 
 // One friction row per contact if any contact has friction, none otherwise.
@@ -932,7 +978,18 @@ void ContactSolver::solve_positions(Components& k, std::span<const EntityId> ent
   // the support graph of the bottom-up pass down to the ground.
   StageTimes::Laps laps(times);
   workers_ = s.workers;
-  laps.time(Stage::pairs, [&] { broadphase.find(k, entities, 0.0, s.margin, pairs_, PairRule::solvable, s.workers); });
+  // Nothing to project if no pair overlaps beyond the slop. When no body
+  // has left the box the velocity stage's last find() swept for it, the
+  // pairs that overlap now are among that stage's (pairs_ holds them all):
+  // looked for there, without finding the pairs again.
+  bool none = false;
+  laps.time(Stage::pairs, [&] {
+    none = broadphase.finds() == velocity_finds_ && broadphase.holds(k, entities) &&
+           std::none_of(pairs_.begin(), pairs_.end(), [&](const Pair& p) { return overlaps(k, p, s.slop); });
+    if (!none) broadphase.find(k, entities, 0.0, s.margin, pairs_, PairRule::solvable, s.workers);
+  });
+  positions_.clear();
+  if (none) return;
   laps.time(Stage::positions, [&] {
     if (prepare_positions(k, s)) project(k, g, s);
   });
@@ -943,8 +1000,7 @@ void ContactSolver::solve_positions(Components& k, std::span<const EntityId> ent
 // look stops there, without listing the contacts.
 bool ContactSolver::prepare_positions(const Components& k, const SolverSettings& s) {
   positions_.clear();
-  const auto overlaps = [&](const Pair& p) { return best_axis(k, p.c, p.b).second < -s.slop; };
-  if (std::none_of(pairs_.begin(), pairs_.end(), overlaps)) return false;
+  if (std::none_of(pairs_.begin(), pairs_.end(), [&](const Pair& p) { return overlaps(k, p, s.slop); })) return false;
   contact_axes(k, s);
   for (std::size_t i = 0; i < pairs_.size(); ++i)
     if (!(axes_[i].separation > s.margin))

@@ -191,6 +191,7 @@ void BroadPhase::find(const Components& k, std::span<const EntityId> entities, d
                       std::vector<Pair>& out, PairRule rule, Workers* workers) {
   Workers& w = workers_or_one(workers);
   const std::size_t n = entities.size();
+  ++finds_;
   current_.resize(n);
   const bool same = fat_built_ && n == entities_.size() && std::equal(entities.begin(), entities.end(), entities_.begin());
   const bool left = w.or_over_ranges(n, min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
@@ -224,6 +225,16 @@ void BroadPhase::find(const Components& k, std::span<const EntityId> entities, d
     out.insert(out.end(), part.begin(), part.end());
   }
   if (k.any_rules()) std::erase_if(out, [&](Pair p) { return !keeps(rule, k, p.c, p.b, h); });
+}
+
+bool BroadPhase::holds(const Components& k, std::span<const EntityId> entities) const {
+  if (k.any_rules() || !fat_built_ || !std::equal(entities.begin(), entities.end(), entities_.begin(), entities_.end()))
+    return false;
+  for (std::size_t i = 0; i < entities.size(); ++i) {
+    const Bounds now = swept(k, entities[i], 0.0, 0.0), & s = current_[i];
+    if (!(s.x0 <= now.x0 && s.y0 <= now.y0 && now.x1 <= s.x1 && now.y1 <= s.y1)) return false;
+  }
+  return true;
 }
 
 void BroadPhase::find_selected(const Components& k, std::span<const EntityId> entities,

@@ -55,6 +55,12 @@ class BroadPhase {
   // (the same pairs, in the same order, for any number); none: one thread.
   void find(const Components& k, std::span<const EntityId> entities, double h, double reach, std::vector<Pair>& out,
             PairRule rule = PairRule::solvable, Workers* workers = nullptr);
+  // Whether every body of `entities`, where it is now, lies within the box
+  // the last find() swept for it (for the same bodies, with no contact
+  // rules): then every pair whose boxes overlap now was among its pairs.
+  // `finds()` counts the calls of find(), to tell whose that last one was.
+  bool holds(const Components& k, std::span<const EntityId> entities) const;
+  std::uint64_t finds() const { return finds_; }
   // The pairs of find(h, 0) that include a selected body (`selected`, by
   // entity id; CCD's fast bodies in the auto mode). A few selected bodies
   // are each tested against every body, which costs less than a grid of the
@@ -148,6 +154,7 @@ class BroadPhase {
 
   // find() state.
   std::vector<Bounds> current_;  // this call's exact boxes
+  std::uint64_t finds_ = 0;      // calls of find()
   std::vector<Bounds> scan_;     // find_selected()'s swept boxes
   std::vector<Bounds> fat_;      // the boxes the grid was built on
   std::vector<std::vector<Pair>> range_pairs_;  // find() with threads: each range's pairs, joined in order
