@@ -619,6 +619,7 @@ void ContactSolver::load_rows(const Components& k) {
     }
   });
   const std::span<const std::uint32_t> order = row_order();
+  const bool by_axis = friction_.empty();
   rows_.resize(order.size());
   targets_.resize(order.size());
   friction_rows_.resize(friction_.size());
@@ -626,8 +627,10 @@ void ContactSolver::load_rows(const Components& k) {
     for (std::size_t i = begin; i < end; ++i) {
       const ContactConstraint& ct = contacts_[order[i]];
       const double target = after_bounce && !ct.resting ? 0.0 : ct.target;
-      rows_[i] = {slot_of_[ct.c], slot_of_[ct.b], static_cast<std::uint32_t>(ct.axis), ct.inv_w, target,
-                  after_bounce ? 0.0 : ct.lambda};
+      // By axis (sweep_axis): each row's normal along +x or +y, its bodies swapped if it was -x or -y.
+      const bool swap = by_axis && (ct.axis & 1) == 0;
+      rows_[i] = {slot_of_[swap ? ct.b : ct.c], slot_of_[swap ? ct.c : ct.b], static_cast<std::uint32_t>(ct.axis),
+                  ct.inv_w, target, after_bounce ? 0.0 : ct.lambda};
       targets_[order[i]] = target;  // by contact, for the bottom-up pass
     }
     for (std::size_t i = begin; i < std::min(end, friction_.size()); ++i) {
@@ -723,17 +726,23 @@ void ContactSolver::iterate(const SolverSettings& s) {
 }
 
 // One sweep of iterate<false> over rows whose normals lie along component v
-// of the velocity; whether any accumulated impulse changed.
+// of the velocity; whether any accumulated impulse changed. Each row's
+// normal is +v (load_rows swapped the bodies of a -v row): the products by
+// the normal's sign, -1 or 1, are left out. The same bits: a row of -v
+// computed -(v_c - v_b), which is v_b - v_c but for the sign of a zero,
+// and from a zero relative speed either sign gives the same impulse (the
+// accumulated one is never -0: it starts at +0 or a positive warm start,
+// and max(x, 0) is -0 only for x = -0, which only -0 minus a zero gives).
+// Then v_c + (w_c j)(-1) is v_c - w_c j, bit for bit.
 template <double Vector::*v>
 bool ContactSolver::sweep_axis(std::span<SolverRow> rows) {
   bool changed = false;
   for (SolverRow& r : rows) {
     SolverBody& bc = solver_bodies_[r.c];
     SolverBody& bb = solver_bodies_[r.b];
-    const double sn = normal_sign[r.axis];
-    const double vn = sn * (bc.v.*v - bb.v.*v);
+    const double vn = bc.v.*v - bb.v.*v;
     const double lambda = std::max(r.lambda - (vn - r.target) * r.inv_w, 0.0);
-    apply_axis_impulse(bc.v.*v, bb.v.*v, sn, lambda - r.lambda, bc.w, bb.w);
+    apply_axis_impulse(bc.v.*v, bb.v.*v, 1.0, lambda - r.lambda, bc.w, bb.w);
     changed |= std::bit_cast<std::uint64_t>(lambda) != std::bit_cast<std::uint64_t>(r.lambda);
     r.lambda = lambda;
   }
