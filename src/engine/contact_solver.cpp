@@ -279,7 +279,7 @@ void ContactSolver::prepare(const Components& k, double h, Vector g, const Solve
 }
 
 // What prepare() makes of pair i (its axis in axes_); keeps its normal speed.
-ContactSolver::PairKind ContactSolver::pair_kind(const Components& k, std::size_t i, double h, double threshold,
+inline ContactSolver::PairKind ContactSolver::pair_kind(const Components& k, std::size_t i, double h, double threshold,
                                                  const SolverSettings& s) {
   const Pair& p = pairs_[i];
   const auto [axis, gap, separation, separating, corner] = axes_[i];
@@ -296,7 +296,7 @@ ContactSolver::PairKind ContactSolver::pair_kind(const Components& k, std::size_
 
 // Contact j, of pair i (pair_kind: contact or impact). Returns bit 0: a
 // fixed body of it moves; bit 1: it has friction.
-std::uint8_t ContactSolver::make_contact(const Components& k, std::size_t i, double h, std::size_t j) {
+inline std::uint8_t ContactSolver::make_contact(const Components& k, std::size_t i, double h, std::size_t j) {
   const Pair& p = pairs_[i];
   const auto [axis, gap, separation, separating, corner] = axes_[i];
   const double vn = normal_speeds_[i];

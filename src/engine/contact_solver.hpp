@@ -180,8 +180,11 @@ class ContactSolver {
   // The stages of solve_velocities, in order.
   void prepare(const Components& k, double h, Vector g, const SolverSettings& s);
   enum class PairKind : std::uint8_t { apart, left /* to CCD */, contact, impact };
-  PairKind pair_kind(const Components& k, std::size_t i, double h, double threshold, const SolverSettings& s);
-  std::uint8_t make_contact(const Components& k, std::size_t i, double h, std::size_t j);
+  // Inlined into prepare()'s loops, their only callers: called, they made
+  // the pyramid's step 2.7 % longer (saved registers and reloads).
+  [[gnu::always_inline]] PairKind pair_kind(const Components& k, std::size_t i, double h, double threshold,
+                                            const SolverSettings& s);
+  [[gnu::always_inline]] std::uint8_t make_contact(const Components& k, std::size_t i, double h, std::size_t j);
   struct RangeCount {
     std::size_t apart = 0, contacts = 0, impacts = 0;
   };
