@@ -234,26 +234,9 @@ void ContactSolver::prepare(const Components& k, double h, Vector g, const Solve
   // Slower than the speed gravity gives in two substeps: a resting contact,
   // not an impact, so no bounce (otherwise a block on the floor would hop).
   const double threshold = 2.0 * Vector::norm(g) * h + 1e-12;
-  contact_axes(k, s);
-  physical_axes(k, s);
+  classify(k, h, threshold, s);
   Workers& w = workers_or_one(workers_);
   const std::size_t n = pairs_.size();
-  kinds_.resize(n);
-  normal_speeds_.resize(n);
-  counts_.assign(static_cast<std::size_t>(w.threads()) + 1, {});
-  w.for_ranges(n, min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
-    RangeCount c;
-    for (std::size_t i = begin; i < end; ++i) {
-      const PairKind kind = kinds_[i] = pair_kind(k, i, h, threshold, s);
-      c.apart += kind == PairKind::apart;
-      c.contacts += kind >= PairKind::contact;
-      c.impacts += kind == PairKind::impact;
-    }
-    counts_[static_cast<std::size_t>(t) + 1] = c;
-  });
-  for (std::size_t t = 1; t <= static_cast<std::size_t>(w.threads()); ++t)
-    counts_[t].apart += counts_[t - 1].apart, counts_[t].contacts += counts_[t - 1].contacts,
-        counts_[t].impacts += counts_[t - 1].impacts;
   const RangeCount& all = counts_.back();
   contacts_.resize(all.contacts), pair_of_.resize(all.contacts);
   topology_next_.resize(all.contacts), impacts_.resize(all.impacts), apart_.resize(all.apart);
@@ -276,6 +259,49 @@ void ContactSolver::prepare(const Components& k, double h, Vector g, const Solve
   v_start_.resize(slot_body_.size());
   v_inelastic_.resize(slot_body_.size());
   for (std::size_t i = 0; i < slot_body_.size(); ++i) v_start_[i] = k.velocity[slot_body_[i]];
+}
+
+// Each pair's axis (axes_) and what prepare() makes of it (kinds_), and
+// how many of each kind each range of pairs has (counts_, then summed to
+// where each range's go), in one pass over the pairs. Pairs that touch
+// corner to corner, whose axes depend on their bodies' other pairs
+// (contact_axes()), and a later round's physical axes take a second pass.
+void ContactSolver::classify(const Components& k, double h, double threshold, const SolverSettings& s) {
+  Workers& w = workers_or_one(workers_);
+  const std::size_t n = pairs_.size();
+  axes_.resize(n);
+  kinds_.resize(n);
+  normal_speeds_.resize(n);
+  counts_.assign(static_cast<std::size_t>(w.threads()) + 1, {});
+  const auto range = [&](int t, std::size_t begin, std::size_t end, auto with_axes) {
+    RangeCount c;
+    bool corner = false;
+    for (std::size_t i = begin; i < end; ++i) {
+      if constexpr (with_axes) {
+        axes_[i] = contact_axis(k, pairs_[i].c, pairs_[i].b, s.touch);
+        corner = corner || axes_[i].corner;
+      }
+      const PairKind kind = kinds_[i] = pair_kind(k, i, h, threshold, s);
+      c.apart += kind == PairKind::apart;
+      c.contacts += kind >= PairKind::contact;
+      c.impacts += kind == PairKind::impact;
+    }
+    counts_[static_cast<std::size_t>(t) + 1] = c;
+    return static_cast<std::uint8_t>(corner);
+  };
+  const bool corners = w.or_over_ranges(n, min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
+    return range(t, begin, end, std::true_type{});
+  });
+  if (corners || (s.physical_axes && !shifted_.empty())) {
+    if (corners) corner_axes(k, s);
+    physical_axes(k, s);
+    w.for_ranges(n, min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
+      range(t, begin, end, std::false_type{});
+    });
+  }
+  for (std::size_t t = 1; t <= static_cast<std::size_t>(w.threads()); ++t)
+    counts_[t].apart += counts_[t - 1].apart, counts_[t].contacts += counts_[t - 1].contacts,
+        counts_[t].impacts += counts_[t - 1].impacts;
 }
 
 // What prepare() makes of pair i (its axis in axes_); keeps its normal speed.
@@ -629,13 +655,13 @@ void ContactSolver::load_rows(const Components& k) {
       const double target = after_bounce && !ct.resting ? 0.0 : ct.target;
       // By axis (sweep_axis): each row's normal along +x or +y, its bodies swapped if it was -x or -y.
       const bool swap = by_axis && (ct.axis & 1) == 0;
-      rows_[i] = {slot_of_[swap ? ct.b : ct.c], slot_of_[swap ? ct.c : ct.b], static_cast<std::uint32_t>(ct.axis),
-                  ct.inv_w, target, after_bounce ? 0.0 : ct.lambda};
+      rows_[i] = {slot_of_[swap ? ct.b : ct.c], slot_of_[swap ? ct.c : ct.b], ct.inv_w, target,
+                  after_bounce ? 0.0 : ct.lambda};
       targets_[order[i]] = target;  // by contact, for the bottom-up pass
     }
     for (std::size_t i = begin; i < std::min(end, friction_.size()); ++i) {
       const FrictionRow& f = friction_[order[i]];
-      friction_rows_[i] = {f.mu, after_bounce ? 0.0 : f.lambda};
+      friction_rows_[i] = {f.mu, after_bounce ? 0.0 : f.lambda, static_cast<std::uint32_t>(contacts_[order[i]].axis)};
     }
   });
 }
@@ -697,22 +723,22 @@ void ContactSolver::iterate(const SolverSettings& s) {
       bool changed = false;
       for (std::size_t i = 0; i < rows_.size(); ++i) {
         SolverRow& r = rows_[i];
+        FrictionHot& f = friction_rows_[i];
         SolverBody& bc = solver_bodies_[r.c];
         SolverBody& bb = solver_bodies_[r.b];
-        const bool y = r.axis >= 2;
+        const bool y = f.axis >= 2;
         double& vc = y ? bc.v.y : bc.v.x;
         double& vb = y ? bb.v.y : bb.v.x;
-        const double sn = normal_sign[r.axis];
+        const double sn = normal_sign[f.axis];
         const double vn = sn * (vc - vb);
         const double lambda = std::max(r.lambda - (vn - r.target) * r.inv_w, 0.0);
         apply_axis_impulse(vc, vb, sn, lambda - r.lambda, bc.w, bb.w);
         changed |= std::bit_cast<std::uint64_t>(lambda) != std::bit_cast<std::uint64_t>(r.lambda);
         r.lambda = lambda;
-        FrictionHot& f = friction_rows_[i];
         if (f.mu == 0.0) continue;
         double& tc = y ? bc.v.x : bc.v.y;
         double& tb = y ? bb.v.x : bb.v.y;
-        const double st = tangent_sign[r.axis];
+        const double st = tangent_sign[f.axis];
         const double vt = st * (tc - tb);
         const double limit = f.mu * lambda;
         const double lt = std::clamp(f.lambda - vt * r.inv_w, -limit, limit);
@@ -1059,7 +1085,12 @@ void ContactSolver::contact_axes(const Components& k, const SolverSettings& s) {
     }
     return static_cast<std::uint8_t>(any);
   });
-  if (!corners) return;
+  if (corners) corner_axes(k, s);
+}
+
+// The axes of the pairs that touch corner to corner, once every pair has its
+// plain axis (contact_axis without faces) in axes_.
+void ContactSolver::corner_axes(const Components& k, const SolverSettings& s) {
   constexpr std::uint8_t wanted = 4;
   faces_.assign(k.size(), 0);
   for (std::size_t i = 0; i < pairs_.size(); ++i)

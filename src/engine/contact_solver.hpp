@@ -179,6 +179,7 @@ class ContactSolver {
  private:
   // The stages of solve_velocities, in order.
   void prepare(const Components& k, double h, Vector g, const SolverSettings& s);
+  void classify(const Components& k, double h, double threshold, const SolverSettings& s);
   enum class PairKind : std::uint8_t { apart, left /* to CCD */, contact, impact };
   // Inlined into prepare()'s loops, their only callers: called, they made
   // the pyramid's step 2.7 % longer (saved registers and reloads).
@@ -232,6 +233,7 @@ class ContactSolver {
   std::vector<FrictionRow> earlier_friction_;
   std::vector<double> earlier_jn_, earlier_jt_;
   void contact_axes(const Components& k, const SolverSettings& s);
+  void corner_axes(const Components& k, const SolverSettings& s);
   void physical_axes(const Components& k, const SolverSettings& s);
   std::vector<double> line_start_;   // by entity id: ms from which its line is its motion (impact_time()), or 0
   std::vector<EntityId> shifted_;    // the bodies whose line_start_ is set this substep
@@ -260,13 +262,16 @@ class ContactSolver {
     Vector v;  // velocity
     double w;  // inverse mass
   };
+  // (Without friction, by axis: c and b swapped where the normal is -x or
+  // -y, load_rows(). With friction, the axis is the friction row's: a row
+  // without it is 32 bytes, not 40.)
   struct SolverRow {
-    std::uint32_t c, b;  // slots
-    std::uint32_t axis;
+    std::uint32_t c, b;            // slots
     double inv_w, target, lambda;  // as ContactConstraint's (lambda: the relaxation's accumulator)
   };
   struct FrictionHot {
     double mu, lambda;
+    std::uint32_t axis;  // the contact's (the normal's, as ContactConstraint::axis)
   };
   template <double Vector::*v>
   bool sweep_axis(std::span<SolverRow> rows);
