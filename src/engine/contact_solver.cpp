@@ -1,5 +1,9 @@
 #include "engine/contact_solver.hpp"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -623,6 +627,15 @@ void ContactSolver::schedule(const Components& k, Vector g) {
   x_rows_ = by_axis_.size();
   for (const std::uint32_t i : order_)
     if (contacts_[i].axis >= 2) by_axis_.push_back(i);
+  // Rows i and i + 1 of by_axis_ share no linking body when they come from
+  // the same chunk and level: sweep_axis may solve them side by side. The
+  // last row of each axis has no next one in its sweep.
+  paired_.resize(by_axis_.size());
+  for (std::size_t i = 0; i + 1 < by_axis_.size(); ++i) {
+    const std::uint32_t a = by_axis_[i], b = by_axis_[i + 1];
+    paired_[i] = i + 1 != x_rows_ && a / chunk == b / chunk && level_[a] == level_[b];
+  }
+  if (!paired_.empty()) paired_.back() = 0;
 }
 
 // The rows' order: without friction, a row reads and changes one velocity
@@ -717,7 +730,9 @@ void ContactSolver::iterate(const SolverSettings& s) {
   if constexpr (!friction) {
     const std::span<SolverRow> rows(rows_);
     for (int it = 0; it < s.iterations; ++it)
-      if (!(sweep_axis<&Vector::x>(rows.first(x_rows_)) | sweep_axis<&Vector::y>(rows.subspan(x_rows_)))) return;
+      if (!(sweep_axis<&Vector::x>(rows.first(x_rows_), std::span(paired_).first(x_rows_)) |
+            sweep_axis<&Vector::y>(rows.subspan(x_rows_), std::span(paired_).subspan(x_rows_))))
+        return;
   } else {
     for (int it = 0; it < s.iterations; ++it) {
       bool changed = false;
@@ -761,9 +776,17 @@ void ContactSolver::iterate(const SolverSettings& s) {
 // and max(x, 0) is -0 only for x = -0, which only -0 minus a zero gives).
 // Then v_c + (w_c j)(-1) is v_c - w_c j, bit for bit.
 template <double Vector::*v>
-bool ContactSolver::sweep_axis(std::span<SolverRow> rows) {
+bool ContactSolver::sweep_axis(std::span<SolverRow> rows, std::span<const std::uint8_t> paired) {
   bool changed = false;
-  for (SolverRow& r : rows) {
+  for (std::size_t i = 0; i < rows.size();) {
+#if defined(__SSE2__)
+    if (paired[i]) {  // (never the last row of the span: schedule())
+      changed |= sweep_two<v>(rows[i], rows[i + 1]);
+      i += 2;
+      continue;
+    }
+#endif
+    SolverRow& r = rows[i++];
     SolverBody& bc = solver_bodies_[r.c];
     SolverBody& bb = solver_bodies_[r.b];
     const double vn = bc.v.*v - bb.v.*v;
@@ -774,6 +797,34 @@ bool ContactSolver::sweep_axis(std::span<SolverRow> rows) {
   }
   return changed;
 }
+
+#if defined(__SSE2__)
+// Two rows that share no linking body (a fixed one they share keeps its
+// velocity: schedule()), one in each lane of SSE2's doubles, with the same
+// operations in the same order as one row, so the same bits: each lane
+// rounds as the scalar instruction does, and max(0, x) is (0 > x ? 0 : x),
+// std::max(x, 0.0)'s choice for a NaN and for -0 too.
+template <double Vector::*v>
+bool ContactSolver::sweep_two(SolverRow& r0, SolverRow& r1) {
+  SolverBody& c0 = solver_bodies_[r0.c];
+  SolverBody& b0 = solver_bodies_[r0.b];
+  SolverBody& c1 = solver_bodies_[r1.c];
+  SolverBody& b1 = solver_bodies_[r1.b];
+  const __m128d vc = _mm_setr_pd(c0.v.*v, c1.v.*v), vb = _mm_setr_pd(b0.v.*v, b1.v.*v);
+  const __m128d old = _mm_setr_pd(r0.lambda, r1.lambda);
+  const __m128d vn = _mm_sub_pd(vc, vb);
+  const __m128d push = _mm_mul_pd(_mm_sub_pd(vn, _mm_setr_pd(r0.target, r1.target)), _mm_setr_pd(r0.inv_w, r1.inv_w));
+  const __m128d lambda = _mm_max_pd(_mm_setzero_pd(), _mm_sub_pd(old, push));
+  const __m128d j = _mm_sub_pd(lambda, old);
+  const __m128d vc2 = _mm_add_pd(vc, _mm_mul_pd(_mm_setr_pd(c0.w, c1.w), j));
+  const __m128d vb2 = _mm_sub_pd(vb, _mm_mul_pd(_mm_setr_pd(b0.w, b1.w), j));
+  _mm_storel_pd(&(c0.v.*v), vc2), _mm_storeh_pd(&(c1.v.*v), vc2);
+  _mm_storel_pd(&(b0.v.*v), vb2), _mm_storeh_pd(&(b1.v.*v), vb2);
+  _mm_storel_pd(&r0.lambda, lambda), _mm_storeh_pd(&r1.lambda, lambda);
+  // Bits, not values, as the scalar row compares them (a 32-bit compare: SSE2 has no 64-bit one).
+  return _mm_movemask_epi8(_mm_cmpeq_epi32(_mm_castpd_si128(lambda), _mm_castpd_si128(old))) != 0xFFFF;
+}
+#endif
 
 // One friction row per contact if any contact has friction, none otherwise.
 void ContactSolver::prepare_friction(const Components& k, bool any) {

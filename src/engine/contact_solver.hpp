@@ -274,7 +274,9 @@ class ContactSolver {
     std::uint32_t axis;  // the contact's (the normal's, as ContactConstraint::axis)
   };
   template <double Vector::*v>
-  bool sweep_axis(std::span<SolverRow> rows);
+  bool sweep_axis(std::span<SolverRow> rows, std::span<const std::uint8_t> paired);
+  template <double Vector::*v>
+  bool sweep_two(SolverRow& r0, SolverRow& r1);
   std::span<const std::uint32_t> row_order() const;
   std::uint64_t velocity_finds_ = ~std::uint64_t{0};  // the broad phase's finds() after solve_velocities
   std::vector<std::uint32_t> slot_of_;     // by entity id: slot, or none when not in a contact
@@ -283,6 +285,7 @@ class ContactSolver {
   std::vector<std::uint32_t> order_;       // contacts in the iterations' order
   std::vector<std::uint32_t> by_axis_;     // order_'s x rows, then its y rows (row_order())
   std::size_t x_rows_ = 0;                 // how many of by_axis_ are x rows
+  std::vector<std::uint8_t> paired_;       // by row of by_axis_: it and the next may be solved together
   std::vector<SolverRow> rows_;            // contacts_[row_order()[i]], hot fields
   std::vector<FrictionHot> friction_rows_; // friction_[order_[i]], hot fields
   std::vector<std::uint32_t> last_level_, level_, level_count_;  // schedule()'s scratch
