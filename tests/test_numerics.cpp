@@ -1,6 +1,10 @@
 // The numerics options: swept collision (CCD), the stable contact solver, and
 // the course mode left as it was. The stiff/extreme matrix is test_stability.cpp.
 #include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <functional>
+#include <vector>
 
 #include "course/game.hpp"
 #include "helpers.hpp"
@@ -169,6 +173,71 @@ BOOST_AUTO_TEST_CASE(a_bounce_keeps_e_squared_of_the_height) {
   BOOST_TEST_REQUIRE(bounced);
   const double height = 540.0 - apex;
   BOOST_TEST(std::abs(height - 0.25 * 400.0) < 5.0);  // h·e², to within the time step
+}
+
+// Without friction anywhere, the iterations run the x rows and the y rows
+// apart, with their normals turned to +x and +y, two rows side by side where
+// they share no body (ContactSolver::sweep_axis, sweep_two); with friction on
+// any pair, every row takes the loop that reads friction. For rows of mu = 0
+// both must give the same bits. `build` makes the scene's bodies (the ones
+// compared); a far stack of two blocks follows, with friction between them
+// or not.
+std::vector<std::uint64_t> solve_bits(bool far_friction, const std::function<std::vector<EntityId>(World&)>& build) {
+  Params p;
+  p.solver = Solver::stable;
+  p.gravity = {0, 0.001};
+  World w = test::physics_world(p);
+  const std::vector<EntityId> ids = build(w);
+  const auto low = Block::make(w, 700, 540, 20, 20, test::grey, 1.0).id;
+  const auto high = Block::make(w, 705, 520, 20, 20, test::grey, 1.0).id;
+  if (far_friction) w.components.friction[low] = w.components.friction[high] = 0.5;
+  std::vector<std::uint64_t> out;
+  const auto add = [&] {
+    for (const EntityId e : ids)
+      for (const double x : {w.components.position[e].x, w.components.position[e].y, w.components.velocity[e].x,
+                             w.components.velocity[e].y})
+        out.push_back(std::bit_cast<std::uint64_t>(x));
+  };
+  add();
+  for (int f = 0; f < 150; ++f) Game::step(w);
+  add();
+  return out;
+}
+
+void check_same_bits(const std::function<std::vector<EntityId>(World&)>& build) {
+  const auto plain = solve_bits(false, build);
+  BOOST_TEST(plain == solve_bits(true, build));
+  // Something happened.
+  const auto half = static_cast<std::ptrdiff_t>(plain.size() / 2);
+  BOOST_TEST(!std::equal(plain.begin(), plain.begin() + half, plain.begin() + half));
+}
+
+BOOST_AUTO_TEST_CASE(rows_without_friction_give_the_friction_loops_bits) {
+  // A pyramid with rain falling on it.
+  check_same_bits([](World& w) {
+    Game::init_walls(w);
+    std::vector<EntityId> ids;
+    for (int r = 0; r < 10; ++r)
+      for (int i = 0; i < 10 - r; ++i)
+        ids.push_back(Block::make(w, 60 + 10 * r + 20 * i, 540 - 20 * r, 20, 20, test::grey, 1.0).id);
+    for (int i = 0; i < 12; ++i) {
+      ids.push_back(Block::make(w, 40 + 22 * i, 200 - 15 * (i % 3), 12, 12, test::grey, 0.5 + 0.25 * (i % 4), 0.5).id);
+      w.components.velocity[ids.back()] = {0.02 * ((i % 5) - 2), 0.1};
+    }
+    return ids;
+  });
+  // The last x row and the first y row of the same level (the x contact is
+  // the first of both its blocks, the walls come after them): not side by
+  // side, each is solved along its own axis.
+  check_same_bits([](World& w) {
+    const auto a = Block::make(w, 100, 540, 20, 20, test::grey, 1.0).id;
+    const auto b = Block::make(w, 120, 540, 20, 20, test::grey, 1.0).id;
+    const auto c = Block::make(w, 300, 540, 20, 20, test::grey, 1.0).id;
+    Game::init_walls(w);
+    w.components.velocity[a] = {0.05, 0};
+    w.components.velocity[c] = {0.03, 0};  // sliding: its row along x would change its impulse
+    return std::vector<EntityId>{a, b, c};
+  });
 }
 
 BOOST_AUTO_TEST_SUITE_END()
