@@ -729,10 +729,12 @@ template <bool friction>
 void ContactSolver::iterate(const SolverSettings& s) {
   if constexpr (!friction) {
     const std::span<SolverRow> rows(rows_);
-    for (int it = 0; it < s.iterations; ++it)
-      if (!(sweep_axis<&Vector::x>(rows.first(x_rows_), std::span(paired_).first(x_rows_)) |
-            sweep_axis<&Vector::y>(rows.subspan(x_rows_), std::span(paired_).subspan(x_rows_))))
-        return;
+    const std::span<const std::uint8_t> paired(paired_);
+    for (int it = 0; it < s.iterations; ++it) {
+      const bool x = sweep_axis<&Vector::x>(rows.first(x_rows_), paired.first(x_rows_));
+      const bool y = sweep_axis<&Vector::y>(rows.subspan(x_rows_), paired.subspan(x_rows_));
+      if (!x && !y) return;
+    }
   } else {
     for (int it = 0; it < s.iterations; ++it) {
       bool changed = false;
@@ -776,7 +778,7 @@ void ContactSolver::iterate(const SolverSettings& s) {
 // and max(x, 0) is -0 only for x = -0, which only -0 minus a zero gives).
 // Then v_c + (w_c j)(-1) is v_c - w_c j, bit for bit.
 template <double Vector::*v>
-bool ContactSolver::sweep_axis(std::span<SolverRow> rows, std::span<const std::uint8_t> paired) {
+bool ContactSolver::sweep_axis(std::span<SolverRow> rows, [[maybe_unused]] std::span<const std::uint8_t> paired) {
   bool changed = false;
   for (std::size_t i = 0; i < rows.size();) {
 #if defined(__SSE2__)
