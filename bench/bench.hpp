@@ -105,7 +105,7 @@ class Engine {
 // `threads`: WorldDef::threads (ours-2t: 2).
 std::unique_ptr<Engine> make_ours(const Scene& s, bool course = false, int threads = 1);
 std::unique_ptr<Engine> make_box2d(const Scene& s);     // Debian's 2.4.1 (build/bench)
-std::unique_ptr<Engine> make_box2d3(const Scene& s);    // v3.2 from source (build/bench-peers only)
+std::unique_ptr<Engine> make_box2d3(const Scene& s, int workers = 1);  // v3.2 from source (build/bench-peers only)
 // Chipmunk 7.0.3: Debian's build in build/bench, the release build in
 // build/bench-peers (the same adapter compiled against each).
 std::unique_ptr<Engine> make_chipmunk(const Scene& s);

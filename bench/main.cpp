@@ -47,8 +47,9 @@ struct Options {
   // Gas sizes run by ours alone: the peers' 100 000-body runs already take
   // most of the budget, ten times as many bodies would only be cut short.
   std::vector<std::size_t> ours_only_gas{1000000};
-  // Ours on two threads too (ours-2t, right after ours) on the stable
-  // solver's scenes of at least this many bodies (0: never).
+  // Ours and Box2D v3.2 on two threads too (ours-2t right after ours,
+  // box2d3-2t after box2d3) on the stable solver's scenes of at least this
+  // many bodies (0: never).
   std::size_t two_threads_from = 100000;
   std::vector<std::string> engines{"ours", "box2d", "chipmunk"};
   bool engines_given = false;  // without --engines, --peers puts the peers' engines second and third
@@ -316,12 +317,12 @@ const char* usage =
     "             [--map-sides 200,1000,2000 (the tiles scene's maps, cells a side)]\n"
     "             [--ours-only-gas 1000000 (gas sizes for ours alone; 0: none)] [--engines ours,box2d,chipmunk]\n"
     "             [--two-threads-from 100000 (ours-2t, ours on 2 threads, after ours on the stable solver's\n"
-    "             scenes of this many bodies and more; 0: never)]\n"
+    "             scenes of this many bodies and more, and box2d3-2t after box2d3; 0: never)]\n"
     "             [--peers build/bench-peers (adds box2d3,chipmunk-release)] [--peer-sources TEXT]\n"
     "             [--steps 600] [--warmup 60] [--out bench/RESULTS.md]\n"
     "             [--compare 0|1] [--budget 30 (s per run)] [--phase-budget 150 (s)] [--isolate 0|1]\n"
     "             (engines also: ours-course, our course solver on every scene; ours-2t, ours on two\n"
-    "             threads; scenes also, each run\n"
+    "             threads; box2d3-2t, Box2D v3.2 on two (--peers); scenes also, each run\n"
     "             after the rain at its sizes from 10 000 up: rain_phase, the rain over the same share of\n"
     "             its fall at every size, by ours alone; rain_falling, its first second at every size's\n"
     "             pace; rain_settled, its squares at rest where it lands, loaded by every engine)\n";
@@ -426,6 +427,8 @@ std::string engine_note(const std::string& e, const Options& o) {
            " (CMake Release, its defaults otherwise: SSE2, no AVX2; BOX2D_VALIDATE off), one worker thread, its "
            "default 4 substeps, `motionLocks.angularZ`, restitution threshold 0 for e = 1 (its default 1 m/s "
            "otherwise), bench/peers/engine_box2d3.cpp";
+  if (e == "box2d3-2t")
+    return "`box2d3-2t`: `box2d3` with `workerCount` 2 (v3's own scheduler and threads)";
   if (e == "chipmunk-release")
     return "`chipmunk-release`: Chipmunk 7.0.3 built from source" + source_of(o, "Chipmunk") +
            " with gcc -O2 -DNDEBUG, without cpHastySpace.c (the threaded space), through the same adapter as "
@@ -536,9 +539,9 @@ std::string label_of(const std::string& engine, const Result& r, const Scene& s,
   return label;
 }
 
-// One scene at one size, every engine (ours alone if `alone`); ours on two
-// threads too (ours-2t) on the stable solver's scenes from two_threads_from
-// bodies up.
+// One scene at one size, every engine (ours alone if `alone`); ours and
+// Box2D v3.2 on two threads too (ours-2t, box2d3-2t) on the stable solver's
+// scenes from two_threads_from bodies up.
 void run_scene(const std::string& self, const Scene& s, bool alone, const Options& o, Report& report) {
   double ours_ms = 0;
   for (const std::string& engine : o.engines) {
@@ -547,9 +550,12 @@ void run_scene(const std::string& self, const Scene& s, bool alone, const Option
     if (engine == "ours") ours_ms = r.median_ms;
     report.add(r, ours_ms, label_of(engine, r, s, alone, o));
     const bool two = o.two_threads_from > 0 && s.resting && s.dynamic_count() >= o.two_threads_from;
-    if (engine != "ours" || !two || std::find(o.engines.begin(), o.engines.end(), "ours-2t") != o.engines.end()) continue;
-    const Result r2 = o.isolate ? run_isolated(self, "ours-2t", s, o) : run("ours-2t", s, o);
-    report.add(r2, ours_ms, label_of("ours-2t", r2, s, alone, o));
+    const std::string twin = engine + "-2t";  // ours-2t after ours, box2d3-2t after box2d3
+    if ((engine != "ours" && engine != "box2d3") || !two ||
+        std::find(o.engines.begin(), o.engines.end(), twin) != o.engines.end())
+      continue;
+    const Result r2 = o.isolate ? run_isolated(self, twin, s, o) : run(twin, s, o);
+    report.add(r2, ours_ms, label_of(twin, r2, s, alone, o));
   }
 }
 
@@ -586,7 +592,7 @@ void write_markdown(const Options& o, const std::string& command, const std::str
   md << title(o) << "\n\n"
      << "Written by `make bench` (`" << command << "`); do not edit by hand.\n\n"
      << "Machine: " << machine << ". Steps: " << o.steps << ", the first " << o.warmup
-     << " discarded; times are per step, single thread (but ours-2t), each run in a fresh process. A run that passes " << o.budget
+     << " discarded; times are per step, single thread (but ours-2t and box2d3-2t), each run in a fresh process. A run that passes " << o.budget
      << " s stops early: its row says after how many steps (its statistics then cover the steps past the warm-up, "
         "or all of them if it did not get that far; its quality is the state where it stopped).\n\n"
      << "Engines:\n\n";
@@ -594,6 +600,10 @@ void write_markdown(const Options& o, const std::string& command, const std::str
   if (o.two_threads_from > 0 && std::find(o.engines.begin(), o.engines.end(), "ours-2t") == o.engines.end())
     md << "- " << engine_note("ours-2t", o) << ", run after `ours` on the stable solver's scenes of "
        << o.two_threads_from << " bodies and more; its ÷ours is its time over ours on one thread.\n";
+  if (o.two_threads_from > 0 && std::find(o.engines.begin(), o.engines.end(), "box2d3") != o.engines.end() &&
+      std::find(o.engines.begin(), o.engines.end(), "box2d3-2t") == o.engines.end())
+    md << "- " << engine_note("box2d3-2t", o) << ", run after `box2d3` on the same scenes; its ÷ours is its time "
+       << "over ours on one thread.\n";
   md << "\nScenes (bench/scenes.cpp): unit squares of mass 1, fixed rotation, friction 0 (but in pyramid_friction), "
         "sleeping off, each engine's default iterations; 1 m = 10 px in our engine. `gas`: area fraction 0.10, "
         "random velocities up to 5 m/s per axis (seed 42), no gravity, e = 1, our course solver. `rain`: a grid at "

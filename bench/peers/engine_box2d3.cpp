@@ -6,7 +6,8 @@
 //
 // Settings, mirroring bench/engine_box2d.cpp (quoted in bench/RESULTS.md):
 // - gravity (0, -g); sleeping off (world and every body); one worker thread
-//   (the default);
+//   (the default), or two for `box2d3-2t` (workerCount 2: v3's own scheduler
+//   and threads, which it makes when no task callbacks are given);
 // - dynamic bodies: motionLocks.angularZ (v3's fixed rotation), density
 //   1 / (4 hx hy), so mass 1; fixed bodies: static bodies;
 // - boxes: b2MakeBox(hx, hy), the scene's friction (v3 mixes sqrt(a b): the
@@ -50,8 +51,9 @@ void add_box(b2BodyId body, const Body& b, const Scene& s) {
 
 class Box2d3Engine final : public Engine {
  public:
-  explicit Box2d3Engine(const Scene& s) : initial_(s.bodies), dt_(static_cast<float>(s.dt)) {
+  Box2d3Engine(const Scene& s, int workers) : initial_(s.bodies), dt_(static_cast<float>(s.dt)) {
     b2WorldDef def = b2DefaultWorldDef();
+    def.workerCount = workers;
     def.gravity = {0.0f, static_cast<float>(-s.gravity)};
     def.enableSleep = false;
     if (s.restitution == 1.0) def.restitutionThreshold = 0.0f;
@@ -107,6 +109,6 @@ class Box2d3Engine final : public Engine {
 
 }  // namespace
 
-std::unique_ptr<Engine> make_box2d3(const Scene& s) { return std::make_unique<Box2d3Engine>(s); }
+std::unique_ptr<Engine> make_box2d3(const Scene& s, int workers) { return std::make_unique<Box2d3Engine>(s, workers); }
 
 }  // namespace bench
