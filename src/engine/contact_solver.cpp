@@ -281,10 +281,7 @@ void ContactSolver::classify(const Components& k, double h, double threshold, co
     RangeCount c;
     bool corner = false;
     for (std::size_t i = begin; i < end; ++i) {
-      if constexpr (with_axes) {
-        axes_[i] = contact_axis(k, pairs_[i].c, pairs_[i].b, s.touch);
-        corner = corner || axes_[i].corner;
-      }
+      if constexpr (with_axes) corner = plain_axis(k, i, s.touch) || corner;
       const PairKind kind = kinds_[i] = pair_kind(k, i, h, threshold, s);
       c.apart += kind == PairKind::apart;
       c.contacts += kind >= PairKind::contact;
@@ -1076,7 +1073,6 @@ void ContactSolver::solve_positions(Components& k, std::span<const EntityId> ent
            std::none_of(pairs_.begin(), pairs_.end(), [&](const Pair& p) { return overlaps(k, p, s.slop); });
     if (!none) broadphase.find(k, entities, 0.0, s.margin, pairs_, PairRule::solvable, s.workers);
   });
-  positions_.clear();
   if (none) return;
   laps.time(Stage::positions, [&] {
     if (prepare_positions(k, s)) project(k, g, s);
@@ -1132,13 +1128,17 @@ void ContactSolver::contact_axes(const Components& k, const SolverSettings& s) {
   Workers& w = workers_or_one(s.workers);
   const bool corners = w.or_over_ranges(pairs_.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
     bool any = false;
-    for (std::size_t i = begin; i < end; ++i) {
-      axes_[i] = contact_axis(k, pairs_[i].c, pairs_[i].b, s.touch);
-      any = any || axes_[i].corner;
-    }
+    for (std::size_t i = begin; i < end; ++i) any = plain_axis(k, i, s.touch) || any;
     return static_cast<std::uint8_t>(any);
   });
   if (corners) corner_axes(k, s);
+}
+
+// Pair i's contact_axis without faces, into axes_[i]; whether its boxes
+// touch corner to corner (then corner_axes() decides its axis).
+inline bool ContactSolver::plain_axis(const Components& k, std::size_t i, double touch) {
+  axes_[i] = contact_axis(k, pairs_[i].c, pairs_[i].b, touch);
+  return axes_[i].corner;
 }
 
 // The axes of the pairs that touch corner to corner, once every pair has its

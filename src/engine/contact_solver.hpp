@@ -233,6 +233,7 @@ class ContactSolver {
   std::vector<FrictionRow> earlier_friction_;
   std::vector<double> earlier_jn_, earlier_jt_;
   void contact_axes(const Components& k, const SolverSettings& s);
+  bool plain_axis(const Components& k, std::size_t i, double touch);
   void corner_axes(const Components& k, const SolverSettings& s);
   void physical_axes(const Components& k, const SolverSettings& s);
   std::vector<double> line_start_;   // by entity id: ms from which its line is its motion (impact_time()), or 0

@@ -25,6 +25,11 @@ using Bounds = BroadPhase::Bounds;
 // Closed test: touching boxes are candidates (resting contact). A NaN bound
 // fails it, so a lost body has no pair.
 bool touch(const Bounds& a, const Bounds& b) { return a.x0 <= b.x1 && b.x0 <= a.x1 && a.y0 <= b.y1 && b.y0 <= a.y1; }
+
+// Whether `inner` lies within `outer` (closed; a NaN bound fails it).
+bool within(const Bounds& inner, const Bounds& outer) {
+  return outer.x0 <= inner.x0 && outer.y0 <= inner.y0 && inner.x1 <= outer.x1 && inner.y1 <= outer.y1;
+}
 }  // namespace
 
 // ---- the course pass ----
@@ -200,9 +205,7 @@ void BroadPhase::find(const Components& k, std::span<const EntityId> entities, d
       const Bounds s = current_[i] = swept(k, entities[i], h, reach);
       // (A NaN fails the test: a rebuild, which handles it.)
       if (!inside) continue;
-      const Bounds& f = fat_[i];
-      inside = f.x0 <= s.x0 && f.y0 <= s.y0 && s.x1 <= f.x1 && s.y1 <= f.y1 &&
-               fixed_[i] == !std::isfinite(k.mass[entities[i]]);
+      inside = within(s, fat_[i]) && fixed_[i] == !std::isfinite(k.mass[entities[i]]);
     }
     return static_cast<std::uint8_t>(!inside);  // a body of the range left its box (or a different list)
   });
@@ -230,10 +233,8 @@ void BroadPhase::find(const Components& k, std::span<const EntityId> entities, d
 bool BroadPhase::holds(const Components& k, std::span<const EntityId> entities) const {
   if (k.any_rules() || !fat_built_ || !std::equal(entities.begin(), entities.end(), entities_.begin(), entities_.end()))
     return false;
-  for (std::size_t i = 0; i < entities.size(); ++i) {
-    const Bounds now = swept(k, entities[i], 0.0, 0.0), & s = current_[i];
-    if (!(s.x0 <= now.x0 && s.y0 <= now.y0 && now.x1 <= s.x1 && now.y1 <= s.y1)) return false;
-  }
+  for (std::size_t i = 0; i < entities.size(); ++i)
+    if (!within(swept(k, entities[i], 0.0, 0.0), current_[i])) return false;
   return true;
 }
 
