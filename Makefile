@@ -113,13 +113,15 @@ run: deps
 	@$(MAKE) --no-print-directory $(BUILD)/game
 	./$(BUILD)/game $(if $(SCENE),--scene $(SCENE)) $(ARGS)
 
+# The test binary runs one process per suite on every core (tools/run_tests.py;
+# a TEST_ARGS other than exclusions runs it once, as given).
 # The exercise trees come first in the list: they need nothing of this
 # build, so their -O0 builds and runs share the jobs with it instead of
 # waiting for it (on 2 cores, ~30 s less from a fresh clone).
 test: deps
 	@$(MAKE) --no-print-directory $(if $(TEST_ARGS),,exercise-trees) layers links $(BUILD)/tests $(BUILD)/game check-lib \
 	  examples install-check $(if $(TEST_ARGS),,exercise-check)
-	BOOST_TEST_COLOR_OUTPUT=no ./$(BUILD)/tests $(TEST_ARGS) 2>&1
+	@python3 tools/run_tests.py ./$(BUILD)/tests -- $(TEST_ARGS)
 
 # Includes under src/ and include/ go one way, one level per folder: include/physics < course/utils < engine
 # < course/systems < course/entities < course < api < reference < scene < input < games < app; no folder cycle,
