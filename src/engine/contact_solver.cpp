@@ -610,11 +610,15 @@ void ContactSolver::schedule(const Components& k, Vector g) {
       if (lb) nb = level + 1;
       level_[i] = level, levels = std::max(levels, level + 1);
     }
-    // Stable counting sort of the chunk by level; then the chunk's bodies start again at 0.
-    level_count_.assign(levels + 1, 0);
-    for (std::size_t i = start; i < end; ++i) ++level_count_[level_[i] + 1];
-    for (std::size_t l = 1; l <= levels; ++l) level_count_[l] += level_count_[l - 1];
-    for (std::size_t i = start; i < end; ++i) order_[start + level_count_[level_[i]]++] = static_cast<std::uint32_t>(i);
+    // Stable counting sort of the chunk by level and, within a level, x rows
+    // before y rows (any order of a level gives the same bits: the friction
+    // loop then meets the axes in runs, sweep_friction); then the chunk's
+    // bodies start again at 0.
+    const auto key = [&](std::size_t i) { return 2 * level_[i] + (contacts_[i].axis >= 2); };
+    level_count_.assign(2 * levels + 1, 0);
+    for (std::size_t i = start; i < end; ++i) ++level_count_[key(i) + 1];
+    for (std::size_t l = 1; l <= 2 * levels; ++l) level_count_[l] += level_count_[l - 1];
+    for (std::size_t i = start; i < end; ++i) order_[start + level_count_[key(i)]++] = static_cast<std::uint32_t>(i);
     for (std::size_t i = start; i < end; ++i) last_level_[slot_of_[contacts_[i].c]] = last_level_[slot_of_[contacts_[i].b]] = 0;
   }
   // The same order with the x rows first (iterate<false>).
@@ -733,36 +737,88 @@ void ContactSolver::iterate(const SolverSettings& s) {
       if (!x && !y) return;
     }
   } else {
-    for (int it = 0; it < s.iterations; ++it) {
-      bool changed = false;
-      for (std::size_t i = 0; i < rows_.size(); ++i) {
-        SolverRow& r = rows_[i];
-        FrictionHot& f = friction_rows_[i];
-        SolverBody& bc = solver_bodies_[r.c];
-        SolverBody& bb = solver_bodies_[r.b];
-        const bool y = f.axis >= 2;
-        double& vc = y ? bc.v.y : bc.v.x;
-        double& vb = y ? bb.v.y : bb.v.x;
-        const double sn = normal_sign[f.axis];
-        const double vn = sn * (vc - vb);
-        const double lambda = std::max(r.lambda - (vn - r.target) * r.inv_w, 0.0);
-        apply_axis_impulse(vc, vb, sn, lambda - r.lambda, bc.w, bb.w);
-        changed |= std::bit_cast<std::uint64_t>(lambda) != std::bit_cast<std::uint64_t>(r.lambda);
-        r.lambda = lambda;
-        if (f.mu == 0.0) continue;
-        double& tc = y ? bc.v.x : bc.v.y;
-        double& tb = y ? bb.v.x : bb.v.y;
-        const double st = tangent_sign[f.axis];
-        const double vt = st * (tc - tb);
-        const double limit = f.mu * lambda;
-        const double lt = std::clamp(f.lambda - vt * r.inv_w, -limit, limit);
-        apply_axis_impulse(tc, tb, st, lt - f.lambda, bc.w, bb.w);
-        changed |= std::bit_cast<std::uint64_t>(lt) != std::bit_cast<std::uint64_t>(f.lambda);
-        f.lambda = lt;
-      }
-      if (!changed) return;
-    }
+    for (int it = 0; it < s.iterations; ++it)
+      if (!sweep_friction()) return;
   }
+}
+
+#if defined(__SSE2__)
+// friction_row with friction, the row's two components side by side in
+// SSE2's lanes, the normal's in the low one (`y`: the normal along y, the
+// lanes swapped), with the same operations in the same order as the scalar
+// row, so the same bits: the tangential row's relative speed does not
+// depend on the normal impulse (it changes the other component), and its
+// vt·w is (vt - 0)·w, the same bits for any vt. Only the cone, which needs
+// the normal impulse in the tangent's lane, is scalar.
+static_assert(sizeof(Vector) == 2 * sizeof(double) && offsetof(Vector, y) == sizeof(double),
+              "friction_row_sse2 loads a velocity's x and y as one pair");
+template <bool y>
+[[gnu::always_inline]] inline bool ContactSolver::friction_row_sse2(SolverRow& r, FrictionHot& f, SolverBody& bc,
+                                                                    SolverBody& bb) {
+  constexpr int swap = y ? 1 : 2;  // _mm_shuffle_pd's: (high, low) for 1, (low, high) for 2
+  const __m128d vc = _mm_loadu_pd(&bc.v.x), vb = _mm_loadu_pd(&bb.v.x);
+  const __m128d rel = _mm_sub_pd(vc, vb);
+  const __m128d sign = _mm_setr_pd(normal_sign[f.axis], tangent_sign[f.axis]);
+  const __m128d v = _mm_mul_pd(sign, _mm_shuffle_pd(rel, rel, swap));  // (vn, vt)
+  const __m128d old = _mm_setr_pd(r.lambda, f.lambda);
+  const __m128d push = _mm_mul_pd(_mm_sub_pd(v, _mm_set_sd(r.target)), _mm_set1_pd(r.inv_w));
+  const __m128d unclamped = _mm_sub_pd(old, push);
+  const double lambda = std::max(_mm_cvtsd_f64(unclamped), 0.0);
+  const double limit = f.mu * lambda;
+  const double lt = std::clamp(_mm_cvtsd_f64(_mm_unpackhi_pd(unclamped, unclamped)), -limit, limit);
+  const __m128d now = _mm_setr_pd(lambda, lt);
+  const __m128d j = _mm_sub_pd(now, old);
+  const __m128d dc = _mm_mul_pd(_mm_mul_pd(_mm_set1_pd(bc.w), j), sign);
+  const __m128d db = _mm_mul_pd(_mm_mul_pd(_mm_set1_pd(bb.w), j), sign);
+  _mm_storeu_pd(&bc.v.x, _mm_add_pd(vc, _mm_shuffle_pd(dc, dc, swap)));
+  _mm_storeu_pd(&bb.v.x, _mm_sub_pd(vb, _mm_shuffle_pd(db, db, swap)));
+  r.lambda = lambda, f.lambda = lt;
+  // Bits, not values, as the scalar row compares them (a 32-bit compare: SSE2 has no 64-bit one).
+  return _mm_movemask_epi8(_mm_cmpeq_epi32(_mm_castpd_si128(now), _mm_castpd_si128(old))) != 0xFFFF;
+}
+#endif
+
+// A row of iterate<true> whose normal lies along component n, its tangent
+// along t: the normal impulse, then the tangential one within the cone;
+// whether either accumulator changed.
+template <double Vector::*n, double Vector::*t>
+[[gnu::always_inline]] inline bool ContactSolver::friction_row(SolverRow& r, FrictionHot& f,
+                                                               std::span<SolverBody> bodies) {
+  SolverBody& bc = bodies[r.c];
+  SolverBody& bb = bodies[r.b];
+#if defined(__SSE2__)
+  if (f.mu != 0.0) return friction_row_sse2<n == &Vector::y>(r, f, bc, bb);
+#endif
+  const double sn = normal_sign[f.axis];
+  const double vn = sn * (bc.v.*n - bb.v.*n);
+  const double lambda = std::max(r.lambda - (vn - r.target) * r.inv_w, 0.0);
+  apply_axis_impulse(bc.v.*n, bb.v.*n, sn, lambda - r.lambda, bc.w, bb.w);
+  bool changed = std::bit_cast<std::uint64_t>(lambda) != std::bit_cast<std::uint64_t>(r.lambda);
+  r.lambda = lambda;
+  if (f.mu == 0.0) return changed;
+  const double st = tangent_sign[f.axis];
+  const double vt = st * (bc.v.*t - bb.v.*t);
+  const double limit = f.mu * lambda;
+  const double lt = std::clamp(f.lambda - vt * r.inv_w, -limit, limit);
+  apply_axis_impulse(bc.v.*t, bb.v.*t, st, lt - f.lambda, bc.w, bb.w);
+  changed |= std::bit_cast<std::uint64_t>(lt) != std::bit_cast<std::uint64_t>(f.lambda);
+  f.lambda = lt;
+  return changed;
+}
+
+// One sweep of iterate<true>; whether any accumulated impulse changed. The
+// rows come in runs of one axis (schedule()), so the test of the axis is
+// one the processor predicts, and each row's components are known.
+bool ContactSolver::sweep_friction() {
+  // (Spans, not the members: the loop's stores could alias a vector's own pointers.)
+  const std::span<SolverRow> rows(rows_);
+  const std::span<FrictionHot> friction(friction_rows_);
+  const std::span<SolverBody> bodies(solver_bodies_);
+  bool changed = false;
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    changed |= friction[i].axis >= 2 ? friction_row<&Vector::y, &Vector::x>(rows[i], friction[i], bodies)
+                                     : friction_row<&Vector::x, &Vector::y>(rows[i], friction[i], bodies);
+  return changed;
 }
 
 // One sweep of iterate<false> over rows whose normals lie along component v

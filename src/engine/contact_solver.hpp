@@ -274,6 +274,11 @@ class ContactSolver {
     double mu, lambda;
     std::uint32_t axis;  // the contact's (the normal's, as ContactConstraint::axis)
   };
+  bool sweep_friction();
+  template <double Vector::*n, double Vector::*t>
+  static bool friction_row(SolverRow& r, FrictionHot& f, std::span<SolverBody> bodies);
+  template <bool y>
+  static bool friction_row_sse2(SolverRow& r, FrictionHot& f, SolverBody& bc, SolverBody& bb);
   template <double Vector::*v>
   bool sweep_axis(std::span<SolverRow> rows, std::span<const std::uint8_t> paired);
   template <double Vector::*v>
