@@ -51,6 +51,13 @@ struct Options {
   // box2d3-2t after box2d3) on the stable solver's scenes of at least this
   // many bodies (0: never).
   std::size_t two_threads_from = 100000;
+  // Runs of ours and of Box2D v3.2 on each scene of at most repeat_below
+  // bodies (the tile maps but): each process runs fast or slow as the machine
+  // places it, which swung the pyramid's ratio from 2.8x to 5.7x between
+  // single runs. The two engines alternate, every other engine runs once,
+  // and each row is its engine's median run.
+  int repeats = 3;
+  std::size_t repeat_below = 25000;
   std::vector<std::string> engines{"ours", "box2d", "chipmunk"};
   bool engines_given = false;  // without --engines, --peers puts the peers' engines second and third
   std::string peers;           // build/bench-peers: the binary holding box2d3 and chipmunk-release
@@ -321,6 +328,8 @@ const char* usage =
     "             [--peers build/bench-peers (adds box2d3,chipmunk-release)] [--peer-sources TEXT]\n"
     "             [--steps 600] [--warmup 60] [--out bench/RESULTS.md]\n"
     "             [--compare 0|1] [--budget 30 (s per run)] [--phase-budget 150 (s)] [--isolate 0|1]\n"
+    "             [--repeats 3 (runs of ours and box2d3, alternated, on scenes of at most --repeat-below\n"
+    "             25000 bodies but the tile maps; each row is the median run)]\n"
     "             (engines also: ours-course, our course solver on every scene; ours-2t, ours on two\n"
     "             threads; box2d3-2t, Box2D v3.2 on two (--peers); scenes also, each run\n"
     "             after the rain at its sizes from 10 000 up: rain_phase, the rain over the same share of\n"
@@ -342,6 +351,8 @@ bool set_option(Options& o, const std::string& a, const std::string& v) {
   else if (a == "--map-sides") o.map_sides = sizes_of(v);
   else if (a == "--ours-only-gas") o.ours_only_gas = sizes_of(v);
   else if (a == "--two-threads-from") o.two_threads_from = static_cast<std::size_t>(std::stoul(v));
+  else if (a == "--repeats") o.repeats = std::stoi(v);
+  else if (a == "--repeat-below") o.repeat_below = static_cast<std::size_t>(std::stoul(v));
   else if (a == "--peers") o.peers = v;
   else if (a == "--peer-sources") o.peer_sources = v;
   else if (a == "--steps") o.steps = std::stoi(v);
@@ -372,6 +383,7 @@ Options parse(int argc, char** argv) {
     if (!set_option(o, a, argv[++i])) throw std::invalid_argument("unknown option " + a);
   }
   if (o.steps <= o.warmup || o.warmup < 0) throw std::invalid_argument("--steps must exceed --warmup >= 0");
+  if (o.repeats < 1) throw std::invalid_argument("--repeats must be at least 1");
   // The strongest peers first, right after ours.
   if (!o.peers.empty() && !o.engines_given) o.engines = {"ours", "box2d3", "chipmunk-release", "box2d", "chipmunk"};
   return o;
@@ -447,7 +459,7 @@ class Report {
     table_ << "| engine | scene | N | median ms/step | p95 ms/step | ns/body/step | time ÷ ours | escaped | max overlap "
               "(block) | KE drift (gas) | top block moved (pyramids, m) | peak MB |\n"
               "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-    std::printf("%-18s %-16s %7s %9s %9s %9s %7s %7s %9s %10s %9s %7s\n", "engine", "scene", "N", "median", "p95",
+    std::printf("%-22s %-16s %7s %9s %9s %9s %7s %7s %9s %10s %9s %7s\n", "engine", "scene", "N", "median", "p95",
                 "ns/body", "÷ours", "escaped", "overlap", "KE drift", "top moved", "peak MB");
   }
 
@@ -457,7 +469,7 @@ class Report {
     const std::string ratio = ours_ms > 0 ? fmt("%.2f", r.median_ms / ours_ms) : "-";
     const std::string drift = r.scene == "gas" ? fmt("%+.2e", r.q.energy_drift) : "-";
     const std::string top = r.scene.find("pyramid") != std::string::npos ? fmt("%.4f", r.q.top_moved) : "-";
-    std::printf("%-18s %-16s %7zu %9.3f %9.3f %9.1f %7s %7zu %9.4f %10s %9s %7.0f\n", label.c_str(), r.scene.c_str(),
+    std::printf("%-22s %-16s %7zu %9.3f %9.3f %9.1f %7s %7zu %9.4f %10s %9s %7.0f\n", label.c_str(), r.scene.c_str(),
                 r.n, r.median_ms, r.p95_ms, ns_body, ratio.c_str(), r.q.escaped, r.q.max_overlap, drift.c_str(),
                 top.c_str(), r.peak_mb);
     std::fflush(stdout);
@@ -539,23 +551,51 @@ std::string label_of(const std::string& engine, const Result& r, const Scene& s,
   return label;
 }
 
-// One scene at one size, every engine (ours alone if `alone`); ours and
+// One engine's run of a scene (each in a fresh process unless --isolate 0).
+Result run_one(const std::string& self, const std::string& engine, const Scene& s, const Options& o) {
+  return o.isolate ? run_isolated(self, engine, s, o) : run(engine, s, o);
+}
+
+// How many runs an engine gets on a scene (Options::repeats).
+int runs_of(const std::string& engine, const Scene& s, bool alone, const Options& o) {
+  const bool repeated = !alone && !s.name.starts_with("tiles_") && s.dynamic_count() <= o.repeat_below;
+  return repeated && (engine == "ours" || engine == "box2d3") ? o.repeats : 1;
+}
+
+// The run of median time among an engine's runs (the lower middle of an even count).
+Result median_run(std::vector<Result> runs) {
+  std::sort(runs.begin(), runs.end(), [](const Result& a, const Result& b) { return a.median_ms < b.median_ms; });
+  return runs[(runs.size() - 1) / 2];
+}
+
+// One scene at one size, every engine (ours alone if `alone`), ours and
+// Box2D v3.2 in turns where they run several times (runs_of); ours and
 // Box2D v3.2 on two threads too (ours-2t, box2d3-2t) on the stable solver's
-// scenes from two_threads_from bodies up.
+// scenes from two_threads_from bodies up, each right after its one-thread run.
 void run_scene(const std::string& self, const Scene& s, bool alone, const Options& o, Report& report) {
-  double ours_ms = 0;
+  std::vector<std::string> order;  // the rows' engines, in the table's order
   for (const std::string& engine : o.engines) {
     if (alone && engine != "ours") continue;
-    const Result r = o.isolate ? run_isolated(self, engine, s, o) : run(engine, s, o);
-    if (engine == "ours") ours_ms = r.median_ms;
-    report.add(r, ours_ms, label_of(engine, r, s, alone, o));
+    order.push_back(engine);
     const bool two = o.two_threads_from > 0 && s.resting && s.dynamic_count() >= o.two_threads_from;
     const std::string twin = engine + "-2t";  // ours-2t after ours, box2d3-2t after box2d3
-    if ((engine != "ours" && engine != "box2d3") || !two ||
-        std::find(o.engines.begin(), o.engines.end(), twin) != o.engines.end())
-      continue;
-    const Result r2 = o.isolate ? run_isolated(self, twin, s, o) : run(twin, s, o);
-    report.add(r2, ours_ms, label_of(twin, r2, s, alone, o));
+    if ((engine == "ours" || engine == "box2d3") && two &&
+        std::find(o.engines.begin(), o.engines.end(), twin) == o.engines.end())
+      order.push_back(twin);
+  }
+  std::map<std::string, std::vector<Result>> runs;
+  for (int round = 0;; ++round) {
+    bool ran = false;
+    for (const std::string& engine : order)
+      if (round < runs_of(engine, s, alone, o)) runs[engine].push_back(run_one(self, engine, s, o)), ran = true;
+    if (!ran) break;
+  }
+  const double ours_ms = runs.count("ours") ? median_run(runs["ours"]).median_ms : 0.0;
+  for (const std::string& engine : order) {
+    const Result r = median_run(runs[engine]);
+    std::string label = label_of(engine, r, s, alone, o);
+    if (runs[engine].size() > 1) label += " (median of " + std::to_string(runs[engine].size()) + ")";
+    report.add(r, ours_ms, label);
   }
 }
 
@@ -592,7 +632,11 @@ void write_markdown(const Options& o, const std::string& command, const std::str
   md << title(o) << "\n\n"
      << "Written by `make bench` (`" << command << "`); do not edit by hand.\n\n"
      << "Machine: " << machine << ". Steps: " << o.steps << ", the first " << o.warmup
-     << " discarded; times are per step, single thread (but ours-2t and box2d3-2t), each run in a fresh process. A run that passes " << o.budget
+     << " discarded; times are per step, single thread (but ours-2t and box2d3-2t), each run in a fresh process. "
+     << (o.repeats > 1 ? "On the scenes of at most " + std::to_string(o.repeat_below) + " bodies (the tile maps but), ours "
+                         "and box2d3 run " + std::to_string(o.repeats) + " times, in turns, and their rows are their "
+                         "median runs (a fresh process runs fast or slow as the machine places it). " : "")
+     << "A run that passes " << o.budget
      << " s stops early: its row says after how many steps (its statistics then cover the steps past the warm-up, "
         "or all of them if it did not get that far; its quality is the state where it stopped).\n\n"
      << "Engines:\n\n";
