@@ -26,14 +26,14 @@ ifeq ($(MAKELEVEL),0)
     MAKEFLAGS += -j$(NPROC) --output-sync=target --no-print-directory
     # A build from scratch (no $(BUILD)/obj yet) says how long it will take,
     # from CPU seconds measured on a fresh clone (docs/reliability.md, "Tests
-    # and their time"): 190 for the libraries, the game, the test files, the
-    # examples, the installed copy's builds and the exercise trees (make test:
-    # 224 s of user time, less the test binary's), then the test binary's
-    # 35 s, which run on one core; make run: 81 s of user time.
+    # and their time"): make test, 620 (user and system: the libraries, the
+    # game, the test files, the examples, the installed copy's builds, the
+    # exercise trees, and the test binary, one process per suite on every
+    # core); make run: 81 s of user time.
     ifeq ($(wildcard $(BUILD)/obj),)
       GOALS := $(or $(MAKECMDGOALS),all)
       ifneq ($(filter test,$(GOALS)),)
-        $(info building from scratch and testing (about $(shell echo $$((190 / $(NPROC) + 35))) s on $(NPROC) cores)...)
+        $(info building from scratch and testing (about $(shell echo $$((620 / $(NPROC)))) s on $(NPROC) cores)...)
       else ifneq ($(filter run,$(GOALS)),)
         $(info building the game from scratch (about $(shell echo $$((81 / $(NPROC)))) s on $(NPROC) cores)...)
       else ifneq ($(filter all $(BUILD)/tests,$(GOALS)),)
