@@ -29,13 +29,13 @@ ifeq ($(MAKELEVEL),0)
     # and their time"): make test, 620 (user and system: the libraries, the
     # game, the test files, the examples, the installed copy's builds, the
     # exercise trees, and the test binary, one process per suite on every
-    # core); make run: 81 s of user time.
+    # core); make run, 340 (user and system).
     ifeq ($(wildcard $(BUILD)/obj),)
       GOALS := $(or $(MAKECMDGOALS),all)
       ifneq ($(filter test,$(GOALS)),)
         $(info building from scratch and testing (about $(shell echo $$((620 / $(NPROC)))) s on $(NPROC) cores)...)
       else ifneq ($(filter run,$(GOALS)),)
-        $(info building the game from scratch (about $(shell echo $$((81 / $(NPROC)))) s on $(NPROC) cores)...)
+        $(info building the game from scratch (about $(shell echo $$((340 / $(NPROC)))) s on $(NPROC) cores)...)
       else ifneq ($(filter all $(BUILD)/tests,$(GOALS)),)
         $(info building from scratch (about $(shell echo $$((150 / $(NPROC)))) s on $(NPROC) cores)...)
       endif
