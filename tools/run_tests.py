@@ -44,28 +44,26 @@ def top_suites(binary):
             if line and not line.startswith(" ") and not FINAL_LINE.match(line)]
 
 
-def summarise(label, rc, out, counts):
-    """Prints a process's output but its summary lines; adds those to counts (per suite, and the
-    totals under None: a case outside any suite has no suite line). False if the process broke."""
+def summarise(label, rc, out, suites):
+    """Prints a process's output but its summary lines, adds its suite lines to `suites`, and returns
+    its final line's (passed, failed) (a case outside any suite has no suite line), or None if the
+    process broke: no final line (a crash), or a non-zero exit with no failed test."""
     lines = out.splitlines()
     final = FINAL_LINE.match(lines[-1]) if lines else None
     for line in lines[:-1] if final else lines:
         m = SUITE_LINE.match(line)
         if m:
-            passed, failed = counts.get(m[2], (0, 0))
-            counts[m[2]] = (passed + int(m[3]), failed + int(m[4] or 0))
+            passed, failed = suites.get(m[2], (0, 0))
+            suites[m[2]] = (passed + int(m[3]), failed + int(m[4] or 0))
         elif line.strip() and NO_MATCH not in line and not BOOST_NOISE.match(line):
             print(line)
-    if final:
-        passed, failed = counts.get(None, (0, 0))
-        counts[None] = (passed + int(final[1]), failed + int(final[2]))
     if not final:
         print(f"run_tests: {label}: ended without its final line (exit {rc}): counted as 1 failed")
-        return False
+        return None
     if rc != 0 and int(final[2]) == 0 and NO_MATCH not in out:
         print(f"run_tests: {label}: exit {rc} with no failed test: counted as 1 failed")
-        return False
-    return True
+        return None
+    return int(final[1]), int(final[2])
 
 
 def main(argv):
@@ -73,23 +71,25 @@ def main(argv):
         sys.exit(__doc__.strip())
     binary, rest = argv[1], argv[2:]
     boost_args = rest[rest.index("--") + 1:] if "--" in rest else []
-    jobs = int(rest[0]) if rest and rest[0] != "--" else (os.cpu_count() or 1)
+    jobs = os.cpu_count() or 1
+    if rest and rest[0] != "--":
+        if not rest[0].isdigit() or int(rest[0]) < 1:
+            sys.exit(f"run_tests: JOBS must be a positive integer, not {rest[0]!r}")
+        jobs = int(rest[0])
     if any(not a.startswith("--run_test=!") for a in boost_args):
         rc, out = run(binary, boost_args)
         sys.stdout.write(out)
         return rc
     runs = [("the slow cases", ["--run_test=@slow"])]
     runs += [(suite, [f"--run_test={suite}", "--run_test=!@slow"]) for suite in top_suites(binary)]
-    with ThreadPoolExecutor(max_workers=max(1, jobs)) as pool:
+    with ThreadPoolExecutor(max_workers=jobs) as pool:
         results = list(pool.map(lambda r: run(binary, r[1] + boost_args), runs))
-    counts, broken = {None: (0, 0)}, 0
+    suites, passed, failed = {}, 0, 0
     for (label, _), (rc, out) in zip(runs, results):
-        broken += not summarise(label, rc, out, counts)
-    for suite in sorted(s for s in counts if s is not None):
-        passed, failed = counts[suite]
-        print(f"  {'FAIL ' if failed else 'ok   '}{suite}: {passed} passed" + (f", {failed} failed" if failed else ""))
-    passed, failed = counts[None]
-    failed += broken
+        counted = summarise(label, rc, out, suites) or (0, 1)  # a broken process: 1 failed
+        passed, failed = passed + counted[0], failed + counted[1]
+    for suite, (p, f) in sorted(suites.items()):
+        print(f"  {'FAIL ' if f else 'ok   '}{suite}: {p} passed" + (f", {f} failed" if f else ""))
     print(f"{passed} passed, {failed} failed")
     return 1 if failed else 0
 
