@@ -71,20 +71,6 @@ double FloatBox::extent() const {
   return std::max(static_cast<double>(max_x) - min_x, static_cast<double>(max_y) - min_y);
 }
 
-int UniformGrid::cell_x(double x) const {
-  const double t = (x - x0_) * inv_cell_;
-  if (!(t > 0.0)) return 0;
-  if (t >= nx_ - 1) return nx_ - 1;
-  return static_cast<int>(t);
-}
-
-int UniformGrid::cell_y(double y) const {
-  const double t = (y - y0_) * inv_cell_;
-  if (!(t > 0.0)) return 0;
-  if (t >= ny_ - 1) return ny_ - 1;
-  return static_cast<int>(t);
-}
-
 // Cells for the small boxes' corners (min_x, min_y), at least as wide as the
 // widest small box.
 void UniformGrid::size_grid(const SmallBoxes& s) {
@@ -104,6 +90,8 @@ void UniformGrid::size_grid(const SmallBoxes& s) {
   }
   x0_ = lo_x, y0_ = lo_y, cell_ = cell, inv_cell_ = 1.0 / cell;
   nx_ = static_cast<int>(nx), ny_ = static_cast<int>(ny);
+  stride_ = static_cast<std::size_t>(nx_) + 1;
+  table_ = (static_cast<std::size_t>(ny_) + 1) * stride_;
   max_small_extent_ = max_extent;
 }
 
@@ -138,6 +126,21 @@ void UniformGrid::index(std::span<const FloatBox> boxes) {
   fill_cells(boxes, small.count);
 }
 
+namespace {
+// A box's larger side, and whether the grid can hold it: no NaN bound and
+// both sides finite. Branch-free (`&`): at a million bodies this runs twice a
+// box per pass.
+struct BoxSize {
+  double extent;
+  bool finite;
+};
+BoxSize size_of(const FloatBox& b) {
+  const double dx = static_cast<double>(b.max_x) - b.min_x, dy = static_cast<double>(b.max_y) - b.min_y;
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  return {dx < dy ? dy : dx, static_cast<bool>((dx < inf) & (dy < inf))};  // a NaN side fails both tests
+}
+}  // namespace
+
 // Sorts the bodies into small (in the grid) and large (aside); boxes with a
 // NaN bound are in neither and collide with nothing. Afterwards cell_of_ says
 // which bodies are small (nonzero). Returns what the grid's size depends on,
@@ -145,53 +148,61 @@ void UniformGrid::index(std::span<const FloatBox> boxes) {
 // bodies the grid's passes are bound by memory).
 UniformGrid::SmallBoxes UniformGrid::classify(std::span<const FloatBox> boxes) {
   const std::size_t n = boxes.size();
+  // large_slot_ is -1 but for the large bodies: reset those of the last pass.
+  for (const std::uint32_t i : large_)
+    if (i < large_slot_.size()) large_slot_[i] = -1;
+  large_slot_.resize(n, -1);
   large_.clear();
   large_box_.clear();
   double sum = 0.0;
   std::size_t counted = 0;
   for (const FloatBox& b : boxes) {
-    const double e = b.extent();
-    if (b.valid() && std::isfinite(e)) sum += e, ++counted;
+    const BoxSize z = size_of(b);
+    sum += z.finite ? z.extent : 0.0;
+    counted += z.finite;
   }
   const double threshold = counted ? large_factor * (sum / static_cast<double>(counted)) : 0.0;
   cell_of_.resize(n);
-  large_slot_.resize(n);
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  SmallBoxes s{inf, inf, -inf, -inf, 0.0, 0};  // (a small box's min is finite)
+  // In locals, not in the result's fields: those live in memory, which the
+  // stores to cell_of_ may alias, so each body reloaded and stored all six.
+  // The corners' bounds in float (exact; converted once at the end).
+  constexpr float finf = std::numeric_limits<float>::infinity();
+  float lo_x = finf, lo_y = finf, hi_x = -finf, hi_y = -finf;  // (a small box's min is finite)
+  double max_extent = 0.0;
+  std::size_t count = 0;
+  std::uint32_t* const cell = cell_of_.data();
   for (std::size_t i = 0; i < n; ++i) {
     const FloatBox& b = boxes[i];
-    const double e = b.extent();
-    const bool small = b.valid() && std::isfinite(e) && e <= threshold;
-    cell_of_[i] = small;
-    large_slot_[i] = -1;
+    const BoxSize z = size_of(b);
+    const bool small = z.finite & (z.extent <= threshold);
+    cell[i] = small;
     if (small) {
-      ++s.count;
-      s.max_extent = std::max(s.max_extent, e);
-      s.lo_x = std::min(s.lo_x, static_cast<double>(b.min_x)), s.hi_x = std::max(s.hi_x, static_cast<double>(b.min_x));
-      s.lo_y = std::min(s.lo_y, static_cast<double>(b.min_y)), s.hi_y = std::max(s.hi_y, static_cast<double>(b.min_y));
+      ++count;
+      max_extent = z.extent > max_extent ? z.extent : max_extent;
+      lo_x = b.min_x < lo_x ? b.min_x : lo_x, hi_x = b.min_x > hi_x ? b.min_x : hi_x;
+      lo_y = b.min_y < lo_y ? b.min_y : lo_y, hi_y = b.min_y > hi_y ? b.min_y : hi_y;
     } else if (b.valid()) {
       large_slot_[i] = static_cast<std::int32_t>(large_.size());
       large_.push_back(static_cast<std::uint32_t>(i));
       large_box_.push_back(b);
     }
   }
-  if (s.count == 0) s.lo_x = s.lo_y = s.hi_x = s.hi_y = 0.0;
-  return s;
+  if (count == 0) return {0.0, 0.0, 0.0, 0.0, 0.0, 0};
+  return {lo_x, lo_y, hi_x, hi_y, max_extent, count};
 }
 
 // Counting sort of the small boxes by cell (row-major). Filling backwards
 // leaves each cell's bodies in increasing index order.
 void UniformGrid::fill_cells(std::span<const FloatBox> boxes, std::size_t small) {
   const std::size_t n = boxes.size();
-  const std::size_t cells = this->cells();
+  const std::size_t cells = table_;
   cell_start_.assign(cells + 1, 0);
   for (std::size_t i = 0; i < n; ++i) {
     if (!cell_of_[i]) {
       cell_of_[i] = std::numeric_limits<std::uint32_t>::max();
       continue;
     }
-    const std::size_t c = static_cast<std::size_t>(cell_y(boxes[i].min_y)) * static_cast<std::size_t>(nx_) +
-                          static_cast<std::size_t>(cell_x(boxes[i].min_x));
+    const std::size_t c = corner_cell(boxes[i]);
     cell_of_[i] = static_cast<std::uint32_t>(c);
     ++cell_start_[c];
   }
@@ -200,7 +211,7 @@ void UniformGrid::fill_cells(std::span<const FloatBox> boxes, std::size_t small)
   for (std::size_t i = n; i-- > 0;) {
     const std::uint32_t c = cell_of_[i];
     if (c == std::numeric_limits<std::uint32_t>::max()) continue;
-    entries_[--cell_start_[c]] = Entry{boxes[i], static_cast<std::uint32_t>(i)};
+    entries_[--cell_start_[c]] = Entry{boxes[i], static_cast<std::uint32_t>(i), c};
   }
   // No moved bodies yet: clear the lists the last pass left.
   for (const std::uint32_t c : moved_cells_)
@@ -210,34 +221,28 @@ void UniformGrid::fill_cells(std::span<const FloatBox> boxes, std::size_t small)
   moved_head_.resize(cells, -1);
 }
 
-// Sweeps the cells in order. Each pair of neighbouring cells is visited once,
-// from the earlier one: a cell meets itself, its right neighbour and the
-// three cells below it (below-left, below, below-right), which are contiguous
-// in entries_.
+// Walks the entries (in cell order) rather than the cells: most cells hold
+// zero, one or two bodies at random, and a test per cell for emptiness was a
+// mispredicted branch every other cell (a million gas bodies: a third of the
+// grid's time). Each pair of neighbouring cells is visited once, from the
+// earlier one: an entry meets the later entries of its cell and those of its
+// right neighbour, then the three cells below it (below-left, below,
+// below-right); each run is contiguous in entries_, and the table's empty
+// last column and row stand for the neighbours beyond the edges.
 void UniformGrid::pairs_in_grid() {
   const std::uint32_t* start = cell_start_.data();
   const Entry* entry = entries_.data();
-  for (int cy = 0; cy < ny_; ++cy) {
-    const std::size_t row = static_cast<std::size_t>(cy) * static_cast<std::size_t>(nx_);
-    const std::size_t below = row + static_cast<std::size_t>(nx_);
-    for (int cx = 0; cx < nx_; ++cx) {
-      const std::size_t c = row + static_cast<std::size_t>(cx);
-      const std::uint32_t s = start[c], e = start[c + 1];
-      if (s == e) continue;
-      const std::uint32_t same_end = cx + 1 < nx_ ? start[c + 2] : e;  // this cell and the right one
-      std::uint32_t below_s = 0, below_e = 0;
-      if (cy + 1 < ny_) {
-        below_s = start[below + static_cast<std::size_t>(std::max(cx - 1, 0))];
-        below_e = start[below + static_cast<std::size_t>(std::min(cx + 1, nx_ - 1)) + 1];
-      }
-      for (std::uint32_t a = s; a < e; ++a) {
-        const FloatBox box = entry[a].box;
-        for (std::uint32_t b = a + 1; b < same_end; ++b)
-          if (overlap(box, entry[b].box)) emit(entry[a].index, entry[b].index);
-        for (std::uint32_t b = below_s; b < below_e; ++b)
-          if (overlap(box, entry[b].box)) emit(entry[a].index, entry[b].index);
-      }
-    }
+  const std::size_t below = stride_;
+  const auto count = static_cast<std::uint32_t>(entries_.size());
+  for (std::uint32_t a = 0; a < count; ++a) {
+    const std::size_t c = entry[a].cell;
+    const std::uint32_t same_end = start[c + 2];  // this cell and the right one
+    const std::uint32_t below_s = start[c + below - 1], below_e = start[c + below + 2];
+    const FloatBox box = entry[a].box;
+    for (std::uint32_t b = a + 1; b < same_end; ++b)
+      if (overlap(box, entry[b].box)) emit(entry[a].index, entry[b].index);
+    for (std::uint32_t b = below_s; b < below_e; ++b)
+      if (overlap(box, entry[b].box)) emit(entry[a].index, entry[b].index);
   }
 }
 
@@ -269,6 +274,15 @@ void UniformGrid::pairs_of_large() {
 }
 
 void UniformGrid::sort_pairs(std::size_t n) {
+  // Few pairs among many bodies (a thin gas: a million bodies, a few
+  // thousand pairs a pass): a comparison sort of the pairs costs less than
+  // the counting sort's pass over every body. Both give the same order
+  // (each pair is found once).
+  if (found_.size() * 32 < n) {
+    pairs_.assign(found_.begin(), found_.end());
+    std::sort(pairs_.begin(), pairs_.end());
+    return;
+  }
   // Counting sort on the first index, then each (short) run of pairs sharing
   // it by insertion sort: O(n + pairs), where a full sort would cost
   // O(pairs log pairs) and dominate the broadphase.
@@ -309,10 +323,9 @@ void UniformGrid::move(std::uint32_t i, const FloatBox& box) {
     large_box_.push_back(box);
     return;
   }
-  const std::size_t c = static_cast<std::size_t>(cell_y(box.min_y)) * static_cast<std::size_t>(nx_) +
-                        static_cast<std::size_t>(cell_x(box.min_x));
+  const std::size_t c = corner_cell(box);
   if (moved_head_[c] < 0) moved_cells_.push_back(static_cast<std::uint32_t>(c));
-  moved_.push_back(Moved{Entry{box, i}, moved_head_[c]});
+  moved_.push_back(Moved{Entry{box, i, static_cast<std::uint32_t>(c)}, moved_head_[c]});
   moved_head_[c] = static_cast<std::int32_t>(moved_.size() - 1);
 }
 

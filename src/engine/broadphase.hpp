@@ -147,6 +147,7 @@ class UniformGrid {
   struct Entry {
     FloatBox box;
     std::uint32_t index;
+    std::uint32_t cell;  // its cell (pairs_in_grid walks the entries, not the cells)
   };
   struct Moved {
     Entry entry;
@@ -156,8 +157,19 @@ class UniformGrid {
   // query() without the large bodies.
   template <class F>
   void query_grid(const FloatBox& box, F&& f) const;
-  int cell_x(double x) const;
-  int cell_y(double y) const;
+  // The column and row of a point, clamped to the grid (NaN to 0).
+  int cell_x(double x) const { return clamp_cell((x - x0_) * inv_cell_, nx_); }
+  int cell_y(double y) const { return clamp_cell((y - y0_) * inv_cell_, ny_); }
+  static int clamp_cell(double t, int n) {
+    t = t > 0.0 ? t : 0.0;
+    const double last = n - 1;
+    return static_cast<int>(t < last ? t : last);
+  }
+  // The cell of a box's lower corner: cell_at(cell_x(min_x), cell_y(min_y)).
+  std::size_t corner_cell(const FloatBox& b) const;
+  std::size_t cell_at(int cx, int cy) const {
+    return static_cast<std::size_t>(cy) * stride_ + static_cast<std::size_t>(cx);
+  }
   // build()'s stages.
   struct SmallBoxes {
     double lo_x, lo_y, hi_x, hi_y;  // the bounds of their corners (min_x, min_y)
@@ -175,9 +187,13 @@ class UniformGrid {
   // Geometry.
   double x0_ = 0, y0_ = 0, cell_ = 1, inv_cell_ = 1;
   int nx_ = 1, ny_ = 1;
+  // The table has a row of stride_ = nx_ + 1 cells per grid row, the last
+  // one always empty, and one more empty row below: the left, right and
+  // lower neighbours of every cell exist, so no walk tests for the edges.
+  std::size_t stride_ = 2, table_ = 4;
   double max_small_extent_ = 0;  // every box in the grid is at most this wide
 
-  std::vector<std::uint32_t> cell_start_;  // entries of cell c: [cell_start_[c], cell_start_[c+1])
+  std::vector<std::uint32_t> cell_start_;  // entries of cell c: [cell_start_[c], cell_start_[c+1]), table_ + 1
   std::vector<Entry> entries_;             // the small boxes, sorted by cell
   std::vector<std::uint32_t> cell_of_;     // scratch: cell of each small body
   std::vector<std::uint8_t> is_large_;     // per body
@@ -198,6 +214,25 @@ class UniformGrid {
   std::vector<PairKey> pairs_;
 };
 
+#if defined(__SSE2__)
+// Both axes at once, branch-free: the two clamps of cell_x and cell_y are
+// maxpd and minpd (the same results; NaN goes to 0). As scalar code they were
+// four branches a body, which mispredict on bodies at the grid's edges.
+inline std::size_t UniformGrid::corner_cell(const FloatBox& b) const {
+  const __m128d corner = _mm_cvtps_pd(std::bit_cast<__m128>(b));  // (min_x, min_y)
+  const __m128d t = _mm_mul_pd(_mm_sub_pd(corner, _mm_set_pd(y0_, x0_)), _mm_set1_pd(inv_cell_));
+  const __m128d last = _mm_set_pd(ny_ - 1, nx_ - 1);
+  const __m128i cells = _mm_cvttpd_epi32(_mm_min_pd(_mm_max_pd(t, _mm_setzero_pd()), last));
+  const auto cx = static_cast<std::size_t>(_mm_cvtsi128_si32(cells));
+  const auto cy = static_cast<std::size_t>(_mm_cvtsi128_si32(_mm_shuffle_epi32(cells, 1)));
+  return cy * stride_ + cx;
+}
+#else
+inline std::size_t UniformGrid::corner_cell(const FloatBox& b) const {
+  return cell_at(cell_x(b.min_x), cell_y(b.min_y));
+}
+#endif
+
 template <class F>
 void UniformGrid::query_grid(const FloatBox& box, F&& f) const {
   if (!box.valid()) return;
@@ -211,7 +246,7 @@ void UniformGrid::query_grid(const FloatBox& box, F&& f) const {
   const int cx0 = cell_x(lo_x), cx1 = cell_x(box.max_x);
   const int cy0 = cell_y(lo_y), cy1 = cell_y(box.max_y);
   for (int cy = cy0; cy <= cy1; ++cy) {
-    const std::size_t row = static_cast<std::size_t>(cy) * static_cast<std::size_t>(nx_);
+    const std::size_t row = cell_at(0, cy);
     // The cells cx0..cx1 of a row are contiguous in entries_.
     const std::uint32_t end = cell_start_[row + static_cast<std::size_t>(cx1) + 1];
     for (std::uint32_t e = cell_start_[row + static_cast<std::size_t>(cx0)]; e < end; ++e)
