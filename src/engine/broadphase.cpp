@@ -223,8 +223,9 @@ void UniformGrid::fill_cells(std::span<const FloatBox> boxes, std::size_t small)
 
 // Walks the entries (in cell order) rather than the cells: most cells hold
 // zero, one or two bodies at random, and a test per cell for emptiness was a
-// mispredicted branch every other cell (a million gas bodies: a third of the
-// grid's time). Each pair of neighbouring cells is visited once, from the
+// mispredicted branch about every other cell (walking the cells, a 200 000-body
+// gas spent 119 M instructions here over 5 steps; walking the entries, 61 M).
+// Each pair of neighbouring cells is visited once, from the
 // earlier one: an entry meets the later entries of its cell and those of its
 // right neighbour, then the three cells below it (below-left, below,
 // below-right); each run is contiguous in entries_, and the table's empty
