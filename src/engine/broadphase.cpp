@@ -67,10 +67,6 @@ FloatBox FloatBox::outward(double x0, double y0, double x1, double y1) {
   return {float_down(x0), float_down(y0), float_up(x1), float_up(y1)};
 }
 
-double FloatBox::extent() const {
-  return std::max(static_cast<double>(max_x) - min_x, static_cast<double>(max_y) - min_y);
-}
-
 // Cells for the small boxes' corners (min_x, min_y), at least as wide as the
 // widest small box.
 void UniformGrid::size_grid(const SmallBoxes& s) {
@@ -90,8 +86,6 @@ void UniformGrid::size_grid(const SmallBoxes& s) {
   }
   x0_ = lo_x, y0_ = lo_y, cell_ = cell, inv_cell_ = 1.0 / cell;
   nx_ = static_cast<int>(nx), ny_ = static_cast<int>(ny);
-  stride_ = static_cast<std::size_t>(nx_) + 1;
-  table_ = (static_cast<std::size_t>(ny_) + 1) * stride_;
   max_small_extent_ = max_extent;
 }
 
@@ -195,7 +189,7 @@ UniformGrid::SmallBoxes UniformGrid::classify(std::span<const FloatBox> boxes) {
 // leaves each cell's bodies in increasing index order.
 void UniformGrid::fill_cells(std::span<const FloatBox> boxes, std::size_t small) {
   const std::size_t n = boxes.size();
-  const std::size_t cells = table_;
+  const std::size_t cells = table_size();
   cell_start_.assign(cells + 1, 0);
   for (std::size_t i = 0; i < n; ++i) {
     if (!cell_of_[i]) {
@@ -233,7 +227,7 @@ void UniformGrid::fill_cells(std::span<const FloatBox> boxes, std::size_t small)
 void UniformGrid::pairs_in_grid() {
   const std::uint32_t* start = cell_start_.data();
   const Entry* entry = entries_.data();
-  const std::size_t below = stride_;
+  const std::size_t below = stride();
   const auto count = static_cast<std::uint32_t>(entries_.size());
   for (std::uint32_t a = 0; a < count; ++a) {
     const std::size_t c = entry[a].cell;
@@ -315,7 +309,7 @@ void UniformGrid::move(std::uint32_t i, const FloatBox& box) {
     return;
   }
   if (!box.valid()) return;
-  if (!(box.extent() <= max_small_extent_)) {
+  if (!(size_of(box).extent <= max_small_extent_)) {
     // Rounding to float can widen a box by an ulp at larger coordinates; the
     // grid's queries only look max_small_extent_ back, so such a box goes to
     // the large list instead (rare, and always correct).

@@ -51,7 +51,6 @@ struct FloatBox {
   // False when a bound is NaN (a body at NaN collides with nothing, as in
   // Collision::resolve). Bounds may be infinite for bodies beyond float range.
   bool valid() const { return min_x == min_x && min_y == min_y && max_x == max_x && max_y == max_y; }
-  double extent() const;  // the larger side
 
   // Closed test: boxes that merely touch count as overlapping (a superset of
   // the strict test of Rect::has_origin, so no contact is ever missed).
@@ -168,8 +167,13 @@ class UniformGrid {
   // The cell of a box's lower corner: cell_at(cell_x(min_x), cell_y(min_y)).
   std::size_t corner_cell(const FloatBox& b) const;
   std::size_t cell_at(int cx, int cy) const {
-    return static_cast<std::size_t>(cy) * stride_ + static_cast<std::size_t>(cx);
+    return static_cast<std::size_t>(cy) * stride() + static_cast<std::size_t>(cx);
   }
+  // The table has a row of stride() = nx_ + 1 cells per grid row, the last
+  // one always empty, and one more empty row below: the left, right and
+  // lower neighbours of every cell exist, so no walk tests for the edges.
+  std::size_t stride() const { return static_cast<std::size_t>(nx_) + 1; }
+  std::size_t table_size() const { return (static_cast<std::size_t>(ny_) + 1) * stride(); }
   // build()'s stages.
   struct SmallBoxes {
     double lo_x, lo_y, hi_x, hi_y;  // the bounds of their corners (min_x, min_y)
@@ -187,16 +191,11 @@ class UniformGrid {
   // Geometry.
   double x0_ = 0, y0_ = 0, cell_ = 1, inv_cell_ = 1;
   int nx_ = 1, ny_ = 1;
-  // The table has a row of stride_ = nx_ + 1 cells per grid row, the last
-  // one always empty, and one more empty row below: the left, right and
-  // lower neighbours of every cell exist, so no walk tests for the edges.
-  std::size_t stride_ = 2, table_ = 4;
   double max_small_extent_ = 0;  // every box in the grid is at most this wide
 
-  std::vector<std::uint32_t> cell_start_;  // entries of cell c: [cell_start_[c], cell_start_[c+1]), table_ + 1
+  std::vector<std::uint32_t> cell_start_;  // entries of cell c: [cell_start_[c], cell_start_[c+1]), table_size() + 1
   std::vector<Entry> entries_;             // the small boxes, sorted by cell
   std::vector<std::uint32_t> cell_of_;     // scratch: cell of each small body
-  std::vector<std::uint8_t> is_large_;     // per body
   std::vector<std::uint32_t> large_;       // indices of the large bodies
   std::vector<FloatBox> large_box_;            // their current boxes
   std::vector<std::int32_t> large_slot_;   // per body: position in large_, or -1
@@ -225,7 +224,7 @@ inline std::size_t UniformGrid::corner_cell(const FloatBox& b) const {
   const __m128i cells = _mm_cvttpd_epi32(_mm_min_pd(_mm_max_pd(t, _mm_setzero_pd()), last));
   const auto cx = static_cast<std::size_t>(_mm_cvtsi128_si32(cells));
   const auto cy = static_cast<std::size_t>(_mm_cvtsi128_si32(_mm_shuffle_epi32(cells, 1)));
-  return cy * stride_ + cx;
+  return cy * stride() + cx;
 }
 #else
 inline std::size_t UniformGrid::corner_cell(const FloatBox& b) const {
