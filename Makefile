@@ -26,14 +26,14 @@ ifeq ($(MAKELEVEL),0)
     MAKEFLAGS += -j$(NPROC) --output-sync=target --no-print-directory
     # A build from scratch (no $(BUILD)/obj yet) says how long it will take,
     # from CPU seconds measured on a fresh clone (docs/reliability.md, "Tests
-    # and their time"): make test, 620 (user and system: the libraries, the
-    # game, the test files, the examples, the installed copy's builds, the
-    # exercise trees, and the test binary, one process per suite on every
-    # core); make run, 340 (user and system).
+    # and their time"): make test, 564 (user and system, at a9d6efa: the
+    # libraries, the game, the test files, the examples, the installed copy's
+    # builds, the exercise trees, and the test binary, one process per suite
+    # on every core); make run, 340 (user and system).
     ifeq ($(wildcard $(BUILD)/obj),)
       GOALS := $(or $(MAKECMDGOALS),all)
       ifneq ($(filter test,$(GOALS)),)
-        $(info building from scratch and testing (about $(shell echo $$((620 / $(NPROC)))) s on $(NPROC) cores)...)
+        $(info building from scratch and testing (about $(shell echo $$((564 / $(NPROC)))) s on $(NPROC) cores)...)
       else ifneq ($(filter run,$(GOALS)),)
         $(info building the game from scratch (about $(shell echo $$((340 / $(NPROC)))) s on $(NPROC) cores)...)
       else ifneq ($(filter all $(BUILD)/tests,$(GOALS)),)
@@ -114,14 +114,34 @@ run: deps
 	./$(BUILD)/game $(if $(SCENE),--scene $(SCENE)) $(ARGS)
 
 # The test binary runs one process per suite on every core (tools/run_tests.py;
-# a TEST_ARGS other than exclusions runs it once, as given).
-# The exercise trees come first in the list: they need nothing of this
-# build, so their -O0 builds and runs share the jobs with it instead of
-# waiting for it (on 2 cores, ~30 s less from a fresh clone).
+# a TEST_ARGS other than exclusions runs it once, as given), as soon as it is
+# linked, beside what is left to build and check (test-run); what it prints
+# is kept in $(BUILD)/test-run.log and printed last, the final line "N
+# passed, N failed" last of all, and make test fails if it failed.
+# Two makes, for the order the jobs start in: make -j starts, in one pass
+# over the goals, every job whose prerequisites are done, and leaves a target
+# whose prerequisites are still building to its next pass, after every job
+# of the first has started (in one make, the exercise trees waited for their
+# few objects until the end of the build, and so did every object built on a
+# precompiled header). The first make builds what the rest waits for: the
+# precompiled headers, libphysics.a and the objects the exercise trees reuse
+# (check.sh --reuse); the second starts the trees at once (their builds and
+# runs then share the jobs with the rest of the build instead of following
+# it), then what needs only libphysics.a (examples, install-check, whose
+# serial steps such as cmake's configure fill the other core), the scene
+# files (the longest objects, on their .gch) before the test files, then
+# the test binary and its run, the game and exercise-check.
+TEST_RUN   := $(BUILD)/test-run
+TEST_FIRST  = $(TEST_PCH).gch $(JSON_PCH).gch $(CORE_OBJ) $(BUILD)/libphysics.a $(if $(TEST_ARGS),,$(EX_REUSE))
 test: deps
-	@$(MAKE) --no-print-directory $(if $(TEST_ARGS),,exercise-trees) layers links $(BUILD)/tests $(BUILD)/game check-lib \
-	  examples install-check $(if $(TEST_ARGS),,exercise-check)
-	@python3 tools/run_tests.py ./$(BUILD)/tests -- $(TEST_ARGS)
+	@rm -f $(TEST_RUN).rc
+	@$(MAKE) --no-print-directory test-first
+	@$(MAKE) --no-print-directory $(if $(TEST_ARGS),,exercise-trees) layers links check-lib examples install-check \
+	  test-scene-obj test-run $(BUILD)/game $(if $(TEST_ARGS),,exercise-check); st=$$?; \
+	if [ -f $(TEST_RUN).rc ]; then cat $(TEST_RUN).log; [ $$st != 0 ] || st=$$(cat $(TEST_RUN).rc); fi; exit $$st
+.PHONY: test-first test-scene-obj test-run
+test-run: $(BUILD)/tests
+	@python3 tools/run_tests.py ./$(BUILD)/tests -- $(TEST_ARGS) > $(TEST_RUN).log 2>&1; echo $$? > $(TEST_RUN).rc
 
 # Includes under src/ and include/ go one way, one level per folder: include/physics < course/utils < engine
 # < course/systems < course/entities < course < api < reference < scene < input < games < app; no folder cycle,
@@ -167,16 +187,42 @@ $(BUILD)/obj/tools/%.o: private CXXFLAGS += -Itools
 # (-ffp-contract=off; `make determinism` checks -O0 against -O2, and an
 # OPT=-O0 build keeps its test files at -O0 too, so that no inline function
 # the library calls comes from a more optimised test object).
-TEST_FLAGS := -Itools -g1 $(if $(filter -O0,$(OPT)),,-O1)
-# Boost.Test's header, precompiled once with the test files' own flags and
-# included first in each of them: each spent ~1 s of its 3-14 s parsing it.
+TEST_FLAGS := -Itools -Itests -g1 $(if $(filter -O0,$(OPT)),,-O1)
+# Precompiled headers (g++ .gch), each built once with the flags of the
+# objects that include it first (-include; -Winvalid-pch, an error with
+# -Werror, should they ever disagree). Each .gch has its .d file, listing the
+# headers it holds (the objects' own .d files list only the others), so a
+# change to one of them rebuilds it, and it its objects:
+#  - tests/pch.hpp: Boost.Test and helpers.hpp (so course/game.hpp and the
+#    engine's headers), for every test file but test_main.cpp, which includes
+#    nothing of the project. Boost.Test alone saved ~1 s of each file's 3-14
+#    s; helpers.hpp with it ~0.7 s more (185 -> 153 s of CPU for the 39 files,
+#    the .gch 7 s instead of 4);
+#  - tools/pch/scene_json.hpp: scene/json_reader.hpp (nlohmann/json as it
+#    configures it, and game.hpp through scene.hpp), for the scene files that
+#    include it (86 -> 67 s of CPU for the 8 files, the .gch 9 s).
+# Not for the other objects of the libraries: course/game.hpp precompiled
+# saved their 20 files 16 s of CPU for a .gch of 7, and changed what -O2
+# inlines enough for a false -Warray-bounds (GCC 12, std::string's
+# operator+) to stop src/app/input_log.cpp; never for the engine's.
 TEST_PCH := $(BUILD)/obj/pch/test_pch.hpp
+JSON_PCH := $(BUILD)/obj/pch/scene_json.hpp
+TEST_PCH_OBJ := $(filter-out $(BUILD)/obj/tests/test_main.o,$(filter $(BUILD)/obj/tests/%,$(TEST_OBJ)))
+JSON_PCH_OBJ := $(patsubst %.cpp,$(BUILD)/obj/%.o,\
+  $(shell grep -l -E '^\#include "scene/(json_reader|json_parse|keys|map)\.hpp"' $(SCENE_SRC)))
 $(TEST_PCH).gch: tests/pch.hpp
 	@mkdir -p $(@D)
 	cp $< $(TEST_PCH)
 	$(CXX) $(CXXFLAGS) $(TEST_FLAGS) -x c++-header $(TEST_PCH) -o $@
-$(filter $(BUILD)/obj/tests/%,$(TEST_OBJ)): $(TEST_PCH).gch
-$(BUILD)/obj/tests/%.o: private CXXFLAGS += $(TEST_FLAGS) -include $(TEST_PCH) -Winvalid-pch
+$(JSON_PCH).gch: tools/pch/scene_json.hpp
+	@mkdir -p $(@D)
+	cp $< $(JSON_PCH)
+	$(CXX) $(CXXFLAGS) -x c++-header $(JSON_PCH) -o $@
+$(TEST_PCH_OBJ): $(TEST_PCH).gch
+$(JSON_PCH_OBJ): $(JSON_PCH).gch
+$(BUILD)/obj/tests/%.o: private CXXFLAGS += $(TEST_FLAGS)
+$(TEST_PCH_OBJ): private CXXFLAGS += -include $(TEST_PCH) -Winvalid-pch
+$(JSON_PCH_OBJ): private CXXFLAGS += -include $(JSON_PCH) -Winvalid-pch
 
 # ---- numerics (docs/numerics.md) ----
 $(BUILD)/stability: $(BUILD)/obj/tools/stability_main.o $(NUM_OBJ) $(REF_OBJ) $(LIBS)
@@ -393,8 +439,9 @@ clean:
 # `make exercise-test Q=6`: builds exercise/ in exercise/build, runs the
 # suites q6_* (every question's without Q). STRICT=1: fail with the tests.
 # `make exercise-check`: the stubbed tree fails every question's suites, the
-# answered one passes them, in the sheet's order (-O0 builds in their own
-# tree, ~32 s of CPU from scratch: `exercise-trees`), then the project's own
+# answered one passes them, in the sheet's order (-O0 builds of the course
+# files in their own tree, on this build's objects of the rest, ~30 s of CPU
+# with their runs: `exercise-trees`), then the project's own
 # q suites pass. `make test` runs it (the trees beside its own build) and the
 # parse-level check of the markers (exercise-lint).
 # `make exercise-run Q=4`: your answer in the window (the sheet: "Constater
@@ -451,8 +498,23 @@ exercise-test:
 exercise-check: exercise-trees $(BUILD)/tests $(BUILD)/game
 	@MAKE="$(MAKE)" tools/exercise/check.sh --main ./$(BUILD)/tests build/exercise-check
 
-exercise-trees:
-	MAKE="$(MAKE)" EXERCISE_OPT=-O0 tools/exercise/check.sh --trees build/exercise-check
+# The trees reuse this build's objects of the files they hold unchanged
+# (check.sh --reuse: the engine's, app/headless.cpp's and the per-question
+# test files', those of tools/exercise/make_exercise.py's TESTS), and compile
+# only their course files; not under the sanitizers (their objects need
+# their link flags).
+EX_REUSE := $(if $(filter 1,$(SANITIZE)),,$(filter $(BUILD)/obj/src/engine/%,$(CORE_OBJ)) $(BUILD)/obj/src/app/headless.o \
+  $(patsubst %,$(BUILD)/obj/tests/%.o,test_main test_walls test_components test_move_forces test_rect test_collision test_game))
+exercise-trees: $(EX_REUSE)
+	@echo "tools/exercise/check.sh --trees build/exercise-check$(if $(EX_REUSE), --reuse $(BUILD)/obj (its $(words $^) objects))"
+	@MAKE="$(MAKE)" EXERCISE_OPT=-O0 tools/exercise/check.sh --trees build/exercise-check $(if $(EX_REUSE),--reuse $(BUILD)/obj $^)
+
+# (make test's first make: TEST_FIRST, defined with the test target; then
+# the scene files' objects, early in its second.)
+test-first: $(TEST_FIRST)
+	@:
+test-scene-obj: $(SCENE_OBJ)
+	@:
 
 exercise-lint:
 	@python3 tools/exercise/make_exercise.py --check

@@ -14,14 +14,28 @@
 #     the stubbed tree, the questions' built-in scenes (built by the course's
 #     functions, --course, as exercise-run does) end otherwise than in the
 #     project's game; on the answered tree, bit for bit as in it.
-# Steps 1-3 need nothing of the project's build, so `make test` runs them
-# beside it (`--trees`); steps 4-5 wait for the test binary and the game
-# (`--main`; the game is the one beside the test binary).
-# usage: [EXERCISE_OPT=-O0] check.sh --trees DIR
+# Steps 1-3 need nothing of the project's build but what --reuse names, so
+# `make test` runs them beside it (`--trees`); steps 4-5 wait for the test
+# binary and the game (`--main`; the game is the one beside the test binary).
+# --reuse OBJDIR OBJECT...: objects of the project's build (OBJDIR/x/y.o, of
+# x/y.cpp) that the tree's build may take instead of compiling its own copy
+# of x/y.cpp: each is copied into the tree's build/obj/ (so its make finds
+# it up to date) only where the tree's x/y.cpp is the project's, byte for
+# byte (the engine's files and the tests, never a course file: those hold
+# the answers). Those objects keep the project's flags (the engine's -O2,
+# the tests' -O1), the tree's own are -O0: the same bits at any -O. Every
+# course file is still compiled in the tree by its own Makefile, with
+# WERROR=1 then without, and the tree's test binary linked there.
+# usage: [EXERCISE_OPT=-O0] check.sh --trees DIR [--reuse OBJDIR OBJECT...]
 #        check.sh --main MAIN_TESTS_BINARY DIR
 set -eu
 what=$1
-if [ "$what" = --main ]; then main_tests=$2; dir=$3; else dir=$2; fi
+reuse_dir=""
+if [ "$what" = --main ]; then main_tests=$2; dir=$3; else
+  dir=$2; shift 2
+  if [ "${1:-}" = --reuse ]; then reuse_dir=${2%/}; shift 2; fi
+  reuse="$*"
+fi
 gen=tools/exercise/make_exercise.py
 MAKE=${MAKE:-make}
 fail=0
@@ -30,10 +44,26 @@ log=$dir.log
 # prints the per-suite lines ("  ok   q6_mdiff: 2 passed" / "  FAIL ...").
 run() {
   python3 "$gen" --out "$dir" --force --keep "$1" >/dev/null
+  seed
   $MAKE --no-print-directory -s -C "$dir" build/tests WERROR=1 ${EXERCISE_OPT:+OPT=$EXERCISE_OPT}
   # A stub must never hang a test: bounded.
   (cd "$dir" && BOOST_TEST_COLOR_OUTPUT=no timeout 300 ./build/tests) >"$log" 2>&1 || true
   grep -E '^  (ok  |FAIL) q[0-9]+_' "$log" || { echo "exercise-check: no suite ran (see $log)" >&2; tail -5 "$log" >&2; exit 1; }
+}
+# Copies the --reuse objects whose source the tree holds unchanged, when
+# newer than the tree's own object (or it has none).
+seed() {
+  [ -n "$reuse_dir" ] || return 0
+  for o in $reuse; do
+    rel=${o#"$reuse_dir"/}
+    src=${rel%.o}.cpp
+    [ -f "$dir/$src" ] && cmp -s "$dir/$src" "$src" || continue
+    to=$dir/build/obj/$rel
+    if [ ! -e "$to" ] || [ "$o" -nt "$to" ]; then
+      mkdir -p "$(dirname "$to")"
+      cp "$o" "$to"
+    fi
+  done
 }
 # expect LINES q STATE: every suite of question q is in STATE (ok or FAIL), and there is one.
 expect() {
