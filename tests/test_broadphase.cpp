@@ -189,6 +189,30 @@ BOOST_AUTO_TEST_CASE(the_grid_finds_exactly_the_overlapping_pairs_in_loop_order)
   }
 }
 
+// The grid tests an entry against four others at a time: boxes that only
+// touch (closed test), on both sides of zero (-0 and +0 corners), and runs of
+// every length from 0 to past 8 entries (stacks of up to 9 boxes on one
+// spot) must give the pairs of the all-pairs loop, no more and no fewer.
+BOOST_AUTO_TEST_CASE(touching_boxes_and_crowded_cells_find_the_same_pairs_as_all_pairs) {
+  Random rng(5);
+  std::vector<FloatBox> boxes;
+  std::vector<std::uint8_t> fixed;
+  for (int y = -6; y <= 6; ++y)
+    for (int x = -6; x <= 6; ++x) {
+      const int stack = rng.uniform_int(0, 9);
+      for (int k = 0; k < stack; ++k) {
+        const float x0 = x == 0 && k % 2 ? -0.0f : static_cast<float>(x), y0 = y == 0 && k % 2 ? -0.0f : static_cast<float>(y);
+        boxes.push_back(FloatBox{x0, y0, x0 + 1.0f, y0 + 1.0f});  // touches its 8 neighbours' boxes
+        fixed.push_back(rng.uniform(0, 1) < 0.1);
+      }
+    }
+  UniformGrid grid;
+  grid.build(boxes, fixed);
+  const auto expected = brute_pairs(boxes, fixed);
+  BOOST_TEST(grid.pairs().size() == expected.size());
+  BOOST_TEST(grid.pairs() == expected);
+}
+
 // The large boxes' own pairs come from a sweep over them sorted by min_x as
 // integer keys: negative, zero (both signs) and positive corners, ties
 // included, must give the same pairs as testing every pair.

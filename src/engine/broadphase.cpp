@@ -201,7 +201,8 @@ void UniformGrid::fill_cells(std::span<const FloatBox> boxes, std::size_t small)
     ++cell_start_[c];
   }
   for (std::size_t c = 1; c <= cells; ++c) cell_start_[c] += cell_start_[c - 1];
-  entries_.resize(small);
+  // Padding after the last entry: pairs_in_run reads four entries at a time.
+  entries_.resize(small + entry_padding);
   for (std::size_t i = n; i-- > 0;) {
     const std::uint32_t c = cell_of_[i];
     if (c == std::numeric_limits<std::uint32_t>::max()) continue;
@@ -228,18 +229,47 @@ void UniformGrid::pairs_in_grid() {
   const std::uint32_t* start = cell_start_.data();
   const Entry* entry = entries_.data();
   const std::size_t below = stride();
-  const auto count = static_cast<std::uint32_t>(entries_.size());
+  const std::uint32_t count = start[table_size()];
   for (std::uint32_t a = 0; a < count; ++a) {
     const std::size_t c = entry[a].cell;
     const std::uint32_t same_end = start[c + 2];  // this cell and the right one
     const std::uint32_t below_s = start[c + below - 1], below_e = start[c + below + 2];
-    const FloatBox box = entry[a].box;
-    for (std::uint32_t b = a + 1; b < same_end; ++b)
-      if (overlap(box, entry[b].box)) emit(entry[a].index, entry[b].index);
-    for (std::uint32_t b = below_s; b < below_e; ++b)
-      if (overlap(box, entry[b].box)) emit(entry[a].index, entry[b].index);
+    const RunTest test(entry[a].box);
+    pairs_in_run(test, entry, a, a + 1, same_end);
+    pairs_in_run(test, entry, a, below_s, below_e);
   }
 }
+
+#if defined(__SSE2__)
+// Entry a against the entries [b, e), four at a time (RunTest::lanes). A run
+// holds 0 to 4 entries at random (1.5 on average for the three cells below,
+// in a gas): looping over its entries one by one, the loop's end and the
+// overlap test were 1.7 mispredicted branches an entry, 95 % of the step's
+// (callgrind --branch-sim, a 200 000-body gas). Here the first group is
+// always tested (the entries past the last are padding), so the only
+// branches left are on a run of more than four and on a hit, both rare; the
+// hits go to a function of their own, so that the loop keeps its vectors in
+// registers instead of saving them around a call.
+[[gnu::always_inline]] inline void UniformGrid::pairs_in_run(const RunTest& test, const Entry* entry, std::uint32_t a,
+                                                             std::uint32_t b, std::uint32_t e) {
+  do {
+    const std::uint32_t hits = test.lanes(entry + b, e - b);
+    if (hits) [[unlikely]]
+      emit_lanes(entry[a].index, entry + b, hits);
+    b += 4;
+  } while (b < e);
+}
+
+void UniformGrid::emit_lanes(std::uint32_t a, const Entry* from, std::uint32_t hits) {
+  for (; hits; hits &= hits - 1) emit(a, from[std::countr_zero(hits)].index);
+}
+#else
+[[gnu::always_inline]] inline void UniformGrid::pairs_in_run(const RunTest& test, const Entry* entry, std::uint32_t a,
+                                                             std::uint32_t b, std::uint32_t e) {
+  for (; b < e; ++b)
+    if (overlap(test.box, entry[b].box)) emit(entry[a].index, entry[b].index);
+}
+#endif
 
 // Large bodies against the grid, then against each other by a sweep on x:
 // "large" is relative to the mean, so when resting bodies make most of a
