@@ -242,14 +242,15 @@ void UniformGrid::pairs_in_grid() {
 
 #if defined(__SSE2__)
 // Entry a against the entries [b, e), four at a time (RunTest::lanes). A run
-// holds 0 to 4 entries at random (1.5 on average for the three cells below,
-// in a gas): looping over its entries one by one, the loop's end and the
-// overlap test were 1.7 mispredicted branches an entry, 95 % of the step's
-// (callgrind --branch-sim, a 200 000-body gas). Here the first group is
-// always tested (the entries past the last are padding), so the only
-// branches left are on a run of more than four and on a hit, both rare; the
-// hits go to a function of their own, so that the loop keeps its vectors in
-// registers instead of saving them around a call.
+// usually holds 0 to 4 entries, at random (1.5 on average for the three
+// cells below, in a gas): looping over its entries one by one, the loop's
+// end and the overlap test were 1.7 mispredicted branches an entry, 95 % of
+// the step's (callgrind --branch-sim, a 200 000-body gas). Here the first
+// group is always tested (the entries past the last are padding), so the
+// only branches left are on a run of more than four and on a hit, both rare.
+// The hit is marked unlikely: with emit's call on the loop's path, GCC kept
+// the box's vectors on the stack and reloaded them every group; now it saves
+// them only around the call.
 [[gnu::always_inline]] inline void UniformGrid::pairs_in_run(const RunTest& test, const Entry* entry, std::uint32_t a,
                                                              std::uint32_t b, std::uint32_t e) {
   do {
@@ -260,8 +261,8 @@ void UniformGrid::pairs_in_grid() {
   } while (b < e);
 }
 
-void UniformGrid::emit_lanes(std::uint32_t a, const Entry* from, std::uint32_t hits) {
-  for (; hits; hits &= hits - 1) emit(a, from[std::countr_zero(hits)].index);
+void UniformGrid::emit_lanes(std::uint32_t body, const Entry* from, std::uint32_t hits) {
+  for (; hits; hits &= hits - 1) emit(body, from[std::countr_zero(hits)].index);
 }
 #else
 [[gnu::always_inline]] inline void UniformGrid::pairs_in_run(const RunTest& test, const Entry* entry, std::uint32_t a,

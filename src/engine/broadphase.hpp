@@ -186,7 +186,7 @@ class UniformGrid {
   void pairs_in_grid();
   struct RunTest;
   void pairs_in_run(const RunTest& test, const Entry* entry, std::uint32_t a, std::uint32_t b, std::uint32_t e);
-  void emit_lanes(std::uint32_t a, const Entry* from, std::uint32_t hits);
+  void emit_lanes(std::uint32_t body, const Entry* from, std::uint32_t hits);  // body with from[k], k in hits
   static constexpr std::size_t entry_padding = 4;  // entries read past the last (RunTest::lanes)
   void pairs_of_large();
   void emit(std::uint32_t a, std::uint32_t b);
@@ -230,7 +230,9 @@ struct UniformGrid::RunTest {
   __m128 bound;  // (a.max_x, a.max_y, -a.min_x, -a.min_y)
   explicit RunTest(const FloatBox& a) : bound(_mm_set_ps(-a.min_y, -a.min_x, a.max_y, a.max_x)) {}
   // Bit k set when from[k] overlaps the box and k < live (the entries past
-  // the first `live` are read, not reported; live < 2^31). Branch-free.
+  // the first `live` are read, not reported). Branch-free. live is compared
+  // as a signed integer: it is at most the grid's entries, < 2^31 (24 bytes
+  // each: 48 GB).
   std::uint32_t lanes(const Entry* from, std::uint32_t live) const {
     const auto test = [&](int k) {
       return _mm_castps_si128(_mm_cmple_ps(_mm_xor_ps(_mm_loadu_ps(&from[k].box.min_x), flip), bound));
