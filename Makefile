@@ -75,6 +75,27 @@ GAMES_SRC  := $(wildcard src/games/*.cpp)
 APP_SRC    := $(filter-out src/app/main.cpp src/app/window.cpp,$(wildcard src/app/*.cpp))
 GAME_SRC   := src/app/main.cpp src/app/window.cpp
 TEST_SRC   := $(wildcard tests/*.cpp)
+# The test files are compiled a group at a time, each group one translation
+# unit ($(BUILD)/obj/tests/unity_N.cpp, generated, which #includes them), so
+# that what they share (the headers past the precompiled one, Boost.Test's
+# templates, the inline functions they call) is compiled once a group rather
+# than once a file. Each file wraps its own names in a namespace of its name
+# (its helpers and using-directives stay its own); the PNG decoder is
+# tests/png_decode.hpp, once a unit. The groups gather files that include the
+# same headers (the command line and the app, the scenes and the engine, the
+# numerics), balanced by compile time so that the cores stay busy. A test
+# file in no group is compiled on its own, as are test_main.cpp (no
+# precompiled header) and the per-question files that the exercise trees
+# reuse by name (EX_REUSE).
+TEST_UNITY   := 1 2 3 4
+TEST_UNITY_1 := test_cli test_style test_keys test_run_tests test_hostile test_layers
+TEST_UNITY_2 := test_testbed test_replay test_games test_save test_maps
+TEST_UNITY_3 := test_scene test_scene_json test_fuzz_regressions test_api test_game_physics test_query test_geometry \
+                test_course_world
+TEST_UNITY_4 := test_auto test_ccd test_family test_seams test_stability test_tiles test_numerics test_integrator \
+                test_reference test_determinism test_soak test_mover test_threads test_broadphase
+TEST_UNITY_SRC = $(filter $(TEST_SRC),$(TEST_UNITY_$(1):%=tests/%.cpp))
+TEST_GROUPED := $(foreach n,$(TEST_UNITY),$(call TEST_UNITY_SRC,$(n)))
 APP_LIBS := -lboost_program_options
 # The exact event-driven reference (not part of the engine): tests and report tools.
 REF_SRC  := src/reference/event_sim.cpp src/reference/closed_forms.cpp
@@ -86,7 +107,8 @@ APP_OBJ  := $(APP_SRC:%.cpp=$(BUILD)/obj/%.o)
 # In link order: each library uses only those after it.
 LIBS := $(BUILD)/libphysics_app.a $(BUILD)/libphysics_games.a $(BUILD)/libphysics_scene.a $(BUILD)/libphysics.a
 GAME_OBJ := $(GAME_SRC:%.cpp=$(BUILD)/obj/%.o)
-TEST_OBJ := $(TEST_SRC:%.cpp=$(BUILD)/obj/%.o)
+TEST_UNITY_OBJ := $(TEST_UNITY:%=$(BUILD)/obj/tests/unity_%.o)
+TEST_OBJ := $(patsubst %.cpp,$(BUILD)/obj/%.o,$(filter-out $(TEST_GROUPED),$(TEST_SRC))) $(TEST_UNITY_OBJ)
 REF_OBJ  := $(REF_SRC:%.cpp=$(BUILD)/obj/%.o)
 # Scenes, modes and measures of `make report` / `make stability`, shared with their tests.
 NUM_SRC  := tools/numerics/scenes.cpp tools/numerics/stability.cpp tools/numerics/report.cpp tools/numerics/friction.cpp \
@@ -227,6 +249,17 @@ $(JSON_PCH).gch: tools/pch/scene_json.hpp
 $(TEST_PCH_OBJ): $(TEST_PCH).gch
 $(JSON_PCH_OBJ): $(JSON_PCH).gch
 $(BUILD)/obj/tests/%.o: private CXXFLAGS += $(TEST_FLAGS)
+
+# A group's source: one #include line a member (by its path from the top,
+# through -iquote ., so that each file's __FILE__ is as when compiled alone);
+# rewritten only when the group changes. Its object depends on its members
+# (and, through its .d file, on their headers).
+$(TEST_UNITY_OBJ:.o=.cpp): $(BUILD)/obj/tests/unity_%.cpp: Makefile
+	@mkdir -p $(@D)
+	@printf '#include "%s"\n' $(call TEST_UNITY_SRC,$*) > $@.new; cmp -s $@.new $@ && rm $@.new || mv $@.new $@
+$(foreach n,$(TEST_UNITY),$(eval $(BUILD)/obj/tests/unity_$(n).o: $(call TEST_UNITY_SRC,$(n))))
+$(TEST_UNITY_OBJ): $(BUILD)/obj/tests/%.o: $(BUILD)/obj/tests/%.cpp
+	$(CXX) $(CXXFLAGS) -iquote . -c $< -o $@
 $(TEST_PCH_OBJ): private CXXFLAGS += -include $(TEST_PCH) -Winvalid-pch
 $(JSON_PCH_OBJ): private CXXFLAGS += -include $(JSON_PCH) -Winvalid-pch
 

@@ -29,8 +29,6 @@ inline Ran cli(const std::vector<std::string>& args) {
   return {code, out.str(), err.str()};
 }
 
-inline bool has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
-
 // Bad input: exit code 2 and exactly one line on stderr, "game: ...", containing `part`.
 inline void expect_bad(const std::vector<std::string>& args, const std::string& part) {
   const Ran r = cli(args);

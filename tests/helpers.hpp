@@ -4,7 +4,8 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
-
+#include <cstring>
+#include <string>
 #include <vector>
 
 #include "course/game.hpp"
@@ -16,6 +17,13 @@ inline constexpr Color grey{128, 128, 128, 255};
 
 // A world with only the physics systems (no Draw), as a headless run has.
 inline World physics_world(Params p = {}) { return World(SystemSet{false, true, true, true}, p); }
+
+// The same bits (-0 is not +0; a NaN is itself), not only the same value.
+inline bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+inline bool same_bits(Vector a, Vector b) { return same_bits(a.x, b.x) && same_bits(a.y, b.y); }
+
+// Whether `part` occurs in the text `s` (a message, an output).
+inline bool has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
 
 inline bool overlaps(const Components& c, EntityId a, EntityId b) {
   const auto [p, r] = Rect::mdiff(c.position[a], c.box[a], c.position[b], c.box[b]);

@@ -19,6 +19,10 @@ std::ostream& operator<<(std::ostream& o, BodyId b) {
 std::ostream& operator<<(std::ostream& o, Filter f) { return o << "filter(" << f.category << ", " << f.mask << ")"; }
 }  // namespace physics
 
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_api {
+
 namespace {
 
 using namespace physics;
@@ -52,7 +56,7 @@ struct Falling {
   }
 };
 
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+using physics::test::same_bits;
 
 // The message of the Error that f throws, or "" if it throws none.
 template <class F>
@@ -65,7 +69,7 @@ std::string error_of(F&& f) {
   return "";
 }
 
-bool has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+using physics::test::has;
 
 }  // namespace
 
@@ -366,3 +370,5 @@ BOOST_AUTO_TEST_CASE(a_view_names_a_world_made_elsewhere_and_goes_stale_with_its
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace test_api

@@ -17,6 +17,10 @@
 #include "numerics/scenes.hpp"
 #include "numerics/stability.hpp"
 
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_auto {
+
 using namespace physics;
 using namespace physics::numerics;
 
@@ -353,3 +357,5 @@ BOOST_AUTO_TEST_CASE(a_block_bouncing_late_in_a_substep_is_not_sent_through_the_
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace test_auto

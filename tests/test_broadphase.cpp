@@ -11,6 +11,10 @@
 #include "engine/broadphase.hpp"
 #include "course/utils/random.hpp"
 
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_broadphase {
+
 using namespace physics;
 
 namespace {
@@ -25,8 +29,7 @@ std::vector<PairKey> brute_pairs(const std::vector<FloatBox>& boxes, const std::
   return out;
 }
 
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
-bool same_bits(Vector a, Vector b) { return same_bits(a.x, b.x) && same_bits(a.y, b.y); }
+using physics::test::same_bits;
 
 // A random scene of `bodies` blocks in a walled region; `spread` < 1 packs
 // them into the top-left part of it so they start overlapping.
@@ -417,3 +420,5 @@ BOOST_AUTO_TEST_CASE(changes_between_passes_are_seen) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace test_broadphase

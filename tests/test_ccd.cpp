@@ -8,6 +8,10 @@
 #include "app/headless.hpp"
 #include "numerics/scenes.hpp"
 
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_ccd {
+
 using namespace physics;
 using namespace physics::numerics;
 
@@ -197,3 +201,5 @@ BOOST_AUTO_TEST_CASE(a_squeeze_out_of_budget_keeps_the_order_and_the_energy) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace test_ccd

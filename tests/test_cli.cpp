@@ -21,11 +21,11 @@
 #include "scene/keys.hpp"
 #include "scene/scene_json.hpp"
 
-// The PNG decoder, compiled here and private to this file.
-#define STB_IMAGE_STATIC
-#define STB_IMAGE_IMPLEMENTATION
-#define STBI_ONLY_PNG
-#include <stb/stb_image.h>
+#include "png_decode.hpp"
+
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_cli {
 
 using namespace physics;
 using namespace physics::test;
@@ -757,3 +757,5 @@ BOOST_AUTO_TEST_CASE(the_note_says_what_happened_and_names_the_options_not_on) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace test_cli

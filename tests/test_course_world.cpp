@@ -6,6 +6,10 @@
 #include "helpers.hpp"
 #include "scene/builtin_scenes.hpp"
 
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_course_world {
+
 using namespace physics;
 
 namespace {
@@ -81,3 +85,5 @@ BOOST_AUTO_TEST_CASE(another_scene_is_built_from_its_description) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace test_course_world

@@ -5,6 +5,10 @@
 #include "determinism_world.hpp"
 #include "helpers.hpp"
 
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_determinism {
+
 using namespace physics;
 using namespace physics::determinism;
 
@@ -53,3 +57,5 @@ BOOST_AUTO_TEST_CASE(two_runs_in_one_process_are_identical) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace test_determinism

@@ -15,6 +15,10 @@
 #include "helpers.hpp"
 #include "numerics/family.hpp"
 
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_family {
+
 using namespace physics::numerics;
 namespace bdata = boost::unit_test::data;
 
@@ -245,3 +249,5 @@ BOOST_AUTO_TEST_CASE(a_hop_that_gravity_turns_within_a_substep_is_an_impact_with
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace test_family

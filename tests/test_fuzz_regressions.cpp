@@ -12,6 +12,10 @@
 #include "scene/map.hpp"
 #include "scene/scene_json.hpp"
 
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_fuzz_regressions {
+
 using namespace physics;
 namespace fs = std::filesystem;
 
@@ -137,3 +141,5 @@ BOOST_AUTO_TEST_CASE(sample_maps_with_hostile_values_load_or_are_refused_in_one_
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace test_fuzz_regressions

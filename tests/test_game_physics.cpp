@@ -13,6 +13,10 @@
 #include "helpers.hpp"
 #include "numerics/friction.hpp"
 
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_game_physics {
+
 using namespace physics;
 
 namespace {
@@ -626,3 +630,5 @@ BOOST_AUTO_TEST_CASE(a_sensor_is_drawn_as_its_outline_and_a_platform_with_a_thic
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace test_game_physics

@@ -13,6 +13,17 @@
 #include "games/targets.hpp"
 #include "cli_helpers.hpp"
 
+// For Boost.Test's messages (in namespace physics, for lookup by argument).
+namespace physics {
+std::ostream& operator<<(std::ostream& o, Level::Outcome x) {
+  return o << (x == Level::Outcome::won ? "won" : x == Level::Outcome::lost ? "lost" : "playing");
+}
+}  // namespace physics
+
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_games {
+
 using namespace physics;
 using namespace physics::test;
 
@@ -83,12 +94,6 @@ std::string error_of(const std::string& text) {
 }
 
 }  // namespace
-
-namespace physics {
-std::ostream& operator<<(std::ostream& o, Level::Outcome x) {
-  return o << (x == Level::Outcome::won ? "won" : x == Level::Outcome::lost ? "lost" : "playing");
-}
-}  // namespace physics
 
 BOOST_AUTO_TEST_SUITE(games)
 
@@ -358,3 +363,5 @@ BOOST_AUTO_TEST_CASE(the_committed_targets_replay_wins_level_one_with_two_shots)
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace test_games

@@ -18,6 +18,10 @@
 #include "scene/builtin_scenes.hpp"
 #include "scene/scene.hpp"
 
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_geometry {
+
 using namespace physics;
 
 namespace {
@@ -267,3 +271,5 @@ BOOST_AUTO_TEST_CASE(the_engine_step_and_the_course_step_agree_on_every_built_in
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace test_geometry

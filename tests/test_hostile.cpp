@@ -20,6 +20,10 @@
 #include "engine/limits.hpp"
 #include "scene/scene_json.hpp"
 
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_hostile {
+
 using namespace physics;
 using namespace physics::test;
 
@@ -242,3 +246,5 @@ BOOST_AUTO_TEST_CASE(spawning_is_exact_and_linear) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace test_hostile

@@ -7,6 +7,10 @@
 #include "course/entities/block.hpp"
 #include "helpers.hpp"
 
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_integrator {
+
 using namespace physics;
 using namespace physics::test;
 
@@ -151,3 +155,5 @@ BOOST_AUTO_TEST_CASE(the_names_are_course_and_exact) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace test_integrator

@@ -11,6 +11,10 @@
 #include "scene/scene_json.hpp"
 #include "cli_helpers.hpp"
 
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_keys {
+
 using namespace physics;
 using namespace physics::test;
 
@@ -170,3 +174,5 @@ BOOST_AUTO_TEST_CASE(the_rows_check_their_keys) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace test_keys

@@ -13,6 +13,10 @@
 
 #include "helpers.hpp"
 
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_layers {
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -52,7 +56,7 @@ Checked check(const std::vector<std::pair<std::string, std::string>>& files, con
   return c;
 }
 
-bool has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+using physics::test::has;
 
 }  // namespace
 
@@ -185,3 +189,5 @@ BOOST_AUTO_TEST_CASE(the_real_tree_passes) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace test_layers

@@ -13,6 +13,10 @@
 #include "cli_helpers.hpp"
 #include "scene/scene_json.hpp"
 
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_maps {
+
 using namespace physics;
 using namespace physics::test;
 using nlohmann::json;
@@ -283,3 +287,5 @@ BOOST_AUTO_TEST_CASE(ldtk_projects_it_does_not_take_are_one_line_errors) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace test_maps

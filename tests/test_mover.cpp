@@ -11,6 +11,10 @@
 #include "physics/mover.hpp"
 #include "physics/physics.hpp"
 
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_mover {
+
 using namespace physics;
 
 namespace {
@@ -362,3 +366,5 @@ BOOST_AUTO_TEST_CASE(bad_input_is_an_error) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace test_mover

@@ -12,6 +12,10 @@
 #include "numerics/scenes.hpp"
 #include "course/utils/random.hpp"
 
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_numerics {
+
 using namespace physics;
 using namespace physics::numerics;
 
@@ -292,3 +296,5 @@ BOOST_AUTO_TEST_CASE(the_exact_integrator_is_exact_in_the_reports_free_flight) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace test_numerics

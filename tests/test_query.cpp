@@ -15,12 +15,15 @@
 #include "helpers.hpp"
 #include "course/utils/random.hpp"
 
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_query {
+
 using namespace physics;
 
 namespace {
 
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
-bool same_bits(Vector a, Vector b) { return same_bits(a.x, b.x) && same_bits(a.y, b.y); }
+using physics::test::same_bits;
 
 bool same(const std::optional<RayHit>& a, const std::optional<RayHit>& b) {
   if (a.has_value() != b.has_value()) return false;
@@ -300,3 +303,5 @@ BOOST_AUTO_TEST_CASE(odd_worlds_answer_as_testing_every_body) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace test_query

@@ -4,8 +4,15 @@
 #include "reference/event_sim.hpp"
 #include "course/utils/random.hpp"
 
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_reference {
+
 using namespace physics;
 using namespace physics::reference;
+// The reference's bodies (the scenes' physics::Body, which another test file
+// brings in, is not this).
+using physics::reference::Body;
 
 namespace {
 
@@ -142,3 +149,5 @@ BOOST_AUTO_TEST_CASE(a_stack_rests_and_a_dropped_box_settles_on_it) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace test_reference

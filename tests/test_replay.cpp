@@ -18,6 +18,10 @@
 #include "app/testbed.hpp"
 #include "cli_helpers.hpp"
 
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_replay {
+
 using namespace physics;
 using namespace physics::test;
 namespace fs = std::filesystem;
@@ -413,3 +417,5 @@ BOOST_AUTO_TEST_CASE(help_documents_record_and_replay) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace test_replay

@@ -10,6 +10,10 @@
 
 #include "cli_helpers.hpp"
 
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_run_tests {
+
 namespace {
 
 using namespace physics::test;
@@ -88,3 +92,5 @@ BOOST_AUTO_TEST_CASE(other_arguments_run_the_binary_once_as_given) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace test_run_tests

@@ -15,6 +15,10 @@
 #include "scene/scene_json.hpp"
 #include "cli_helpers.hpp"
 
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_save {
+
 using namespace physics;
 using namespace physics::test;
 
@@ -270,3 +274,5 @@ BOOST_AUTO_TEST_CASE(a_game_scene_saved_at_any_frame_runs_on_bit_for_bit) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace test_save

@@ -13,6 +13,10 @@
 #include "scene/scene.hpp"
 #include "course/utils/random.hpp"
 
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_scene {
+
 using namespace physics;
 
 namespace {
@@ -577,3 +581,5 @@ BOOST_AUTO_TEST_CASE(random_colours_keep_away_from_the_walls) {
     }
   BOOST_TEST(checked > 10000u);
 }
+
+}  // namespace test_scene

@@ -9,6 +9,10 @@
 #include "helpers.hpp"
 #include "scene/scene_json.hpp"
 
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_scene_json {
+
 using namespace physics;
 
 namespace {
@@ -41,7 +45,7 @@ std::string error_of(const std::string& text) {
   return "";
 }
 
-bool has(const std::string& msg, const std::string& part) { return msg.find(part) != std::string::npos; }
+using physics::test::has;
 
 // A one-block scene with `block` as its block's members.
 std::string with_block(const std::string& block) { return R"({"blocks": [{)" + block + "}]}"; }
@@ -418,3 +422,5 @@ BOOST_AUTO_TEST_CASE(the_reader_converts_the_validator_judges) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace test_scene_json

@@ -9,6 +9,10 @@
 #include "helpers.hpp"
 #include "numerics/scenes.hpp"
 
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_seams {
+
 using namespace physics;
 using namespace physics::numerics;
 
@@ -226,3 +230,5 @@ BOOST_AUTO_TEST_CASE(an_infinite_mass_pusher_drives_a_row_without_overlaps) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace test_seams

@@ -4,6 +4,10 @@
 #include "helpers.hpp"
 #include "app/soak.hpp"
 
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_soak {
+
 using namespace physics;
 
 namespace {
@@ -68,3 +72,5 @@ BOOST_AUTO_TEST_CASE(the_checks_catch_a_broken_state) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace test_soak

@@ -10,6 +10,10 @@
 #include "helpers.hpp"
 #include "numerics/stability.hpp"
 
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_stability {
+
 using namespace physics::numerics;
 namespace bdata = boost::unit_test::data;
 
@@ -52,3 +56,5 @@ BOOST_DATA_TEST_CASE(long_case_meets_its_criterion_in_the_modes_meant_for_it, bd
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace test_stability

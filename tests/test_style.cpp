@@ -20,11 +20,11 @@
 #include "app/testbed.hpp"
 #include "cli_helpers.hpp"
 
-// The PNG decoder, compiled here and private to this file (as in test_cli.cpp).
-#define STB_IMAGE_STATIC
-#define STB_IMAGE_IMPLEMENTATION
-#define STBI_ONLY_PNG
-#include <stb/stb_image.h>
+#include "png_decode.hpp"
+
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_style {
 
 using namespace physics;
 using namespace physics::test;
@@ -338,3 +338,5 @@ BOOST_AUTO_TEST_CASE(the_window_draws_the_styles_as_the_offscreen_picture) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace test_style

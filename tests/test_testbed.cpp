@@ -15,6 +15,10 @@
 #include "app/testbed.hpp"
 #include "games/targets.hpp"
 
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_testbed {
+
 using namespace physics;
 
 namespace {
@@ -629,3 +633,5 @@ BOOST_AUTO_TEST_CASE(wrap_breaks_at_spaces_and_indents) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace test_testbed

@@ -9,6 +9,10 @@
 #include "engine/workers.hpp"
 #include "physics/physics.hpp"
 
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_threads {
+
 namespace {
 
 using namespace physics;
@@ -128,3 +132,5 @@ BOOST_AUTO_TEST_CASE(the_auto_mode_gives_the_same_bits_on_any_number_of_threads)
 BOOST_AUTO_TEST_SUITE_END()
 
 }  // namespace
+
+}  // namespace test_threads

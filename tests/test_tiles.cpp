@@ -14,6 +14,10 @@
 #include "scene/scene_json.hpp"
 #include "app/testbed.hpp"
 
+// The file's own names, apart from the other test files' with which it is
+// compiled (Makefile, TEST_UNITY).
+namespace test_tiles {
+
 using namespace physics;
 using namespace physics::numerics;
 
@@ -487,3 +491,5 @@ BOOST_AUTO_TEST_CASE(queries_hit_tiles_and_name_the_cell) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace test_tiles
