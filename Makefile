@@ -26,15 +26,15 @@ ifeq ($(MAKELEVEL),0)
     MAKEFLAGS += -j$(NPROC) --output-sync=target --no-print-directory
     # A build from scratch (no $(BUILD)/obj yet) says how long it will take,
     # from CPU seconds measured on a fresh clone (docs/reliability.md, "Tests
-    # and their time"): make test, 468 (user and system, at 69414c5, the
-    # test files in their unity groups, the machine shared with another
-    # build: the libraries, the game, the test files, the examples, the
-    # installed copy's builds, the exercise trees, and the test binary, one
-    # process per suite on every core); make run, 340 (user and system).
+    # and their time"): make test, 405 (user and system, at d2b5129, the
+    # test files in their unity groups, the machine otherwise idle: the
+    # libraries, the game, the test files, the examples, the installed
+    # copy's builds, the exercise trees, and the test binary, one process per
+    # suite on every core); make run, 340 (user and system).
     ifeq ($(wildcard $(BUILD)/obj),)
       GOALS := $(or $(MAKECMDGOALS),all)
       ifneq ($(filter test,$(GOALS)),)
-        $(info building from scratch and testing (about $(shell echo $$((468 / $(NPROC)))) s on $(NPROC) cores)...)
+        $(info building from scratch and testing (about $(shell echo $$((405 / $(NPROC)))) s on $(NPROC) cores)...)
       else ifneq ($(filter run,$(GOALS)),)
         $(info building the game from scratch (about $(shell echo $$((340 / $(NPROC)))) s on $(NPROC) cores)...)
       else ifneq ($(filter all $(BUILD)/tests,$(GOALS)),)
