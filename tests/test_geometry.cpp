@@ -6,7 +6,6 @@
 // sizes, signed zeros, infinities and NaN; fixed bodies, bodies at rest,
 // friction), so that the engine behaves exactly as it did when it called the
 // course's.
-#include <bit>
 #include <cstdint>
 #include <limits>
 #include <random>
@@ -26,8 +25,8 @@ using namespace physics;
 
 namespace {
 
-bool same(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
-bool same(Vector a, Vector b) { return same(a.x, b.x) && same(a.y, b.y); }
+// Bit for bit (tests/helpers.hpp): -0 is not +0, a NaN equals itself.
+using physics::test::same_bits;
 
 // Positions on the edges that matter: zeros of both signs, small integers
 // (boxes that touch or tie), halves, non-finite values.
@@ -42,12 +41,12 @@ int disagreements(Vector p1, Rect r1, Vector p2, Rect r2) {
   const auto [cp, cr] = Rect::mdiff(p1, r1, p2, r2);
   const auto [ep, er] = minkowski_difference(p1, r1, p2, r2);
   int bad = 0;
-  if (!same(cp, ep) || !(cr == er)) ++bad;
+  if (!same_bits(cp, ep) || !(cr == er)) ++bad;
   if (Rect::has_origin(cp, cr) != contains_origin(cp, cr)) ++bad;
-  if (!same(Collision::penetration(cp, cr), penetration_vector(cp, cr))) ++bad;
+  if (!same_bits(Collision::penetration(cp, cr), penetration_vector(cp, cr))) ++bad;
   // The two other functions on the raw inputs too (not only on differences).
   if (Rect::has_origin(p1, r1) != contains_origin(p1, r1)) ++bad;
-  if (!same(Collision::penetration(p1, r1), penetration_vector(p1, r1))) ++bad;
+  if (!same_bits(Collision::penetration(p1, r1), penetration_vector(p1, r1))) ++bad;
   return bad;
 }
 
@@ -134,15 +133,15 @@ std::vector<EntityId> all_ids(const Components& k) {
 bool same(const Components& a, const Components& b) {
   if (a.size() != b.size()) return false;
   for (std::size_t e = 0; e < a.size(); ++e)
-    if (!same(a.position[e], b.position[e]) || !same(a.velocity[e], b.velocity[e]) ||
-        !same(a.sum_forces[e], b.sum_forces[e]))
+    if (!same_bits(a.position[e], b.position[e]) || !same_bits(a.velocity[e], b.velocity[e]) ||
+        !same_bits(a.sum_forces[e], b.sum_forces[e]))
       return false;
   return true;
 }
 
 bool same(const Contact& a, const Contact& b) {
-  return a.c == b.c && a.b == b.b && same(a.penetration, b.penetration) && same(a.normal, b.normal) &&
-         a.approaching == b.approaching && same(a.jn, b.jn) && same(a.jt, b.jt);
+  return a.c == b.c && a.b == b.b && same_bits(a.penetration, b.penetration) && same_bits(a.normal, b.normal) &&
+         a.approaching == b.approaching && same_bits(a.jn, b.jn) && same_bits(a.jt, b.jt);
 }
 
 }  // namespace
@@ -259,7 +258,7 @@ BOOST_AUTO_TEST_CASE(the_engine_step_and_the_course_step_agree_on_every_built_in
         const auto a = engine.events.events(), b = course.events.events();
         events_agree = events_agree && a.size() == b.size() && engine.pass.contact_count == course.pass.contact_count;
         for (std::size_t i = 0; events_agree && i < a.size(); ++i)
-          events_agree = a[i].a == b[i].a && a[i].b == b[i].b && a[i].kind == b[i].kind && same(a[i].jn, b[i].jn);
+          events_agree = a[i].a == b[i].a && a[i].b == b[i].b && a[i].kind == b[i].kind && same_bits(a[i].jn, b[i].jn);
         contacts += static_cast<int>(engine.pass.contact_count);
       }
       BOOST_TEST_REQUIRE(same(engine.components, course.components), spec.name << " solver " << name(m.solver));
