@@ -245,6 +245,11 @@ void ContactSolver::prepare(const Components& k, double h, Vector g, const Solve
   const RangeCount& all = counts_.back();
   contacts_.resize(all.contacts), pair_of_.resize(all.contacts);
   topology_next_.resize(all.contacts), impacts_.resize(all.impacts), apart_.resize(all.apart);
+  contact_bits_.resize(all.contacts);
+  // When every pair is what it was (same_kinds_), each contact is where it
+  // was: an unchanged pair's (same bodies' state, same inputs) is kept, its
+  // accumulators cleared as make_contact() clears them.
+  const bool keep = same_kinds_;
   const std::uint8_t flags = w.or_over_ranges(n, min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
     RangeCount at = counts_[static_cast<std::size_t>(t)];
     std::uint8_t bits = 0;
@@ -252,7 +257,14 @@ void ContactSolver::prepare(const Components& k, double h, Vector g, const Solve
       if (kinds_[i] == PairKind::apart) apart_[at.apart++] = static_cast<std::uint32_t>(i);
       if (kinds_[i] < PairKind::contact) continue;
       if (kinds_[i] == PairKind::impact) impacts_[at.impacts++] = static_cast<std::uint32_t>(at.contacts);
-      bits |= make_contact(k, i, h, at.contacts++);
+      const std::size_t j = at.contacts++;
+      if (keep && !(changed_[pairs_[i].c] | changed_[pairs_[i].b])) {
+        contacts_[j].lambda = contacts_[j].lambda2 = 0.0;
+        topology_next_[j] = topology_[j];
+      } else {
+        contact_bits_[j] = make_contact(k, i, h, j);
+      }
+      bits |= contact_bits_[j];
     }
     return bits;
   });
@@ -271,39 +283,98 @@ void ContactSolver::prepare(const Components& k, double h, Vector g, const Solve
 // where each range's go), in one pass over the pairs. Pairs that touch
 // corner to corner, whose axes depend on their bodies' other pairs
 // (contact_axes()), and a later round's physical axes take a second pass.
+//
+// A pair of the list last classified whose two bodies have kept their
+// position, velocity and box since (changed_since_classified()) keeps what
+// that classification made of it: the same inputs, the same bits. A
+// resting pile's pairs are nearly all such (many_pyramids: all but 20 of
+// 2.18 million body substeps), and the pass is then one test a pair. A
+// corner pair's axis depends on its bodies' other pairs: it is taken again
+// whenever corner_axes() runs.
 void ContactSolver::classify(const Components& k, double h, double threshold, const SolverSettings& s) {
   Workers& w = workers_or_one(workers_);
   const std::size_t n = pairs_.size();
+  // physical_axes() overwrites a later round's axes with others than these inputs give.
+  const bool physical = s.physical_axes && !shifted_.empty();
+  const ClassifyInputs inputs{h, threshold, s.margin, s.touch};
+  const bool reuse = classified_ && s.impacts && !physical && inputs == classified_for_ &&
+                     std::equal(pairs_.begin(), pairs_.end(), classified_pairs_.begin(), classified_pairs_.end());
+  changed_since_classified(k);
   axes_.resize(n);
   kinds_.resize(n);
   normal_speeds_.resize(n);
   counts_.assign(static_cast<std::size_t>(w.threads()) + 1, {});
+  // Bit 0: a pair touches corner to corner; bit 1: a pair's kind is not the one it had.
   const auto range = [&](int t, std::size_t begin, std::size_t end, auto with_axes) {
     RangeCount c;
-    bool corner = false;
+    bool corner = false, moved = false;
     for (std::size_t i = begin; i < end; ++i) {
-      if constexpr (with_axes) corner = plain_axis(k, i, s.touch) || corner;
-      const PairKind kind = kinds_[i] = pair_kind(k, i, h, threshold, s);
+      const bool same = reuse && !(changed_[pairs_[i].c] | changed_[pairs_[i].b]);
+      PairKind kind = kinds_[i];
+      if (!same || (!with_axes && axes_[i].corner)) {
+        if constexpr (with_axes) corner = plain_axis(k, i, s.touch) || corner;
+        const PairKind was = kind;
+        kind = kinds_[i] = pair_kind(k, i, h, threshold, s);
+        moved = moved || kind != was;
+      } else if constexpr (with_axes) {
+        corner = axes_[i].corner || corner;
+      }
       c.apart += kind == PairKind::apart;
       c.contacts += kind >= PairKind::contact;
       c.impacts += kind == PairKind::impact;
     }
     counts_[static_cast<std::size_t>(t) + 1] = c;
-    return static_cast<std::uint8_t>(corner);
+    return static_cast<std::uint8_t>(corner | moved << 1);
   };
-  const bool corners = w.or_over_ranges(n, min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
+  const std::uint8_t first = w.or_over_ranges(n, min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
     return range(t, begin, end, std::true_type{});
   });
-  if (corners || (s.physical_axes && !shifted_.empty())) {
-    if (corners) corner_axes(k, s);
+  std::uint8_t second = 0;
+  if ((first & 1) || physical) {
+    if (first & 1) corner_axes(k, s);
     physical_axes(k, s);
-    w.for_ranges(n, min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
-      range(t, begin, end, std::false_type{});
+    second = w.or_over_ranges(n, min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
+      return range(t, begin, end, std::false_type{});
     });
   }
+  same_kinds_ = reuse && !((first | second) & 2);
   for (std::size_t t = 1; t <= static_cast<std::size_t>(w.threads()); ++t)
     counts_[t].apart += counts_[t - 1].apart, counts_[t].contacts += counts_[t - 1].contacts,
         counts_[t].impacts += counts_[t - 1].impacts;
+  classified_ = !physical && s.impacts;
+  classified_for_ = inputs;
+  classified_pairs_.assign(pairs_.begin(), pairs_.end());
+}
+
+// changed_: by entity id, whether what prepare() reads of the body
+// (position, velocity, box, mass, restitution, friction) differs (bits)
+// from when the pairs were last classified; then the bodies' state kept for
+// the next call.
+void ContactSolver::changed_since_classified(const Components& k) {
+  const std::size_t n = k.size(), known = std::min(n, classified_bodies_.size());
+  changed_.resize(n);
+  classified_bodies_.resize(n);
+  const auto bits = [](double a, double b) { return std::bit_cast<std::uint64_t>(a) ^ std::bit_cast<std::uint64_t>(b); };
+  // (Spans, not the vectors: the byte stores could alias their pointers, reloaded at every body.)
+  const std::span<const Vector> position(k.position), velocity(k.velocity);
+  const std::span<const Rect> boxes(k.box);
+  const std::span<const double> mass(k.mass), restitution(k.restitution), friction(k.friction);
+  const std::span<ClassifiedBody> bodies(classified_bodies_);
+  const std::span<std::uint8_t> changed(changed_);
+  workers_or_one(workers_).for_ranges(n, min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+    for (std::size_t e = begin; e < end; ++e) {
+      ClassifiedBody& was = bodies[e];
+      const Vector p = position[e], v = velocity[e];
+      const Rect box = boxes[e];
+      const double m = mass[e], r = restitution[e], f = friction[e];
+      const std::uint64_t differ = bits(was.position.x, p.x) | bits(was.position.y, p.y) | bits(was.velocity.x, v.x) |
+                                   bits(was.velocity.y, v.y) | bits(was.mass, m) | bits(was.restitution, r) |
+                                   bits(was.friction, f) | static_cast<std::uint32_t>(was.box.width ^ box.width) |
+                                   static_cast<std::uint32_t>(was.box.height ^ box.height);
+      changed[e] = e >= known || differ != 0;
+      was = {p, v, box, m, r, f};
+    }
+  });
 }
 
 // What prepare() makes of pair i (its axis in axes_); keeps its normal speed.
@@ -638,6 +709,16 @@ void ContactSolver::schedule(const Components& k, Vector g) {
     paired_[i] = i + 1 != x_rows_ && a / chunk == b / chunk && level_[a] == level_[b];
   }
   if (!paired_.empty()) paired_.back() = 0;
+  // The same in order_ for the friction sweep: rows i and i + 1 of one chunk
+  // and level with normals along the same component (schedule's sort puts a
+  // level's x rows before its y rows).
+  friction_paired_.resize(order_.size());
+  for (std::size_t i = 0; i + 1 < order_.size(); ++i) {
+    const std::uint32_t a = order_[i], b = order_[i + 1];
+    friction_paired_[i] = a / chunk == b / chunk && level_[a] == level_[b] &&
+                          (contacts_[a].axis >= 2) == (contacts_[b].axis >= 2);
+  }
+  if (!friction_paired_.empty()) friction_paired_.back() = 0;
 }
 
 // The rows' order: without friction, a row reads and changes one velocity
@@ -810,17 +891,79 @@ template <double Vector::*n, double Vector::*t>
 // One sweep of iterate<true>; whether any accumulated impulse changed. The
 // rows come in runs of one axis (schedule()), so the test of the axis is
 // one the processor predicts, and each row's components are known.
+// Two rows of one level with normals along the same component, both with
+// friction (friction_paired_), are solved side by side (friction_two).
 bool ContactSolver::sweep_friction() {
   // (Spans, not the members: the loop's stores could alias a vector's own pointers.)
   const std::span<SolverRow> rows(rows_);
   const std::span<FrictionHot> friction(friction_rows_);
   const std::span<SolverBody> bodies(solver_bodies_);
+  [[maybe_unused]] const std::span<const std::uint8_t> paired(friction_paired_);
   bool changed = false;
-  for (std::size_t i = 0; i < rows.size(); ++i)
-    changed |= friction[i].axis >= 2 ? friction_row<&Vector::y, &Vector::x>(rows[i], friction[i], bodies)
-                                     : friction_row<&Vector::x, &Vector::y>(rows[i], friction[i], bodies);
+  for (std::size_t i = 0; i < rows.size();) {
+    FrictionHot& f = friction[i];
+#if defined(__SSE2__)
+    if (paired[i] && f.mu != 0.0 && friction[i + 1].mu != 0.0) {  // (never the last row: schedule())
+      changed |= f.axis >= 2 ? friction_two<true>(rows.subspan(i).first<2>(), friction.subspan(i).first<2>(), bodies)
+                             : friction_two<false>(rows.subspan(i).first<2>(), friction.subspan(i).first<2>(), bodies);
+      i += 2;
+      continue;
+    }
+#endif
+    changed |= f.axis >= 2 ? friction_row<&Vector::y, &Vector::x>(rows[i], f, bodies)
+                           : friction_row<&Vector::x, &Vector::y>(rows[i], f, bodies);
+    ++i;
+  }
   return changed;
 }
+
+#if defined(__SSE2__)
+// Two friction rows that share no linking body, one in each lane, by
+// component: the normals' lanes, then the tangents', with
+// friction_row_sse2's operations in its order (so the same bits: the
+// tangent's relative speed is read before the normal impulse, which changes
+// the other component; std::clamp(v, lo, hi) is min(hi, max(lo, v)) lane by
+// lane, NaN and zeros' signs included). `y`: the normals along y.
+template <bool y>
+[[gnu::always_inline]] inline bool ContactSolver::friction_two(std::span<SolverRow, 2> r, std::span<FrictionHot, 2> f,
+                                                               std::span<SolverBody> bodies) {
+  SolverBody& c0 = bodies[r[0].c];
+  SolverBody& c1 = bodies[r[1].c];
+  SolverBody& b0 = bodies[r[0].b];
+  SolverBody& b1 = bodies[r[1].b];
+  const __m128d c0v = _mm_loadu_pd(&c0.v.x), c1v = _mm_loadu_pd(&c1.v.x);
+  const __m128d b0v = _mm_loadu_pd(&b0.v.x), b1v = _mm_loadu_pd(&b1.v.x);
+  // x of both rows' bodies, then y; the normal's and the tangent's.
+  const __m128d cx = _mm_unpacklo_pd(c0v, c1v), cy = _mm_unpackhi_pd(c0v, c1v);
+  const __m128d bx = _mm_unpacklo_pd(b0v, b1v), by = _mm_unpackhi_pd(b0v, b1v);
+  const __m128d cn = y ? cy : cx, ct = y ? cx : cy, bn = y ? by : bx, bt = y ? bx : by;
+  const __m128d sn = _mm_setr_pd(normal_sign[f[0].axis], normal_sign[f[1].axis]);
+  const __m128d st = _mm_setr_pd(tangent_sign[f[0].axis], tangent_sign[f[1].axis]);
+  const __m128d inv_w = _mm_setr_pd(r[0].inv_w, r[1].inv_w);
+  const __m128d vn = _mm_mul_pd(sn, _mm_sub_pd(cn, bn)), vt = _mm_mul_pd(st, _mm_sub_pd(ct, bt));
+  const __m128d old_n = _mm_setr_pd(r[0].lambda, r[1].lambda), old_t = _mm_setr_pd(f[0].lambda, f[1].lambda);
+  const __m128d target = _mm_setr_pd(r[0].target, r[1].target);
+  const __m128d lambda = _mm_max_pd(_mm_setzero_pd(), _mm_sub_pd(old_n, _mm_mul_pd(_mm_sub_pd(vn, target), inv_w)));
+  const __m128d limit = _mm_mul_pd(_mm_setr_pd(f[0].mu, f[1].mu), lambda);
+  const __m128d neg_limit = _mm_xor_pd(limit, _mm_set1_pd(-0.0));
+  const __m128d lt = _mm_min_pd(limit, _mm_max_pd(neg_limit, _mm_sub_pd(old_t, _mm_mul_pd(vt, inv_w))));
+  const __m128d jn = _mm_sub_pd(lambda, old_n), jt = _mm_sub_pd(lt, old_t);
+  const __m128d wc = _mm_setr_pd(c0.w, c1.w), wb = _mm_setr_pd(b0.w, b1.w);
+  const __m128d cn2 = _mm_add_pd(cn, _mm_mul_pd(_mm_mul_pd(wc, jn), sn));
+  const __m128d bn2 = _mm_sub_pd(bn, _mm_mul_pd(_mm_mul_pd(wb, jn), sn));
+  const __m128d ct2 = _mm_add_pd(ct, _mm_mul_pd(_mm_mul_pd(wc, jt), st));
+  const __m128d bt2 = _mm_sub_pd(bt, _mm_mul_pd(_mm_mul_pd(wb, jt), st));
+  const __m128d cx2 = y ? ct2 : cn2, cy2 = y ? cn2 : ct2, bx2 = y ? bt2 : bn2, by2 = y ? bn2 : bt2;
+  // c0 before c1, b0 before b1: a fixed body both rows share gets either's (the same) values.
+  _mm_storeu_pd(&c0.v.x, _mm_unpacklo_pd(cx2, cy2)), _mm_storeu_pd(&c1.v.x, _mm_unpackhi_pd(cx2, cy2));
+  _mm_storeu_pd(&b0.v.x, _mm_unpacklo_pd(bx2, by2)), _mm_storeu_pd(&b1.v.x, _mm_unpackhi_pd(bx2, by2));
+  _mm_storel_pd(&r[0].lambda, lambda), _mm_storeh_pd(&r[1].lambda, lambda);
+  _mm_storel_pd(&f[0].lambda, lt), _mm_storeh_pd(&f[1].lambda, lt);
+  const __m128i same = _mm_and_si128(_mm_cmpeq_epi32(_mm_castpd_si128(lambda), _mm_castpd_si128(old_n)),
+                                     _mm_cmpeq_epi32(_mm_castpd_si128(lt), _mm_castpd_si128(old_t)));
+  return _mm_movemask_epi8(same) != 0xFFFF;
+}
+#endif
 
 // One sweep of iterate<false> over rows whose normals lie along component v
 // of the velocity; whether any accumulated impulse changed. Each row's
@@ -1142,6 +1285,7 @@ void ContactSolver::solve_positions(Components& k, std::span<const EntityId> ent
 bool ContactSolver::prepare_positions(const Components& k, const SolverSettings& s) {
   positions_.clear();
   if (std::none_of(pairs_.begin(), pairs_.end(), [&](const Pair& p) { return overlaps(k, p, s.slop); })) return false;
+  classified_ = false;  // (axes_ now holds the pairs' axes after Move)
   contact_axes(k, s);
   for (std::size_t i = 0; i < pairs_.size(); ++i)
     if (!(axes_[i].separation > s.margin))

@@ -192,6 +192,26 @@ class ContactSolver {
   std::vector<PairKind> kinds_;         // by pair (prepare())
   std::vector<double> normal_speeds_;   // by pair: (v_c - v_b)·n (prepare())
   std::vector<RangeCount> counts_;  // prepare(): by range, then where each range's go
+  // What the pairs were last classified for (classify()): each body's
+  // state, the pairs and the settings; classified_: axes_, kinds_ and
+  // normal_speeds_ still hold that classification's results.
+  struct ClassifiedBody {
+    Vector position, velocity;
+    Rect box;
+    double mass, restitution, friction;
+  };
+  struct ClassifyInputs {
+    double h, threshold, margin, touch;
+    friend bool operator==(const ClassifyInputs&, const ClassifyInputs&) = default;
+  };
+  void changed_since_classified(const Components& k);
+  std::vector<ClassifiedBody> classified_bodies_;  // by entity id
+  std::vector<std::uint8_t> changed_;              // by entity id: differs from classified_bodies_
+  std::vector<Pair> classified_pairs_;
+  ClassifyInputs classified_for_{};
+  bool classified_ = false;
+  bool same_kinds_ = false;                 // classify() kept the last list and every pair's kind
+  std::vector<std::uint8_t> contact_bits_;  // by contact: make_contact()'s result
   static bool turned_by_forces(const SolverSettings& s, const Pair& p, Vector n);
   static bool left_to_ccd(const SolverSettings& s, const Pair& p, Vector n, bool impact, bool closes_apart);
   void schedule(const Components& k, Vector g);
@@ -279,6 +299,8 @@ class ContactSolver {
   static bool friction_row(SolverRow& r, FrictionHot& f, std::span<SolverBody> bodies);
   template <bool y>
   static bool friction_row_sse2(SolverRow& r, FrictionHot& f, SolverBody& bc, SolverBody& bb);
+  template <bool y>
+  static bool friction_two(std::span<SolverRow, 2> r, std::span<FrictionHot, 2> f, std::span<SolverBody> bodies);
   template <double Vector::*v>
   bool sweep_axis(std::span<SolverRow> rows, std::span<const std::uint8_t> paired);
   template <double Vector::*v>
@@ -292,6 +314,7 @@ class ContactSolver {
   std::vector<std::uint32_t> by_axis_;     // order_'s x rows, then its y rows (row_order())
   std::size_t x_rows_ = 0;                 // how many of by_axis_ are x rows
   std::vector<std::uint8_t> paired_;       // by row of by_axis_: it and the next may be solved together
+  std::vector<std::uint8_t> friction_paired_;  // the same by row of order_ (sweep_friction)
   std::vector<SolverRow> rows_;            // contacts_[row_order()[i]], hot fields
   std::vector<FrictionHot> friction_rows_; // friction_[order_[i]], hot fields
   std::vector<std::uint32_t> last_level_, level_, level_count_;  // schedule()'s scratch
