@@ -1269,9 +1269,10 @@ void ContactSolver::solve_positions(Components& k, std::span<const EntityId> ent
   // looked for there, without finding the pairs again.
   bool none = false;
   laps.time(Stage::pairs, [&] {
-    none = broadphase.finds() == velocity_finds_ && broadphase.holds(k, entities) &&
-           std::none_of(pairs_.begin(), pairs_.end(), [&](const Pair& p) { return overlaps(k, p, s.slop); });
-    if (!none) broadphase.find(k, entities, 0.0, s.margin, pairs_, PairRule::solvable, s.workers);
+    none = broadphase.finds() == velocity_finds_ && broadphase.holds(k, entities) && !any_overlap(k, s.slop);
+    if (none) return;
+    broadphase.find(k, entities, 0.0, s.margin, pairs_, PairRule::solvable, s.workers);
+    classified_ = false;  // (pairs_ is no longer the list classified)
   });
   if (none) return;
   laps.time(Stage::positions, [&] {
@@ -1279,12 +1280,40 @@ void ContactSolver::solve_positions(Components& k, std::span<const EntityId> ent
   });
 }
 
+// Whether some pair of pairs_ overlaps by more than `slop`. A pair of the
+// list classified last whose bodies have kept their position and box since
+// (a resting pile's, nearly all) has the separation classify() found.
+bool ContactSolver::any_overlap(const Components& k, double slop) {
+  const std::size_t n = k.size();
+  if (!classified_ || classified_bodies_.size() != n)
+    return std::any_of(pairs_.begin(), pairs_.end(), [&](const Pair& p) { return overlaps(k, p, slop); });
+  const std::span<const Vector> position(k.position);
+  const std::span<const Rect> boxes(k.box);
+  const std::span<const ClassifiedBody> bodies(classified_bodies_);
+  const std::span<std::uint8_t> moved(changed_);  // (changed_'s room: classify() makes it anew)
+  const auto bits = [](double a, double b) { return std::bit_cast<std::uint64_t>(a) ^ std::bit_cast<std::uint64_t>(b); };
+  for (std::size_t e = 0; e < n; ++e) {
+    const ClassifiedBody& was = bodies[e];
+    const Vector p = position[e];
+    const Rect box = boxes[e];
+    moved[e] = (bits(was.position.x, p.x) | bits(was.position.y, p.y) |
+                static_cast<std::uint32_t>(was.box.width ^ box.width) |
+                static_cast<std::uint32_t>(was.box.height ^ box.height)) != 0;
+  }
+  const std::size_t known = classified_pairs_.size();  // pairs_ starts with them (turned_to_meet() appends)
+  for (std::size_t i = 0; i < pairs_.size(); ++i) {
+    const Pair p = pairs_[i];
+    if (i < known && !(moved[p.c] | moved[p.b]) ? axes_[i].separation < -slop : overlaps(k, p, slop)) return true;
+  }
+  return false;
+}
+
 // Whether any pair overlaps by more than the slop; if so, the contacts
 // within the margin. A resting pile often has no such overlap: then the
 // look stops there, without listing the contacts.
 bool ContactSolver::prepare_positions(const Components& k, const SolverSettings& s) {
   positions_.clear();
-  if (std::none_of(pairs_.begin(), pairs_.end(), [&](const Pair& p) { return overlaps(k, p, s.slop); })) return false;
+  if (!any_overlap(k, s.slop)) return false;
   classified_ = false;  // (axes_ now holds the pairs' axes after Move)
   contact_axes(k, s);
   for (std::size_t i = 0; i < pairs_.size(); ++i)

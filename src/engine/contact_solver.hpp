@@ -205,6 +205,7 @@ class ContactSolver {
     friend bool operator==(const ClassifyInputs&, const ClassifyInputs&) = default;
   };
   void changed_since_classified(const Components& k);
+  bool any_overlap(const Components& k, double slop);
   std::vector<ClassifiedBody> classified_bodies_;  // by entity id
   std::vector<std::uint8_t> changed_;              // by entity id: differs from classified_bodies_
   std::vector<Pair> classified_pairs_;
