@@ -372,7 +372,7 @@ void ContactSolver::changed_since_classified(const Components& k) {
                                    bits(was.friction, f) | static_cast<std::uint32_t>(was.box.width ^ box.width) |
                                    static_cast<std::uint32_t>(was.box.height ^ box.height);
       changed[e] = e >= known || differ != 0;
-      was = {p, v, box, m, r, f};
+      if (changed[e]) was = {p, v, box, m, r, f};
     }
   });
 }
@@ -1103,16 +1103,21 @@ void ContactSolver::impact_time(Components& k, double h, Vector g, bool exact_mo
 void ContactSolver::store() {
   last_jn_.resize(contacts_.size());
   last_jt_.resize(contacts_.size());
-  workers_or_one(workers_).for_ranges(contacts_.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+  // (Spans, not the members: the stores could alias a vector's own pointers.)
+  const std::span<const ContactConstraint> contacts(contacts_);
+  const std::span<const FrictionRow> friction(friction_);
+  const std::span<const std::uint32_t> pair_of(pair_of_);
+  const std::span<const double> earlier_jn(earlier_jn_), earlier_jt(earlier_jt_);
+  const std::span<double> last_jn(last_jn_), last_jt(last_jt_);
+  workers_or_one(workers_).for_ranges(contacts.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
-      const ContactConstraint& ct = contacts_[i];
-      const std::uint32_t p = pair_of_[i];
-      const bool earlier = p < earlier_jn_.size();  // earlier rounds of this substep (keep_round())
-      const double jn = ct.lambda + ct.lambda2 + (earlier ? earlier_jn_[p] : 0.0);
+      const ContactConstraint& ct = contacts[i];
+      const std::uint32_t p = pair_of[i];
+      const bool earlier = p < earlier_jn.size();  // earlier rounds of this substep (keep_round())
+      const double jn = ct.lambda + ct.lambda2 + (earlier ? earlier_jn[p] : 0.0);
       const bool keep = ct.resting && jn > 0.0;
-      last_jn_[i] = keep ? jn : 0.0;
-      last_jt_[i] = (friction_.empty() ? 0.0 : friction_[i].lambda + friction_[i].lambda2) +
-                    (earlier ? earlier_jt_[p] : 0.0);
+      last_jn[i] = keep ? jn : 0.0;
+      last_jt[i] = (friction.empty() ? 0.0 : friction[i].lambda + friction[i].lambda2) + (earlier ? earlier_jt[p] : 0.0);
     }
   });
   restored_ = false;
