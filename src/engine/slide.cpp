@@ -1,7 +1,5 @@
 #include "engine/slide.hpp"
 
-#include <cmath>
-
 namespace physics {
 
 void SlideIntegrator::start(const Components& k) {
@@ -15,22 +13,25 @@ void SlideIntegrator::after_solver(const Components& k, std::span<const ContactC
   if (rows.empty()) return;  // no contact had friction
   touched_.assign(k.size(), 0);
   v_end_.resize(k.size());
+  // (A contact's inverse masses say which end is fixed: inverse_mass() is 0
+  // just for an infinite mass. Bit 32 marks a fixed body, never a slider.)
+  const std::span<std::uint8_t> touched(touched_);
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const ContactConstraint& ct = contacts[i];
     // Against a finite body (one that moves with the slide) the shift is not taken: bit 4.
-    const bool fixed = !std::isfinite(k.mass[ct.c]) || !std::isfinite(k.mass[ct.b]);
+    const bool fixed = ct.wc == 0.0 || ct.wb == 0.0;
     const std::uint8_t bits = static_cast<std::uint8_t>((ct.axis < 2 ? 1 : 2) | (ct.resting && fixed ? 0 : 4) |
                                                         (rows[i].lambda + rows[i].lambda2 != 0.0 ? 8 : 0));
-    touched_[ct.c] |= bits;
-    touched_[ct.b] |= bits;
+    touched[ct.c] |= bits | (ct.wc == 0.0 ? 32 : 0);
+    touched[ct.b] |= bits | (ct.wb == 0.0 ? 32 : 0);
   }
   for (std::size_t i = 0; i < contacts.size(); ++i)
     for (const EntityId e : {contacts[i].c, contacts[i].b}) {
-      const std::uint8_t t = touched_[e];
+      const std::uint8_t t = touched[e];
       if (t & 16) continue;  // listed already
-      touched_[e] = 0;       // each body once
-      if (!std::isfinite(k.mass[e]) || (t & 8) == 0 || (t & 4) != 0 || (t & 3) == 3) continue;
-      touched_[e] = t | 16;  // kept for shift(): (t & 3) == 2, y-normal contacts (a floor or a ceiling): along x
+      touched[e] = 0;        // each body once
+      if ((t & 32) != 0 || (t & 8) == 0 || (t & 4) != 0 || (t & 3) == 3) continue;
+      touched[e] = static_cast<std::uint8_t>((t & 31) | 16);  // kept for shift(): (t & 3) == 2, y-normal contacts (a floor or a ceiling): along x
       v_end_[e] = k.velocity[e];
       sliders_.push_back(e);
     }
