@@ -204,6 +204,45 @@ BOOST_AUTO_TEST_CASE(a_block_on_a_moving_platform_is_carried_along) {
 
 BOOST_AUTO_TEST_SUITE_END()
 
+// The stable solver keeps the classification and the contact of a pair
+// whose bodies kept their state (ContactSolver::classify): what it keeps
+// must include every input of the contact, or an edit of a resting body
+// would not reach its contacts.
+BOOST_AUTO_TEST_SUITE(kept_contacts)
+
+// The impulses a frame's contacts carry, summed (the events' touching list).
+double carried(World& w) {
+  Game::step(w);
+  double jn = 0.0;
+  for (const auto& t : w.events.touching()) jn += t.jn;
+  return jn;
+}
+
+// A stack of two at rest; the lower block made four times heavier carries
+// what a stack built that heavy carries (with the old inverse mass kept,
+// its floor contact would go on carrying the old weight).
+BOOST_AUTO_TEST_CASE(a_mass_changed_at_rest_reaches_the_contacts) {
+  const auto stack = [](double lower) {
+    SceneSpec s = floor_scene(Solver::stable, 0.0);
+    s.blocks.push_back(block({100, 520}, 40, 40, lower));
+    s.blocks.push_back(block({100, 480}, 40, 40, 1.0));
+    World w = make_world(s, false);
+    w.enable_events();
+    return w;
+  };
+  World edited = stack(1.0), built = stack(4.0);
+  run(edited, 120);
+  run(built, 180);
+  const double before = carried(edited);
+  edited.components.mass[4] = 4.0;
+  run(edited, 59);
+  const double after = carried(edited), expected = carried(built);
+  BOOST_TEST(after > 1.5 * before);
+  BOOST_TEST(std::abs(after - expected) < 1e-9 * expected, "carried " << after << ", a stack built so " << expected);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
 BOOST_AUTO_TEST_SUITE(contact_events)
 
 BOOST_AUTO_TEST_CASE(two_blocks_that_collide_once_give_one_begin_and_one_end) {
