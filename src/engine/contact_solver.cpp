@@ -311,7 +311,8 @@ void ContactSolver::classify(const Components& k, double h, double threshold, co
     for (std::size_t i = begin; i < end; ++i) {
       const bool same = reuse && !(changed_[pairs_[i].c] | changed_[pairs_[i].b]);
       PairKind kind = kinds_[i];
-      if (!same || (!with_axes && axes_[i].corner)) {
+      // (The second pass: the corner pairs whose axes corner_axes() took again.)
+      if (!same || (!with_axes && axes_[i].corner && ((faces_[pairs_[i].c] | faces_[pairs_[i].b]) & tainted))) {
         if constexpr (with_axes) corner = plain_axis(k, i, s.touch) || corner;
         const PairKind was = kind;
         kind = kinds_[i] = pair_kind(k, i, h, threshold, s);
@@ -331,7 +332,7 @@ void ContactSolver::classify(const Components& k, double h, double threshold, co
   });
   std::uint8_t second = 0;
   if ((first & 1) || physical) {
-    if (first & 1) corner_axes(k, s);
+    if (first & 1) corner_axes(k, s, reuse);
     physical_axes(k, s);
     second = w.or_over_ranges(n, min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
       return range(t, begin, end, std::false_type{});
@@ -1366,7 +1367,7 @@ void ContactSolver::contact_axes(const Components& k, const SolverSettings& s) {
     for (std::size_t i = begin; i < end; ++i) any = plain_axis(k, i, s.touch) || any;
     return static_cast<std::uint8_t>(any);
   });
-  if (corners) corner_axes(k, s);
+  if (corners) corner_axes(k, s, false);
 }
 
 // Pair i's contact_axis without faces, into axes_[i]; whether its boxes
@@ -1378,21 +1379,31 @@ inline bool ContactSolver::plain_axis(const Components& k, std::size_t i, double
 
 // The axes of the pairs that touch corner to corner, once every pair has its
 // plain axis (contact_axis without faces) in axes_.
-void ContactSolver::corner_axes(const Components& k, const SolverSettings& s) {
+// `local` (classify() kept the unchanged pairs' axes): a corner pair's axis
+// depends on its bodies and on their other pairs' plain axes, so it is taken
+// again only when one of its bodies, or a body paired with one of them, has
+// changed (faces_' bit `tainted`); the others keep theirs.
+void ContactSolver::corner_axes(const Components& k, const SolverSettings& s, bool local) {
   constexpr std::uint8_t wanted = 4;
-  faces_.assign(k.size(), 0);
+  faces_.assign(k.size(), local ? 0 : tainted);
+  if (local)
+    for (const Pair& p : pairs_)
+      if (changed_[p.c] | changed_[p.b]) faces_[p.c] |= tainted, faces_[p.b] |= tainted;
+  const auto taken = [&](std::size_t i) {
+    return axes_[i].corner && ((faces_[pairs_[i].c] | faces_[pairs_[i].b]) & tainted);
+  };
   for (std::size_t i = 0; i < pairs_.size(); ++i)
-    if (axes_[i].corner) faces_[pairs_[i].c] = faces_[pairs_[i].b] = wanted;
+    if (taken(i)) faces_[pairs_[i].c] |= wanted, faces_[pairs_[i].b] |= wanted;
   for (std::size_t i = 0; i < pairs_.size(); ++i) {
     const Pair& p = pairs_[i];
     if (!((faces_[p.c] | faces_[p.b]) & wanted)) continue;
-    // axes_[i] is still the pair's contact_axis without faces: touching_face's.
+    // axes_[i] is still the pair's contact_axis without faces (touching_face's), or a corner pair's (then 0).
     const auto f = static_cast<std::uint8_t>(touching_face(axes_[i], s.touch));
     faces_[p.c] |= f, faces_[p.b] |= f;
   }
   for (std::size_t i = 0; i < pairs_.size(); ++i) {
     const Pair& p = pairs_[i];
-    if (axes_[i].corner) axes_[i] = contact_axis(k, p.c, p.b, s.touch, (faces_[p.c] | faces_[p.b]) & 3);
+    if (taken(i)) axes_[i] = contact_axis(k, p.c, p.b, s.touch, (faces_[p.c] | faces_[p.b]) & 3);
   }
 }
 

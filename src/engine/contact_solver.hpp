@@ -255,7 +255,8 @@ class ContactSolver {
   std::vector<double> earlier_jn_, earlier_jt_;
   void contact_axes(const Components& k, const SolverSettings& s);
   bool plain_axis(const Components& k, std::size_t i, double touch);
-  void corner_axes(const Components& k, const SolverSettings& s);
+  void corner_axes(const Components& k, const SolverSettings& s, bool local);
+  static constexpr std::uint8_t tainted = 16;  // faces_' bit: corner_axes() takes this body's corner pairs again
   void physical_axes(const Components& k, const SolverSettings& s);
   std::vector<double> line_start_;   // by entity id: ms from which its line is its motion (impact_time()), or 0
   std::vector<EntityId> shifted_;    // the bodies whose line_start_ is set this substep
