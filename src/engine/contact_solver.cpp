@@ -1040,17 +1040,24 @@ void ContactSolver::prepare_friction(const Components& k, bool any) {
 // v_c the inelastic (projected) velocity, so |v+| <= |v-| in the mass norm:
 // the energy never grows, even for simultaneous contacts (a target velocity
 // -e·v_n per contact, Newton's way, can gain energy there).
+// (The inelastic velocities are copied only when some impact bounces: else
+// they are the velocities themselves, which the energy guard reads then.)
 void ContactSolver::restitution(Components& k, Vector g, const SolverSettings& s) {
+  const bool bounced = std::any_of(impacts_.begin(), impacts_.end(), [&](std::uint32_t i) { return bounces(contacts_[i]); });
+  have_inelastic_ = bounced;
+  if (!bounced) {
+    guard_energy(k);
+    return;
+  }
   for (std::size_t i = 0; i < slot_body_.size(); ++i) v_inelastic_[i] = k.velocity[slot_body_[i]];
-  bool bounced = false;
   for (const std::uint32_t i : impacts_) {
     const ContactConstraint& ct = contacts_[i];
-    if (bounces(ct)) apply(k, ct, ct.restitution * ct.lambda), bounced = true;
+    if (bounces(ct)) apply(k, ct, ct.restitution * ct.lambda);
   }
   // The bounce impulses were computed contact by contact: a light block
   // lying on the floor when a heavy one lands on it gets e times its share
   // pushing it into the floor, which nothing would then hold. Relax again.
-  if (bounced) relax<true>(k, g, s);
+  relax<true>(k, g, s);
   guard_energy(k);
 }
 
@@ -1162,6 +1169,8 @@ void ContactSolver::restore(std::span<const WarmImpulse> impulses) {
 // Both are blends of impulse sets, so momentum is kept.
 void ContactSolver::guard_energy(Components& k) {
   if (!any_body_gained(k)) return;
+  if (!have_inelastic_)
+    for (std::size_t i = 0; i < slot_body_.size(); ++i) v_inelastic_[i] = k.velocity[slot_body_[i]];
   island_energies(k);
   // Largest s in [0, 1] with a s² + b s + c <= 0, given c <= 0.
   const auto largest = [](double a, double b, double c) {
