@@ -977,18 +977,20 @@ template <bool y>
 // Then v_c + (w_c j)(-1) is v_c - w_c j, bit for bit.
 template <double Vector::*v>
 bool ContactSolver::sweep_axis(std::span<SolverRow> rows, [[maybe_unused]] std::span<const std::uint8_t> paired) {
+  // (A span, not the member: the loop's stores could alias the vector's own pointers.)
+  const std::span<SolverBody> bodies(solver_bodies_);
   bool changed = false;
   for (std::size_t i = 0; i < rows.size();) {
 #if defined(__SSE2__)
     if (paired[i]) {  // (never the last row of the span: schedule())
-      changed |= sweep_two<v>(rows[i], rows[i + 1]);
+      changed |= sweep_two<v>(rows[i], rows[i + 1], bodies);
       i += 2;
       continue;
     }
 #endif
     SolverRow& r = rows[i++];
-    SolverBody& bc = solver_bodies_[r.c];
-    SolverBody& bb = solver_bodies_[r.b];
+    SolverBody& bc = bodies[r.c];
+    SolverBody& bb = bodies[r.b];
     const double vn = bc.v.*v - bb.v.*v;
     const double lambda = std::max(r.lambda - (vn - r.target) * r.inv_w, 0.0);
     apply_axis_impulse(bc.v.*v, bb.v.*v, 1.0, lambda - r.lambda, bc.w, bb.w);
@@ -1005,11 +1007,11 @@ bool ContactSolver::sweep_axis(std::span<SolverRow> rows, [[maybe_unused]] std::
 // rounds as the scalar instruction does, and max(0, x) is (0 > x ? 0 : x),
 // std::max(x, 0.0)'s choice for a NaN and for -0 too.
 template <double Vector::*v>
-bool ContactSolver::sweep_two(SolverRow& r0, SolverRow& r1) {
-  SolverBody& c0 = solver_bodies_[r0.c];
-  SolverBody& b0 = solver_bodies_[r0.b];
-  SolverBody& c1 = solver_bodies_[r1.c];
-  SolverBody& b1 = solver_bodies_[r1.b];
+[[gnu::always_inline]] inline bool ContactSolver::sweep_two(SolverRow& r0, SolverRow& r1, std::span<SolverBody> bodies) {
+  SolverBody& c0 = bodies[r0.c];
+  SolverBody& b0 = bodies[r0.b];
+  SolverBody& c1 = bodies[r1.c];
+  SolverBody& b1 = bodies[r1.b];
   const __m128d vc = _mm_setr_pd(c0.v.*v, c1.v.*v), vb = _mm_setr_pd(b0.v.*v, b1.v.*v);
   const __m128d old = _mm_setr_pd(r0.lambda, r1.lambda);
   const __m128d vn = _mm_sub_pd(vc, vb);

@@ -306,7 +306,7 @@ class ContactSolver {
   template <double Vector::*v>
   bool sweep_axis(std::span<SolverRow> rows, std::span<const std::uint8_t> paired);
   template <double Vector::*v>
-  bool sweep_two(SolverRow& r0, SolverRow& r1);
+  static bool sweep_two(SolverRow& r0, SolverRow& r1, std::span<SolverBody> bodies);
   std::span<const std::uint32_t> row_order() const;
   std::uint64_t velocity_finds_ = ~std::uint64_t{0};  // the broad phase's finds() after solve_velocities
   std::vector<std::uint32_t> slot_of_;     // by entity id: slot, or none when not in a contact
