@@ -347,34 +347,47 @@ void ContactSolver::classify(const Components& k, double h, double threshold, co
   classified_pairs_.assign(pairs_.begin(), pairs_.end());
 }
 
-// changed_: by entity id, whether what prepare() reads of the body
+// changed_: for each body of a pair, whether what prepare() reads of it
 // (position, velocity, box, mass, restitution, friction) differs (bits)
-// from when the pairs were last classified; then the bodies' state kept for
-// the next call.
+// from when it was last classified; then its state kept for the next call.
+// With fewer pairs than bodies, bodies in no pair are not looked at (a
+// falling rain's are most): a pair of the list classified last has both its
+// bodies' states from that call.
 void ContactSolver::changed_since_classified(const Components& k) {
   const std::size_t n = k.size(), known = std::min(n, classified_bodies_.size());
   changed_.resize(n);
   classified_bodies_.resize(n);
-  const auto bits = [](double a, double b) { return std::bit_cast<std::uint64_t>(a) ^ std::bit_cast<std::uint64_t>(b); };
+  visited_.resize(n, 0);
+  if (++visit_ == 0) std::fill(visited_.begin(), visited_.end(), 0), visit_ = 1;
   // (Spans, not the vectors: the byte stores could alias their pointers, reloaded at every body.)
   const std::span<const Vector> position(k.position), velocity(k.velocity);
   const std::span<const Rect> boxes(k.box);
   const std::span<const double> mass(k.mass), restitution(k.restitution), friction(k.friction);
   const std::span<ClassifiedBody> bodies(classified_bodies_);
   const std::span<std::uint8_t> changed(changed_);
+  const std::span<std::uint32_t> visited(visited_);
+  const auto bits = [](double a, double b) { return std::bit_cast<std::uint64_t>(a) ^ std::bit_cast<std::uint64_t>(b); };
+  const auto look = [&](std::size_t e) {
+    ClassifiedBody& was = bodies[e];
+    const Vector p = position[e], v = velocity[e];
+    const Rect box = boxes[e];
+    const double m = mass[e], r = restitution[e], f = friction[e];
+    const std::uint64_t differ = bits(was.position.x, p.x) | bits(was.position.y, p.y) | bits(was.velocity.x, v.x) |
+                                 bits(was.velocity.y, v.y) | bits(was.mass, m) | bits(was.restitution, r) |
+                                 bits(was.friction, f) | static_cast<std::uint32_t>(was.box.width ^ box.width) |
+                                 static_cast<std::uint32_t>(was.box.height ^ box.height);
+    changed[e] = e >= known || differ != 0;
+    if (changed[e]) was = {p, v, box, m, r, f};
+  };
+  // A pile has several pairs a body: then every body, in ranges, without the marks.
+  if (pairs_.size() < n) {
+    for (const Pair& p : pairs_)
+      for (const EntityId e : {p.c, p.b})
+        if (visited[e] != visit_) visited[e] = visit_, look(e);
+    return;
+  }
   workers_or_one(workers_).for_ranges(n, min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
-    for (std::size_t e = begin; e < end; ++e) {
-      ClassifiedBody& was = bodies[e];
-      const Vector p = position[e], v = velocity[e];
-      const Rect box = boxes[e];
-      const double m = mass[e], r = restitution[e], f = friction[e];
-      const std::uint64_t differ = bits(was.position.x, p.x) | bits(was.position.y, p.y) | bits(was.velocity.x, v.x) |
-                                   bits(was.velocity.y, v.y) | bits(was.mass, m) | bits(was.restitution, r) |
-                                   bits(was.friction, f) | static_cast<std::uint32_t>(was.box.width ^ box.width) |
-                                   static_cast<std::uint32_t>(was.box.height ^ box.height);
-      changed[e] = e >= known || differ != 0;
-      if (changed[e]) was = {p, v, box, m, r, f};
-    }
+    for (std::size_t e = begin; e < end; ++e) look(e);
   });
 }
 
@@ -1307,20 +1320,18 @@ bool ContactSolver::any_overlap(const Components& k, double slop) {
   const std::span<const Vector> position(k.position);
   const std::span<const Rect> boxes(k.box);
   const std::span<const ClassifiedBody> bodies(classified_bodies_);
-  const std::span<std::uint8_t> moved(changed_);  // (changed_'s room: classify() makes it anew)
   const auto bits = [](double a, double b) { return std::bit_cast<std::uint64_t>(a) ^ std::bit_cast<std::uint64_t>(b); };
-  for (std::size_t e = 0; e < n; ++e) {
+  const auto moved = [&](EntityId e) {
     const ClassifiedBody& was = bodies[e];
     const Vector p = position[e];
     const Rect box = boxes[e];
-    moved[e] = (bits(was.position.x, p.x) | bits(was.position.y, p.y) |
-                static_cast<std::uint32_t>(was.box.width ^ box.width) |
-                static_cast<std::uint32_t>(was.box.height ^ box.height)) != 0;
-  }
+    return (bits(was.position.x, p.x) | bits(was.position.y, p.y) | static_cast<std::uint32_t>(was.box.width ^ box.width) |
+            static_cast<std::uint32_t>(was.box.height ^ box.height)) != 0;
+  };
   const std::size_t known = classified_pairs_.size();  // pairs_ starts with them (turned_to_meet() appends)
   for (std::size_t i = 0; i < pairs_.size(); ++i) {
     const Pair p = pairs_[i];
-    if (i < known && !(moved[p.c] | moved[p.b]) ? axes_[i].separation < -slop : overlaps(k, p, slop)) return true;
+    if (i < known && !moved(p.c) && !moved(p.b) ? axes_[i].separation < -slop : overlaps(k, p, slop)) return true;
   }
   return false;
 }

@@ -207,7 +207,9 @@ class ContactSolver {
   void changed_since_classified(const Components& k);
   bool any_overlap(const Components& k, double slop);
   std::vector<ClassifiedBody> classified_bodies_;  // by entity id
-  std::vector<std::uint8_t> changed_;              // by entity id: differs from classified_bodies_
+  std::vector<std::uint8_t> changed_;              // by entity id, for the bodies of pairs_: differs from classified_bodies_
+  std::vector<std::uint32_t> visited_;             // by entity id: the call of changed_since_classified() that looked at it
+  std::uint32_t visit_ = 0;
   std::vector<Pair> classified_pairs_;
   ClassifyInputs classified_for_{};
   bool classified_ = false;
