@@ -284,13 +284,13 @@ void ContactSolver::prepare(const Components& k, double h, Vector g, const Solve
 // corner to corner, whose axes depend on their bodies' other pairs
 // (contact_axes()), and a later round's physical axes take a second pass.
 //
-// A pair of the list last classified whose two bodies have kept their
-// position, velocity and box since (changed_since_classified()) keeps what
-// that classification made of it: the same inputs, the same bits. A
-// resting pile's pairs are nearly all such (many_pyramids: all but 20 of
-// 2.18 million body substeps), and the pass is then one test a pair. A
-// corner pair's axis depends on its bodies' other pairs: it is taken again
-// whenever corner_axes() runs.
+// A pair of the list last classified whose two bodies are unchanged since
+// (changed_since_classified()) keeps what that classification made of it:
+// the same inputs, the same bits. A resting pile's pairs are nearly all
+// such (many_pyramids: all but 20 of 2.18 million body substeps), and the
+// pass is then one test a pair. A corner pair's axis depends on its
+// bodies' other pairs too: corner_axes() takes it again when one of them
+// changed.
 void ContactSolver::classify(const Components& k, double h, double threshold, const SolverSettings& s) {
   Workers& w = workers_or_one(workers_);
   const std::size_t n = pairs_.size();
