@@ -249,7 +249,7 @@ void ContactSolver::prepare(const Components& k, double h, Vector g, const Solve
   // When every pair is what it was (same_kinds_), each contact is where it
   // was: an unchanged pair's (same bodies' state, same inputs) is kept, its
   // accumulators cleared as make_contact() clears them.
-  const bool keep = same_kinds_;
+  const bool keep = keeps_classification && same_kinds_;
   const std::uint8_t flags = w.or_over_ranges(n, min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
     RangeCount at = counts_[static_cast<std::size_t>(t)];
     std::uint8_t bits = 0;
@@ -297,9 +297,9 @@ void ContactSolver::classify(const Components& k, double h, double threshold, co
   // physical_axes() overwrites a later round's axes with others than these inputs give.
   const bool physical = s.physical_axes && !shifted_.empty();
   const ClassifyInputs inputs{h, threshold, s.margin, s.touch};
-  const bool reuse = classified_ && s.impacts && !physical && inputs == classified_for_ &&
+  const bool reuse = keeps_classification && classified_ && s.impacts && !physical && inputs == classified_for_ &&
                      std::equal(pairs_.begin(), pairs_.end(), classified_pairs_.begin(), classified_pairs_.end());
-  changed_since_classified(k);
+  if constexpr (keeps_classification) changed_since_classified(k);
   axes_.resize(n);
   kinds_.resize(n);
   normal_speeds_.resize(n);
@@ -332,7 +332,7 @@ void ContactSolver::classify(const Components& k, double h, double threshold, co
   });
   std::uint8_t second = 0;
   if ((first & 1) || physical) {
-    if (first & 1) corner_axes(k, s, reuse);
+    if (first & 1) corner_axes(k, s, keeps_classification && reuse);
     physical_axes(k, s);
     second = w.or_over_ranges(n, min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
       return range(t, begin, end, std::false_type{});
@@ -342,6 +342,7 @@ void ContactSolver::classify(const Components& k, double h, double threshold, co
   for (std::size_t t = 1; t <= static_cast<std::size_t>(w.threads()); ++t)
     counts_[t].apart += counts_[t - 1].apart, counts_[t].contacts += counts_[t - 1].contacts,
         counts_[t].impacts += counts_[t - 1].impacts;
+  if constexpr (!keeps_classification) return;
   classified_ = !physical && s.impacts;
   classified_for_ = inputs;
   classified_pairs_.assign(pairs_.begin(), pairs_.end());
@@ -1315,7 +1316,7 @@ void ContactSolver::solve_positions(Components& k, std::span<const EntityId> ent
 // (a resting pile's, nearly all) has the separation classify() found.
 bool ContactSolver::any_overlap(const Components& k, double slop) {
   const std::size_t n = k.size();
-  if (!classified_ || classified_bodies_.size() != n)
+  if (!keeps_classification || !classified_ || classified_bodies_.size() != n)
     return std::any_of(pairs_.begin(), pairs_.end(), [&](const Pair& p) { return overlaps(k, p, slop); });
   const std::span<const Vector> position(k.position);
   const std::span<const Rect> boxes(k.box);
@@ -1408,7 +1409,7 @@ inline bool ContactSolver::plain_axis(const Components& k, std::size_t i, double
 void ContactSolver::corner_axes(const Components& k, const SolverSettings& s, bool local) {
   constexpr std::uint8_t wanted = 4;
   faces_.assign(k.size(), local ? 0 : tainted);
-  if (local)
+  if (keeps_classification && local)
     for (const Pair& p : pairs_)
       if (changed_[p.c] | changed_[p.b]) faces_[p.c] |= tainted, faces_[p.b] |= tainted;
   const auto taken = [&](std::size_t i) {
