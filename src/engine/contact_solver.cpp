@@ -28,6 +28,18 @@ bool links(double w, const Vector& v) {  // (v read only for a fixed body)
   return w > 0.0 || (v.x == 0.0 && std::signbit(v.x)) || (v.y == 0.0 && std::signbit(v.y));
 }
 
+// Nonzero when a and b differ in any bit (a zero's sign, a NaN's payload).
+std::uint64_t bits_differ(double a, double b) {
+  return std::bit_cast<std::uint64_t>(a) ^ std::bit_cast<std::uint64_t>(b);
+}
+
+// Nonzero when a body's place (position and box) differs in any bit from the one kept.
+std::uint64_t place_differs(Vector was_at, Rect was_box, Vector at, Rect box) {
+  return bits_differ(was_at.x, at.x) | bits_differ(was_at.y, at.y) |
+         static_cast<std::uint32_t>(was_box.width ^ box.width) |
+         static_cast<std::uint32_t>(was_box.height ^ box.height);
+}
+
 // The contact law (engine/contact.hpp) on a contact's axis.
 inline void apply(Components& k, const ContactConstraint& ct, double impulse) {
   apply_normal_impulse(k.velocity[ct.c], k.velocity[ct.b], axis_normal[ct.axis], impulse, ct.wc, ct.wb);
@@ -367,16 +379,14 @@ void ContactSolver::changed_since_classified(const Components& k) {
   const std::span<ClassifiedBody> bodies(classified_bodies_);
   const std::span<std::uint8_t> changed(changed_);
   const std::span<std::uint32_t> visited(visited_);
-  const auto bits = [](double a, double b) { return std::bit_cast<std::uint64_t>(a) ^ std::bit_cast<std::uint64_t>(b); };
   const auto look = [&](std::size_t e) {
     ClassifiedBody& was = bodies[e];
     const Vector p = position[e], v = velocity[e];
     const Rect box = boxes[e];
     const double m = mass[e], r = restitution[e], f = friction[e];
-    const std::uint64_t differ = bits(was.position.x, p.x) | bits(was.position.y, p.y) | bits(was.velocity.x, v.x) |
-                                 bits(was.velocity.y, v.y) | bits(was.mass, m) | bits(was.restitution, r) |
-                                 bits(was.friction, f) | static_cast<std::uint32_t>(was.box.width ^ box.width) |
-                                 static_cast<std::uint32_t>(was.box.height ^ box.height);
+    const std::uint64_t differ = place_differs(was.position, was.box, p, box) | bits_differ(was.velocity.x, v.x) |
+                                 bits_differ(was.velocity.y, v.y) | bits_differ(was.mass, m) |
+                                 bits_differ(was.restitution, r) | bits_differ(was.friction, f);
     changed[e] = e >= known || differ != 0;
     if (changed[e]) was = {p, v, box, m, r, f};
   };
@@ -718,11 +728,12 @@ void ContactSolver::schedule(const Components& k, Vector g) {
   // Rows i and i + 1 of by_axis_ share no linking body when they come from
   // the same chunk and level: sweep_axis may solve them side by side. The
   // last row of each axis has no next one in its sweep.
+  const auto same_level = [&](std::uint32_t a, std::uint32_t b) {
+    return a / chunk == b / chunk && level_[a] == level_[b];
+  };
   paired_.resize(by_axis_.size());
-  for (std::size_t i = 0; i + 1 < by_axis_.size(); ++i) {
-    const std::uint32_t a = by_axis_[i], b = by_axis_[i + 1];
-    paired_[i] = i + 1 != x_rows_ && a / chunk == b / chunk && level_[a] == level_[b];
-  }
+  for (std::size_t i = 0; i + 1 < by_axis_.size(); ++i)
+    paired_[i] = i + 1 != x_rows_ && same_level(by_axis_[i], by_axis_[i + 1]);
   if (!paired_.empty()) paired_.back() = 0;
   // The same in order_ for the friction sweep: rows i and i + 1 of one chunk
   // and level with normals along the same component (schedule's sort puts a
@@ -730,8 +741,7 @@ void ContactSolver::schedule(const Components& k, Vector g) {
   friction_paired_.resize(order_.size());
   for (std::size_t i = 0; i + 1 < order_.size(); ++i) {
     const std::uint32_t a = order_[i], b = order_[i + 1];
-    friction_paired_[i] = a / chunk == b / chunk && level_[a] == level_[b] &&
-                          (contacts_[a].axis >= 2) == (contacts_[b].axis >= 2);
+    friction_paired_[i] = same_level(a, b) && (contacts_[a].axis >= 2) == (contacts_[b].axis >= 2);
   }
   if (!friction_paired_.empty()) friction_paired_.back() = 0;
 }
@@ -1021,7 +1031,8 @@ bool ContactSolver::sweep_axis(std::span<SolverRow> rows, [[maybe_unused]] std::
 // rounds as the scalar instruction does, and max(0, x) is (0 > x ? 0 : x),
 // std::max(x, 0.0)'s choice for a NaN and for -0 too.
 template <double Vector::*v>
-[[gnu::always_inline]] inline bool ContactSolver::sweep_two(SolverRow& r0, SolverRow& r1, std::span<SolverBody> bodies) {
+[[gnu::always_inline]] inline bool ContactSolver::sweep_two(SolverRow& r0, SolverRow& r1,
+                                                            std::span<SolverBody> bodies) {
   SolverBody& c0 = bodies[r0.c];
   SolverBody& b0 = bodies[r0.b];
   SolverBody& c1 = bodies[r1.c];
@@ -1059,13 +1070,12 @@ void ContactSolver::prepare_friction(const Components& k, bool any) {
 // (The inelastic velocities are copied only when some impact bounces: else
 // they are the velocities themselves, which the energy guard reads then.)
 void ContactSolver::restitution(Components& k, Vector g, const SolverSettings& s) {
-  const bool bounced = std::any_of(impacts_.begin(), impacts_.end(), [&](std::uint32_t i) { return bounces(contacts_[i]); });
-  have_inelastic_ = bounced;
-  if (!bounced) {
+  have_inelastic_ = false;
+  if (std::none_of(impacts_.begin(), impacts_.end(), [&](std::uint32_t i) { return bounces(contacts_[i]); })) {
     guard_energy(k);
     return;
   }
-  for (std::size_t i = 0; i < slot_body_.size(); ++i) v_inelastic_[i] = k.velocity[slot_body_[i]];
+  keep_inelastic(k);
   for (const std::uint32_t i : impacts_) {
     const ContactConstraint& ct = contacts_[i];
     if (bounces(ct)) apply(k, ct, ct.restitution * ct.lambda);
@@ -1141,7 +1151,8 @@ void ContactSolver::store() {
       const double jn = ct.lambda + ct.lambda2 + (earlier ? earlier_jn[p] : 0.0);
       const bool keep = ct.resting && jn > 0.0;
       last_jn[i] = keep ? jn : 0.0;
-      last_jt[i] = (friction.empty() ? 0.0 : friction[i].lambda + friction[i].lambda2) + (earlier ? earlier_jt[p] : 0.0);
+      last_jt[i] =
+          (friction.empty() ? 0.0 : friction[i].lambda + friction[i].lambda2) + (earlier ? earlier_jt[p] : 0.0);
     }
   });
   restored_ = false;
@@ -1182,11 +1193,17 @@ void ContactSolver::restore(std::span<const WarmImpulse> impulses) {
 // touching finite bodies: if the kinetic energy ended above where it started,
 // scale the restitution impulses down until it does not (and, if the
 // inelastic velocities alone are above, move back towards the starting ones).
+// The velocities after the inelastic relaxation, by slot (restitution()'s
+// and the energy guard's v_inelastic_).
+void ContactSolver::keep_inelastic(const Components& k) {
+  for (std::size_t i = 0; i < slot_body_.size(); ++i) v_inelastic_[i] = k.velocity[slot_body_[i]];
+  have_inelastic_ = true;
+}
+
 // Both are blends of impulse sets, so momentum is kept.
 void ContactSolver::guard_energy(Components& k) {
   if (!any_body_gained(k)) return;
-  if (!have_inelastic_)
-    for (std::size_t i = 0; i < slot_body_.size(); ++i) v_inelastic_[i] = k.velocity[slot_body_[i]];
+  if (!have_inelastic_) keep_inelastic(k);
   island_energies(k);
   // Largest s in [0, 1] with a s² + b s + c <= 0, given c <= 0.
   const auto largest = [](double a, double b, double c) {
@@ -1321,13 +1338,8 @@ bool ContactSolver::any_overlap(const Components& k, double slop) {
   const std::span<const Vector> position(k.position);
   const std::span<const Rect> boxes(k.box);
   const std::span<const ClassifiedBody> bodies(classified_bodies_);
-  const auto bits = [](double a, double b) { return std::bit_cast<std::uint64_t>(a) ^ std::bit_cast<std::uint64_t>(b); };
   const auto moved = [&](EntityId e) {
-    const ClassifiedBody& was = bodies[e];
-    const Vector p = position[e];
-    const Rect box = boxes[e];
-    return (bits(was.position.x, p.x) | bits(was.position.y, p.y) | static_cast<std::uint32_t>(was.box.width ^ box.width) |
-            static_cast<std::uint32_t>(was.box.height ^ box.height)) != 0;
+    return place_differs(bodies[e].position, bodies[e].box, position[e], boxes[e]) != 0;
   };
   const std::size_t known = classified_pairs_.size();  // pairs_ starts with them (turned_to_meet() appends)
   for (std::size_t i = 0; i < pairs_.size(); ++i) {

@@ -355,7 +355,8 @@ class ContactSolver {
   std::vector<double> targets_;                // by contact: its target in this relaxation (load_rows(), for the bottom-up pass)
   std::vector<double> inverse_mass_;           // by entity id, this substep's (solve_velocities)
   std::vector<Vector> v_start_, v_inelastic_;  // by slot
-  bool have_inelastic_ = false;                // v_inelastic_ holds this round's (restitution())
+  bool have_inelastic_ = false;                // v_inelastic_ holds this round's (keep_inelastic())
+  void keep_inelastic(const Components& k);
   std::vector<std::uint32_t> impacts_;         // the contacts that are not resting, in order
   // The energy guard's islands: kinetic energies at the start, after the
   // inelastic relaxation and at the end, and the coefficients of the
