@@ -13,6 +13,7 @@
 #include <type_traits>
 
 #include "engine/contact.hpp"
+#include "engine/same_bits.hpp"
 #include "course/utils/rect.hpp"
 
 namespace physics {
@@ -26,11 +27,6 @@ std::uint64_t key(EntityId c, EntityId b) { return Pair{c, b}.key(); }
 // component of its velocity is -0 (which a contact would turn to +0).
 bool links(double w, const Vector& v) {  // (v read only for a fixed body)
   return w > 0.0 || (v.x == 0.0 && std::signbit(v.x)) || (v.y == 0.0 && std::signbit(v.y));
-}
-
-// Nonzero when a and b differ in any bit (a zero's sign, a NaN's payload).
-std::uint64_t bits_differ(double a, double b) {
-  return std::bit_cast<std::uint64_t>(a) ^ std::bit_cast<std::uint64_t>(b);
 }
 
 // Nonzero when a body's place (position and box) differs in any bit from the one kept.
@@ -252,6 +248,20 @@ void ContactSolver::prepare(const Components& k, double h, Vector g, const Solve
   // not an impact, so no bounce (otherwise a block on the floor would hop).
   const double threshold = 2.0 * Vector::norm(g) * h + 1e-12;
   classify(k, h, threshold, s);
+  const std::uint8_t flags = kept_all_ ? keep_contacts() : make_contacts(k, h);
+  moving_fixed_ = flags & 1;
+  stats.contacts += static_cast<std::int64_t>(contacts_.size());
+  prepare_friction(k, flags & 2, kept_all_);
+  schedule(k, g, kept_all_);
+  // Velocities before any impulse, for the energy guard and the impact time.
+  v_start_.resize(slot_body_.size());
+  v_inelastic_.resize(slot_body_.size());
+  for (std::size_t i = 0; i < slot_body_.size(); ++i) v_start_[i] = k.velocity[slot_body_[i]];
+}
+
+// The contacts of the pairs classify() found within reach, with the lists
+// of impacts and of pairs apart; the bits of make_contact(), ORed.
+std::uint8_t ContactSolver::make_contacts(const Components& k, double h) {
   Workers& w = workers_or_one(workers_);
   const std::size_t n = pairs_.size();
   const RangeCount& all = counts_.back();
@@ -262,7 +272,7 @@ void ContactSolver::prepare(const Components& k, double h, Vector g, const Solve
   // was: an unchanged pair's (same bodies' state, same inputs) is kept, its
   // accumulators cleared as make_contact() clears them.
   const bool keep = keeps_classification && same_kinds_;
-  const std::uint8_t flags = w.or_over_ranges(n, min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
+  return w.or_over_ranges(n, min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
     RangeCount at = counts_[static_cast<std::size_t>(t)];
     std::uint8_t bits = 0;
     for (std::size_t i = begin; i < end; ++i) {
@@ -280,14 +290,16 @@ void ContactSolver::prepare(const Components& k, double h, Vector g, const Solve
     }
     return bits;
   });
-  moving_fixed_ = flags & 1;
-  stats.contacts += static_cast<std::int64_t>(contacts_.size());
-  prepare_friction(k, flags & 2);
-  schedule(k, g);
-  // Velocities before any impulse, for the energy guard and the impact time.
-  v_start_.resize(slot_body_.size());
-  v_inelastic_.resize(slot_body_.size());
-  for (std::size_t i = 0; i < slot_body_.size(); ++i) v_start_[i] = k.velocity[slot_body_[i]];
+}
+
+// When classify() kept every pair and every body as they were (kept_all_),
+// the last preparation's contacts, lists and topology are this one's: only
+// the accumulators are cleared, as make_contact() clears them.
+std::uint8_t ContactSolver::keep_contacts() {
+  std::uint8_t bits = 0;
+  for (std::size_t j = 0; j < contacts_.size(); ++j)
+    contacts_[j].lambda = contacts_[j].lambda2 = 0.0, bits |= contact_bits_[j];
+  return bits;
 }
 
 // Each pair's axis (axes_) and what prepare() makes of it (kinds_), and
@@ -312,6 +324,13 @@ void ContactSolver::classify(const Components& k, double h, double threshold, co
   const bool reuse = keeps_classification && classified_ && s.impacts && !physical && inputs == classified_for_ &&
                      std::equal(pairs_.begin(), pairs_.end(), classified_pairs_.begin(), classified_pairs_.end());
   if constexpr (keeps_classification) changed_since_classified(k);
+  // No body changed either (a resting pile, most substeps): every pair's
+  // axis, kind and count is the last call's.
+  kept_all_ = reuse && !any_changed_ && counts_.size() == static_cast<std::size_t>(w.threads()) + 1;
+  if (kept_all_) {
+    same_kinds_ = true;
+    return;
+  }
   axes_.resize(n);
   kinds_.resize(n);
   normal_speeds_.resize(n);
@@ -392,13 +411,17 @@ void ContactSolver::changed_since_classified(const Components& k) {
   };
   // A pile has several pairs a body: then every body, in ranges, without the marks.
   if (pairs_.size() < n) {
+    bool any = false;
     for (const Pair& p : pairs_)
       for (const EntityId e : {p.c, p.b})
-        if (visited[e] != visit_) visited[e] = visit_, look(e);
+        if (visited[e] != visit_) visited[e] = visit_, look(e), any = any || changed[e];
+    any_changed_ = any;
     return;
   }
-  workers_or_one(workers_).for_ranges(n, min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
-    for (std::size_t e = begin; e < end; ++e) look(e);
+  any_changed_ = workers_or_one(workers_).or_over_ranges(n, min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+    std::uint8_t any = 0;
+    for (std::size_t e = begin; e < end; ++e) look(e), any |= changed[e];
+    return any;
   });
 }
 
@@ -673,12 +696,13 @@ void ContactSolver::relax(Components& k, Vector g, const SolverSettings& s) {
 // A fixed body links nothing: its contacts add (0·j)·n to its velocity,
 // which leaves it as it is unless a component is -0 (then it links).
 // prepare() lists the contacts' keys for it.
-void ContactSolver::schedule(const Components& k, Vector g) {
+void ContactSolver::schedule(const Components& k, Vector g, bool kept_all) {
   // All this (and the support order) depends only on the contacts' bodies,
   // axes and links (prepare() lists them in topology_next_), and on
   // gravity's direction: a resting pile keeps them from substep to substep.
-  topology_.swap(topology_next_);
-  same_topology_ = topology_ == topology_next_;
+  // (kept_all: the contacts are last substep's, topology_ theirs.)
+  if (!kept_all) topology_.swap(topology_next_);
+  same_topology_ = kept_all || topology_ == topology_next_;
   if (scheduled_ && g == topology_g_ && same_topology_) return;
   scheduled_ = true, have_order_ = false;
   topology_g_ = g;
@@ -1054,7 +1078,11 @@ template <double Vector::*v>
 #endif
 
 // One friction row per contact if any contact has friction, none otherwise.
-void ContactSolver::prepare_friction(const Components& k, bool any) {
+void ContactSolver::prepare_friction(const Components& k, bool any, bool kept_all) {
+  if (kept_all && any && friction_.size() == contacts_.size()) {  // (the same pairs: the same coefficients)
+    for (FrictionRow& f : friction_) f.lambda = f.lambda2 = 0.0;
+    return;
+  }
   friction_.clear();
   if (!any) return;
   friction_.reserve(contacts_.size());
@@ -1342,11 +1370,19 @@ bool ContactSolver::any_overlap(const Components& k, double slop) {
     return place_differs(bodies[e].position, bodies[e].box, position[e], boxes[e]) != 0;
   };
   const std::size_t known = classified_pairs_.size();  // pairs_ starts with them (turned_to_meet() appends)
-  for (std::size_t i = 0; i < pairs_.size(); ++i) {
-    const Pair p = pairs_[i];
-    if (i < known && !moved(p.c) && !moved(p.b) ? axes_[i].separation < -slop : overlaps(k, p, slop)) return true;
-  }
-  return false;
+  const auto any = [&](auto moved_pair) {
+    for (std::size_t i = 0; i < pairs_.size(); ++i) {
+      const Pair p = pairs_[i];
+      if (i < known && !moved_pair(p) ? axes_[i].separation < -slop : overlaps(k, p, slop)) return true;
+    }
+    return false;
+  };
+  // A pile has several pairs a body: each body is then looked at once
+  // (moved_), not at each of its pairs (a falling rain's few pairs: at each).
+  if (pairs_.size() < n) return any([&](Pair p) { return moved(p.c) || moved(p.b); });
+  moved_.resize(n);
+  for (std::size_t e = 0; e < n; ++e) moved_[e] = moved(static_cast<EntityId>(e));
+  return any([&](Pair p) { return (moved_[p.c] | moved_[p.b]) != 0; });
 }
 
 // Whether any pair overlaps by more than the slop; if so, the contacts

@@ -190,6 +190,8 @@ class ContactSolver {
   // The stages of solve_velocities, in order.
   void prepare(const Components& k, double h, Vector g, const SolverSettings& s);
   void classify(const Components& k, double h, double threshold, const SolverSettings& s);
+  std::uint8_t make_contacts(const Components& k, double h);
+  std::uint8_t keep_contacts();
   enum class PairKind : std::uint8_t { apart, left /* to CCD */, contact, impact };
   // Inlined into prepare()'s loops, their only callers: called, they made
   // the pyramid's step 2.7 % longer (saved registers and reloads).
@@ -219,15 +221,18 @@ class ContactSolver {
   std::vector<ClassifiedBody> classified_bodies_;  // by entity id
   std::vector<std::uint8_t> changed_;              // by entity id, for the bodies of pairs_: differs from classified_bodies_
   std::vector<std::uint32_t> visited_;             // by entity id: the call of changed_since_classified() that looked at it
+  std::vector<std::uint8_t> moved_;                // by entity id (any_overlap()): place differs from classified_bodies_
   std::uint32_t visit_ = 0;
   std::vector<Pair> classified_pairs_;
   ClassifyInputs classified_for_{};
   bool classified_ = false;
   bool same_kinds_ = false;                 // classify() kept the last list and every pair's kind
+  bool any_changed_ = true;                 // changed_ holds a change
+  bool kept_all_ = false;                   // classify() kept everything (the same pairs, no body changed)
   std::vector<std::uint8_t> contact_bits_;  // by contact: make_contact()'s result
   static bool turned_by_forces(const SolverSettings& s, const Pair& p, Vector n);
   static bool left_to_ccd(const SolverSettings& s, const Pair& p, Vector n, bool impact, bool closes_apart);
-  void schedule(const Components& k, Vector g);
+  void schedule(const Components& k, Vector g, bool kept_all);
   void warm_start(Components& k);
   void warm_start_search(Components& k);
   void warm_start_one(Components& k, std::size_t i, double jn, double jt);
@@ -239,7 +244,7 @@ class ContactSolver {
   void store_rows(Components& k);
   template <bool friction>
   void iterate(const SolverSettings& s);
-  void prepare_friction(const Components& k, bool any);
+  void prepare_friction(const Components& k, bool any, bool kept_all);
   void restitution(Components& k, Vector g, const SolverSettings& s);
   void guard_energy(Components& k);
   bool any_body_gained(const Components& k) const;

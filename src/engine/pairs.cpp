@@ -5,6 +5,8 @@
 #include <functional>
 #include <limits>
 
+#include "engine/same_bits.hpp"
+
 namespace physics {
 
 namespace {
@@ -25,6 +27,11 @@ using Bounds = BroadPhase::Bounds;
 // Closed test: touching boxes are candidates (resting contact). A NaN bound
 // fails it, so a lost body has no pair.
 bool touch(const Bounds& a, const Bounds& b) { return a.x0 <= b.x1 && b.x0 <= a.x1 && a.y0 <= b.y1 && b.y0 <= a.y1; }
+
+// Nonzero when two boxes differ in any bit.
+std::uint64_t bounds_differ(const Bounds& a, const Bounds& b) {
+  return bits_differ(a.x0, b.x0) | bits_differ(a.y0, b.y0) | bits_differ(a.x1, b.x1) | bits_differ(a.y1, b.y1);
+}
 
 // Whether `inner` lies within `outer` (closed; a NaN bound fails it).
 bool within(const Bounds& inner, const Bounds& outer) {
@@ -199,17 +206,30 @@ void BroadPhase::find(const Components& k, std::span<const EntityId> entities, d
   ++finds_;
   current_.resize(n);
   const bool same = fat_built_ && n == entities_.size() && std::equal(entities.begin(), entities.end(), entities_.begin());
-  const bool left = w.or_over_ranges(n, min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+  // The last call's pairs are this one's when it has the same bodies and
+  // finds each one's swept box as it was (current_ holds the last call's):
+  // the grid is then kept, its candidates are the same, and the pairs are
+  // those of the candidates' boxes that touch (h and reach only set the boxes).
+  const bool again = found_valid_ && same && !k.any_rules();
+  const std::uint8_t flags = w.or_over_ranges(n, min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
     bool inside = same;  // (same implies fat_ holds the same n bodies)
+    std::uint64_t moved = 0;
     for (std::size_t i = begin; i < end; ++i) {
-      const Bounds s = current_[i] = swept(k, entities[i], h, reach);
+      const Bounds s = swept(k, entities[i], h, reach);
+      if (again) moved |= bounds_differ(s, current_[i]);
+      current_[i] = s;
       // (A NaN fails the test: a rebuild, which handles it.)
       if (!inside) continue;
       inside = within(s, fat_[i]) && fixed_[i] == !std::isfinite(k.mass[entities[i]]);
     }
-    return static_cast<std::uint8_t>(!inside);  // a body of the range left its box (or a different list)
+    // Bit 1: a body of the range left its box (or a different list); bit 2: a swept box changed.
+    return static_cast<std::uint8_t>((inside ? 0 : 1) | (moved != 0 ? 2 : 0));
   });
-  if (left) fat_rebuild(k, entities, h, w);
+  if (flags & 1) fat_rebuild(k, entities, h, w);
+  if (again && flags == 0) {
+    out.assign(last_found_.begin(), last_found_.end());
+    return;
+  }
   // The candidates that touch, each range's in order, then joined in range order.
   const std::vector<PairKey>& candidates = grid_.pairs();
   out.clear();
@@ -228,6 +248,8 @@ void BroadPhase::find(const Components& k, std::span<const EntityId> entities, d
     out.insert(out.end(), part.begin(), part.end());
   }
   if (k.any_rules()) std::erase_if(out, [&](Pair p) { return !keeps(rule, k, p.c, p.b, h); });
+  last_found_.assign(out.begin(), out.end());
+  found_valid_ = !k.any_rules();
 }
 
 bool BroadPhase::holds(const Components& k, std::span<const EntityId> entities) const {
