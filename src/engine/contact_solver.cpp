@@ -248,11 +248,12 @@ void ContactSolver::prepare(const Components& k, double h, Vector g, const Solve
   // not an impact, so no bounce (otherwise a block on the floor would hop).
   const double threshold = 2.0 * Vector::norm(g) * h + 1e-12;
   classify(k, h, threshold, s);
-  const std::uint8_t flags = kept_all_ ? keep_contacts() : make_contacts(k, h);
+  const bool kept_all = keeps_unchanged && kept_all_;
+  const std::uint8_t flags = kept_all ? keep_contacts() : make_contacts(k, h);
   moving_fixed_ = flags & 1;
   stats.contacts += static_cast<std::int64_t>(contacts_.size());
-  prepare_friction(k, flags & 2, kept_all_);
-  schedule(k, g, kept_all_);
+  prepare_friction(k, flags & 2, kept_all);
+  schedule(k, g, kept_all);
   // Velocities before any impulse, for the energy guard and the impact time.
   v_start_.resize(slot_body_.size());
   v_inelastic_.resize(slot_body_.size());
@@ -271,7 +272,7 @@ std::uint8_t ContactSolver::make_contacts(const Components& k, double h) {
   // When every pair is what it was (same_kinds_), each contact is where it
   // was: an unchanged pair's (same bodies' state, same inputs) is kept, its
   // accumulators cleared as make_contact() clears them.
-  const bool keep = keeps_classification && same_kinds_;
+  const bool keep = keeps_unchanged && same_kinds_;
   return w.or_over_ranges(n, min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
     RangeCount at = counts_[static_cast<std::size_t>(t)];
     std::uint8_t bits = 0;
@@ -321,9 +322,9 @@ void ContactSolver::classify(const Components& k, double h, double threshold, co
   // physical_axes() overwrites a later round's axes with others than these inputs give.
   const bool physical = s.physical_axes && !shifted_.empty();
   const ClassifyInputs inputs{h, threshold, s.margin, s.touch};
-  const bool reuse = keeps_classification && classified_ && s.impacts && !physical && inputs == classified_for_ &&
+  const bool reuse = keeps_unchanged && classified_ && s.impacts && !physical && inputs == classified_for_ &&
                      std::equal(pairs_.begin(), pairs_.end(), classified_pairs_.begin(), classified_pairs_.end());
-  if constexpr (keeps_classification) changed_since_classified(k);
+  if constexpr (keeps_unchanged) changed_since_classified(k);
   // No body changed either (a resting pile, most substeps): every pair's
   // axis, kind and count is the last call's.
   kept_all_ = reuse && !any_changed_ && counts_.size() == static_cast<std::size_t>(w.threads()) + 1;
@@ -363,7 +364,7 @@ void ContactSolver::classify(const Components& k, double h, double threshold, co
   });
   std::uint8_t second = 0;
   if ((first & 1) || physical) {
-    if (first & 1) corner_axes(k, s, keeps_classification && reuse);
+    if (first & 1) corner_axes(k, s, keeps_unchanged && reuse);
     physical_axes(k, s);
     second = w.or_over_ranges(n, min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
       return range(t, begin, end, std::false_type{});
@@ -373,10 +374,10 @@ void ContactSolver::classify(const Components& k, double h, double threshold, co
   for (std::size_t t = 1; t <= static_cast<std::size_t>(w.threads()); ++t)
     counts_[t].apart += counts_[t - 1].apart, counts_[t].contacts += counts_[t - 1].contacts,
         counts_[t].impacts += counts_[t - 1].impacts;
-  if constexpr (!keeps_classification) return;
+  if constexpr (!keeps_unchanged) return;
   classified_ = !physical && s.impacts;
   classified_for_ = inputs;
-  classified_pairs_.assign(pairs_.begin(), pairs_.end());
+  if (!reuse) classified_pairs_.assign(pairs_.begin(), pairs_.end());  // (reuse: they are equal)
 }
 
 // changed_: for each body of a pair, whether what prepare() reads of it
@@ -1361,7 +1362,7 @@ void ContactSolver::solve_positions(Components& k, std::span<const EntityId> ent
 // (a resting pile's, nearly all) has the separation classify() found.
 bool ContactSolver::any_overlap(const Components& k, double slop) {
   const std::size_t n = k.size();
-  if (!keeps_classification || !classified_ || classified_bodies_.size() != n)
+  if (!keeps_unchanged || !classified_ || classified_bodies_.size() != n)
     return std::any_of(pairs_.begin(), pairs_.end(), [&](const Pair& p) { return overlaps(k, p, slop); });
   const std::span<const Vector> position(k.position);
   const std::span<const Rect> boxes(k.box);
@@ -1457,7 +1458,7 @@ inline bool ContactSolver::plain_axis(const Components& k, std::size_t i, double
 void ContactSolver::corner_axes(const Components& k, const SolverSettings& s, bool local) {
   constexpr std::uint8_t wanted = 4;
   faces_.assign(k.size(), local ? 0 : tainted);
-  if (keeps_classification && local)
+  if (keeps_unchanged && local)
     for (const Pair& p : pairs_)
       if (changed_[p.c] | changed_[p.b]) faces_[p.c] |= tainted, faces_[p.b] |= tainted;
   const auto taken = [&](std::size_t i) {

@@ -57,21 +57,12 @@
 #include "engine/contact.hpp"
 #include "engine/island_solve.hpp"
 #include "engine/pairs.hpp"
+#include "engine/same_bits.hpp"
 #include "engine/timing.hpp"
 #include "engine/union_find.hpp"
 #include "engine/workers.hpp"
 
 namespace physics {
-
-// Whether the stable solver keeps each pair's classification and contact
-// while its bodies do not change (ContactSolver::classify): the same bits
-// either way. Not in the browser's build (WebAssembly under WASI), which
-// stays within its size budget without that code (docs/web.md).
-#if defined(__wasi__)
-inline constexpr bool keeps_classification = false;
-#else
-inline constexpr bool keeps_classification = true;
-#endif
 
 struct SolverSettings {
   int iterations = 8;         // velocity and position iterations

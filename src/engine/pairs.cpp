@@ -210,7 +210,7 @@ void BroadPhase::find(const Components& k, std::span<const EntityId> entities, d
   // finds each one's swept box as it was (current_ holds the last call's):
   // the grid is then kept, its candidates are the same, and the pairs are
   // those of the candidates' boxes that touch (h and reach only set the boxes).
-  const bool again = found_valid_ && same && !k.any_rules();
+  const bool again = keeps_unchanged && found_valid_ && same && !k.any_rules();
   const std::uint8_t flags = w.or_over_ranges(n, min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
     bool inside = same;  // (same implies fat_ holds the same n bodies)
     std::uint64_t moved = 0;
@@ -248,6 +248,7 @@ void BroadPhase::find(const Components& k, std::span<const EntityId> entities, d
     out.insert(out.end(), part.begin(), part.end());
   }
   if (k.any_rules()) std::erase_if(out, [&](Pair p) { return !keeps(rule, k, p.c, p.b, h); });
+  if constexpr (!keeps_unchanged) return;
   last_found_.assign(out.begin(), out.end());
   found_valid_ = !k.any_rules();
 }

@@ -1,7 +1,8 @@
-// Bit-for-bit comparison of doubles, for the stages that keep what they
-// computed while its inputs stay the same (a resting pile's bodies come back
-// to the same bits substep after substep): == would take -0 for +0, whose
-// signs the contact law does not treat alike, and never a NaN for itself.
+// What the stages that keep their results while their inputs stay the same
+// share: a resting pile's bodies come back to the same bits substep after
+// substep, and the broad phase's pairs (BroadPhase::find) and the stable
+// solver's classification and contacts (ContactSolver::classify, prepare)
+// are then the last ones.
 #pragma once
 
 #include <bit>
@@ -9,7 +10,18 @@
 
 namespace physics {
 
-// Nonzero when a and b differ in any bit (a zero's sign, a NaN's payload).
+// Whether they keep them: the same bits either way. Not in the browser's
+// build (WebAssembly under WASI), which stays within its size budget
+// without that code (docs/web.md).
+#if defined(__wasi__)
+inline constexpr bool keeps_unchanged = false;
+#else
+inline constexpr bool keeps_unchanged = true;
+#endif
+
+// Nonzero when a and b differ in any bit (a zero's sign, a NaN's payload):
+// == would take -0 for +0, whose signs the contact law does not treat
+// alike, and never a NaN for itself.
 inline std::uint64_t bits_differ(double a, double b) {
   return std::bit_cast<std::uint64_t>(a) ^ std::bit_cast<std::uint64_t>(b);
 }
