@@ -213,11 +213,17 @@ void BroadPhase::find(const Components& k, std::span<const EntityId> entities, d
   const bool again = keeps_unchanged && found_valid_ && same && !k.any_rules();
   const std::uint8_t flags = w.or_over_ranges(n, min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
     bool inside = same;  // (same implies fat_ holds the same n bodies)
+    // Compared up to the first change only (a falling rain's first body).
     std::uint64_t moved = 0;
-    for (std::size_t i = begin; i < end; ++i) {
+    std::size_t i = begin;
+    for (; again && !moved && i < end; ++i) {
       const Bounds s = swept(k, entities[i], h, reach);
-      if (again) moved |= bounds_differ(s, current_[i]);
+      moved = bounds_differ(s, current_[i]);
       current_[i] = s;
+      inside = inside && within(s, fat_[i]) && fixed_[i] == !std::isfinite(k.mass[entities[i]]);
+    }
+    for (; i < end; ++i) {
+      const Bounds s = current_[i] = swept(k, entities[i], h, reach);
       // (A NaN fails the test: a rebuild, which handles it.)
       if (!inside) continue;
       inside = within(s, fat_[i]) && fixed_[i] == !std::isfinite(k.mass[entities[i]]);
