@@ -46,6 +46,47 @@ BOOST_AUTO_TEST_CASE(candidate_pairs_are_the_all_pairs_ones_in_registration_orde
     }
 }
 
+// One broad phase asked again and again, as the world asks it: it keeps its
+// grid while the bodies stay in their fat boxes, and its last pairs while
+// every swept box keeps its bits. Moves far smaller than the fat margin must
+// still make and break pairs (two boxes 0.25 px apart, then touching).
+BOOST_AUTO_TEST_CASE(a_kept_broad_phase_sees_every_small_change) {
+  World w = test::physics_world();
+  Game::init_walls(w);
+  Random rng(21);
+  for (int i = 0; i < 300; ++i) {
+    const auto b = Block::make(w, rng.uniform(0, 780), rng.uniform(0, 580), rng.uniform_int(1, 30),
+                               rng.uniform_int(1, 30), test::grey, rng.uniform(1, 5));
+    w.components.velocity[b.id] = {rng.uniform(-0.01, 0.01), rng.uniform(-0.01, 0.01)};
+  }
+  const EntityId left = Block::make(w, 100, 100, 20, 20, test::grey, 1.0).id;
+  const EntityId right = Block::make(w, 120, 100, 20, 20, test::grey, 1.0).id;
+  w.components.velocity[left] = w.components.velocity[right] = {0.0, 0.0};
+  BroadPhase bp;
+  const auto ids = w.bodies(SystemId::collision);
+  const auto has = [](const std::vector<Pair>& pairs, EntityId a, EntityId b) {
+    return std::find(pairs.begin(), pairs.end(), Pair{std::min(a, b), std::max(a, b)}) != pairs.end();
+  };
+  std::vector<Pair> found, expected;
+  const auto check = [&](double h, double reach) {
+    bp.find(w.components, ids, h, reach, found);
+    brute_force_pairs(w.components, ids, h, reach, expected);
+    BOOST_TEST_REQUIRE((found == expected));
+  };
+  for (int round = 0; round < 40; ++round) {
+    check(16.0, 0.0);
+    check(16.0, 0.0);  // nothing changed: the kept pairs
+    BOOST_TEST(has(found, left, right) == (round % 2 == 0));
+    // Apart by a quarter pixel on odd rounds, touching again on even ones.
+    w.components.position[right].x = round % 2 == 0 ? 120.25 : 120.0;
+    // A body's velocity or size, far within its fat box.
+    const EntityId e = ids[rng.uniform_int(0, static_cast<int>(ids.size()) - 1)];
+    if (round % 3 == 0) w.components.velocity[e].x = -w.components.velocity[e].x;
+    if (round % 3 == 1 && e != left && e != right) w.components.box[e].width += 1;
+    if (round % 5 == 4) check(0.0, 0.5);  // another reach, then back
+  }
+}
+
 BOOST_AUTO_TEST_CASE(time_of_impact_is_where_the_relative_motion_enters_the_minkowski_box) {
   World w = test::physics_world();
   const auto a = Block::make(w, 100, 100, 20, 20, test::grey, 1.0).id;
