@@ -48,6 +48,7 @@
 //     only: no velocity is added, so no energy is (unlike a Baumgarte bias).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <tuple>
@@ -227,12 +228,9 @@ class ContactSolver {
   void warm_start(Components& k);
   void warm_start_search(Components& k);
   void warm_start_one(Components& k, std::size_t i, double jn, double jt);
-  template <bool after_bounce>
-  void relax(Components& k, Vector g, const SolverSettings& s);
-  template <bool after_bounce>
-  void load_rows(const Components& k);
-  template <bool after_bounce>
-  void store_rows(Components& k);
+  void relax(Components& k, Vector g, const SolverSettings& s, bool after_bounce);
+  void load_rows(const Components& k, bool after_bounce);
+  void store_rows(Components& k, bool after_bounce);
   template <bool friction>
   void iterate(const SolverSettings& s);
   void prepare_friction(const Components& k, bool any, bool kept_all);
@@ -311,15 +309,20 @@ class ContactSolver {
   static bool friction_row_sse2(SolverRow& r, FrictionHot& f, SolverBody& bc, SolverBody& bb);
   template <bool y>
   static bool friction_two(std::span<SolverRow, 2> r, std::span<FrictionHot, 2> f, std::span<SolverBody> bodies);
-  template <double Vector::*v>
-  bool sweep_axis(std::span<SolverRow> rows, std::span<const std::uint8_t> paired);
-  template <double Vector::*v>
-  static bool sweep_two(SolverRow& r0, SolverRow& r1, std::span<SolverBody> bodies);
+  // Without friction, one velocity component and the inverse mass: the x
+  // rows and the y rows each read their own (axis_bodies_), so that two
+  // threads sweep them at once without sharing a cache line.
+  struct AxisBody {
+    double v, w;
+  };
+  static bool sweep_axis(std::span<SolverRow> rows, std::span<const std::uint8_t> paired, std::span<AxisBody> bodies);
+  static bool sweep_two(SolverRow& r0, SolverRow& r1, std::span<AxisBody> bodies);
   std::span<const std::uint32_t> row_order() const;
   std::uint64_t velocity_finds_ = ~std::uint64_t{0};  // the broad phase's finds() after solve_velocities
   std::vector<std::uint32_t> slot_of_;     // by entity id: slot, or none when not in a contact
   std::vector<EntityId> slot_body_;        // by slot: the entity
-  std::vector<SolverBody> solver_bodies_;  // by slot
+  std::vector<SolverBody> solver_bodies_;  // by slot (with friction)
+  std::array<std::vector<AxisBody>, 2> axis_bodies_;  // by slot, x then y (without friction)
   std::vector<std::uint32_t> order_;       // contacts in the iterations' order
   std::vector<std::uint32_t> by_axis_;     // order_'s x rows, then its y rows (row_order())
   std::size_t x_rows_ = 0;                 // how many of by_axis_ are x rows
