@@ -258,7 +258,9 @@ void ContactSolver::prepare(const Components& k, double h, Vector g, const Solve
   // Velocities before any impulse, for the energy guard and the impact time.
   v_start_.resize(slot_body_.size());
   v_inelastic_.resize(slot_body_.size());
-  for (std::size_t i = 0; i < slot_body_.size(); ++i) v_start_[i] = k.velocity[slot_body_[i]];
+  workers_or_one(workers_).for_ranges(slot_body_.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) v_start_[i] = k.velocity[slot_body_[i]];
+  });
 }
 
 // The contacts of the pairs classify() found within reach, with the lists
@@ -298,10 +300,13 @@ std::uint8_t ContactSolver::make_contacts(const Components& k, double h) {
 // the last preparation's contacts, lists and topology are this one's: only
 // the accumulators are cleared, as make_contact() clears them.
 std::uint8_t ContactSolver::keep_contacts() {
-  std::uint8_t bits = 0;
-  for (std::size_t j = 0; j < contacts_.size(); ++j)
-    contacts_[j].lambda = contacts_[j].lambda2 = 0.0, bits |= contact_bits_[j];
-  return bits;
+  const std::span<ContactConstraint> contacts(contacts_);
+  const std::span<const std::uint8_t> contact_bits(contact_bits_);
+  return workers_or_one(workers_).or_over_ranges(contacts.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+    std::uint8_t bits = 0;
+    for (std::size_t j = begin; j < end; ++j) contacts[j].lambda = contacts[j].lambda2 = 0.0, bits |= contact_bits[j];
+    return bits;
+  });
 }
 
 // Each pair's axis (axes_) and what prepare() makes of it (kinds_), and
@@ -579,11 +584,13 @@ bool ContactSolver::swept_further(const Components& k, double h, double reach) c
   const auto beyond = [&](double v0, double v1) {
     return std::max(std::min(v0, 0.0) - std::min(v1, 0.0), std::max(v1, 0.0) - std::max(v0, 0.0)) * h >= reach;
   };
-  for (std::size_t i = 0; i < slot_body_.size(); ++i) {
-    const Vector v0 = v_start_[i], v1 = k.velocity[slot_body_[i]];
-    if (beyond(v0.x, v1.x) || beyond(v0.y, v1.y)) return true;
-  }
-  return false;
+  return workers_or_one(workers_).or_over_ranges(slot_body_.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const Vector v0 = v_start_[i], v1 = k.velocity[slot_body_[i]];
+      if (beyond(v0.x, v1.x) || beyond(v0.y, v1.y)) return std::uint8_t{1};
+    }
+    return std::uint8_t{0};
+  }) != 0;
 }
 
 // A round's contacts, kept when the substep is solved again: constraints()
@@ -1385,7 +1392,7 @@ void ContactSolver::solve_positions(Components& k, std::span<const EntityId> ent
   // looked for there, without finding the pairs again.
   bool none = false;
   laps.time(Stage::pairs, [&] {
-    none = broadphase.finds() == velocity_finds_ && broadphase.holds(k, entities) && !any_overlap(k, s.slop);
+    none = broadphase.finds() == velocity_finds_ && broadphase.holds(k, entities, s.workers) && !any_overlap(k, s.slop);
     if (none) return;
     broadphase.find(k, entities, 0.0, s.margin, pairs_, PairRule::solvable, s.workers);
     classified_ = false;  // (pairs_ is no longer the list classified)
@@ -1410,19 +1417,25 @@ bool ContactSolver::any_overlap(const Components& k, double slop) {
     return place_differs(bodies[e].position, bodies[e].box, position[e], boxes[e]) != 0;
   };
   const std::size_t known = classified_pairs_.size();  // pairs_ starts with them (turned_to_meet() appends)
+  Workers& w = workers_or_one(workers_);
   const auto any = [&](auto moved_pair) {
-    for (std::size_t i = 0; i < pairs_.size(); ++i) {
-      const Pair p = pairs_[i];
-      if (i < known && !moved_pair(p) ? axes_[i].separation < -slop : overlaps(k, p, slop)) return true;
-    }
-    return false;
+    return w.or_over_ranges(pairs_.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) {
+        const Pair p = pairs_[i];
+        if (i < known && !moved_pair(p) ? axes_[i].separation < -slop : overlaps(k, p, slop)) return std::uint8_t{1};
+      }
+      return std::uint8_t{0};
+    }) != 0;
   };
   // A pile has several pairs a body: each body is then looked at once
   // (moved_), not at each of its pairs (a falling rain's few pairs: at each).
   if (pairs_.size() < n) return any([&](Pair p) { return moved(p.c) || moved(p.b); });
   moved_.resize(n);
-  for (std::size_t e = 0; e < n; ++e) moved_[e] = moved(static_cast<EntityId>(e));
-  return any([&](Pair p) { return (moved_[p.c] | moved_[p.b]) != 0; });
+  const std::span<std::uint8_t> moved_by(moved_);
+  w.for_ranges(n, min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+    for (std::size_t e = begin; e < end; ++e) moved_by[e] = moved(static_cast<EntityId>(e));
+  });
+  return any([&](Pair p) { return (moved_by[p.c] | moved_by[p.b]) != 0; });
 }
 
 // Whether any pair overlaps by more than the slop; if so, the contacts

@@ -259,12 +259,15 @@ void BroadPhase::find(const Components& k, std::span<const EntityId> entities, d
   found_valid_ = !k.any_rules();
 }
 
-bool BroadPhase::holds(const Components& k, std::span<const EntityId> entities) const {
+bool BroadPhase::holds(const Components& k, std::span<const EntityId> entities, Workers* workers) const {
   if (k.any_rules() || !fat_built_ || !std::equal(entities.begin(), entities.end(), entities_.begin(), entities_.end()))
     return false;
-  for (std::size_t i = 0; i < entities.size(); ++i)
-    if (!within(swept(k, entities[i], 0.0, 0.0), current_[i])) return false;
-  return true;
+  const auto left = [&](int, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+      if (!within(swept(k, entities[i], 0.0, 0.0), current_[i])) return std::uint8_t{1};
+    return std::uint8_t{0};
+  };
+  return workers_or_one(workers).or_over_ranges(entities.size(), min_parallel_items, left) == 0;
 }
 
 void BroadPhase::find_selected(const Components& k, std::span<const EntityId> entities,

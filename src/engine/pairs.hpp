@@ -58,8 +58,9 @@ class BroadPhase {
   // Whether every body of `entities`, where it is now, lies within the box
   // the last find() swept for it (for the same bodies, with no contact
   // rules): then every pair whose boxes overlap now was among its pairs.
+  // `workers`: as find()'s.
   // `finds()` counts the calls of find(), to tell whose that last one was.
-  bool holds(const Components& k, std::span<const EntityId> entities) const;
+  bool holds(const Components& k, std::span<const EntityId> entities, Workers* workers = nullptr) const;
   std::uint64_t finds() const { return finds_; }
   // The pairs of find(h, 0) that include a selected body (`selected`, by
   // entity id; CCD's fast bodies in the auto mode). A few selected bodies
