@@ -819,16 +819,24 @@ void ContactSolver::load_rows(const Components& k, bool after_bounce) {
   const std::span<const std::uint32_t> slot_of(slot_of_);
   const std::span<SolverRow> rows(rows_);
   const std::span<double> targets(targets_);
-  w.for_ranges(order.size(), min_parallel_items, [&, by_axis, after_bounce](int, std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) {
-      const ContactConstraint& ct = contacts[order[i]];
-      const double target = after_bounce && !ct.resting ? 0.0 : ct.target;
-      // By axis (sweep_axis): each row's normal along +x or +y, its bodies swapped if it was -x or -y.
-      const bool swap = by_axis && (ct.axis & 1) == 0;
-      rows[i] = {slot_of[swap ? ct.b : ct.c], slot_of[swap ? ct.c : ct.b], ct.inv_w, target,
-                 after_bounce ? 0.0 : ct.lambda};
-      targets[order[i]] = target;  // by contact, for the bottom-up pass
-    }
+  // (after_bounce a constant of each loop: a test a row otherwise.)
+  const auto load = [&](auto bounce) {
+    constexpr bool after = decltype(bounce)::value;
+    return [&, by_axis](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) {
+        const ContactConstraint& ct = contacts[order[i]];
+        const double target = after && !ct.resting ? 0.0 : ct.target;
+        // By axis (sweep_axis): each row's normal along +x or +y, its bodies swapped if it was -x or -y.
+        const bool swap = by_axis && (ct.axis & 1) == 0;
+        rows[i] = {slot_of[swap ? ct.b : ct.c], slot_of[swap ? ct.c : ct.b], ct.inv_w, target, after ? 0.0 : ct.lambda};
+        targets[order[i]] = target;  // by contact, for the bottom-up pass
+      }
+    };
+  };
+  const auto load_false = load(std::false_type{});
+  const auto load_true = load(std::true_type{});
+  w.for_ranges(order.size(), min_parallel_items, [&, after_bounce](int, std::size_t begin, std::size_t end) {
+    after_bounce ? load_true(begin, end) : load_false(begin, end);
     for (std::size_t i = begin; i < std::min(end, friction_.size()); ++i) {
       const FrictionRow& f = friction_[order[i]];
       friction_rows_[i] = {f.mu, after_bounce ? 0.0 : f.lambda, static_cast<std::uint32_t>(contacts[order[i]].axis)};

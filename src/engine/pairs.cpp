@@ -254,9 +254,11 @@ void BroadPhase::find(const Components& k, std::span<const EntityId> entities, d
     out.insert(out.end(), part.begin(), part.end());
   }
   if (k.any_rules()) std::erase_if(out, [&](Pair p) { return !keeps(rule, k, p.c, p.b, h); });
-  if constexpr (!keeps_unchanged) return;
-  last_found_.assign(out.begin(), out.end());
-  found_valid_ = !k.any_rules();
+  // Kept for the next call, but not right after a call that found a box
+  // changed: bodies in motion (a falling rain) change them at every call,
+  // and the copy would then cost every call (every other one here).
+  found_valid_ = keeps_unchanged && !k.any_rules() && !again;
+  if (found_valid_) last_found_.assign(out.begin(), out.end());
 }
 
 bool BroadPhase::holds(const Components& k, std::span<const EntityId> entities, Workers* workers) const {
