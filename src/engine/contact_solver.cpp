@@ -254,6 +254,9 @@ void ContactSolver::prepare(const Components& k, double h, Vector g, const Solve
   moving_fixed_ = flags & 1;
   stats.contacts += static_cast<std::int64_t>(contacts_.size());
   prepare_friction(k, flags & 2, kept_all);
+  // The rows of the last plain relaxation stay this one's when its contacts and their order are (schedule()
+  // keeps the order when the contacts and gravity are the same).
+  plain_rows_ = plain_rows_ && kept_all && scheduled_ && g == topology_g_;
   schedule(k, g, kept_all);
   // Velocities before any impulse, for the energy guard and the impact time.
   v_start_.resize(slot_body_.size());
@@ -811,6 +814,17 @@ void ContactSolver::load_rows(const Components& k, bool after_bounce) {
         bodies[i] = {v, im};
     }
   });
+  if (keeps_unchanged && !after_bounce && plain_rows_)
+    refresh_rows();
+  else
+    load_contact_rows(after_bounce);
+  plain_rows_ = !after_bounce;
+}
+
+// The contacts in row_order() with the relaxation's targets and accumulators.
+void ContactSolver::load_contact_rows(bool after_bounce) {
+  Workers& w = workers_or_one(workers_);
+  const bool by_axis = friction_.empty();
   const std::span<const std::uint32_t> order = row_order();
   rows_.resize(order.size());
   targets_.resize(order.size());
@@ -819,28 +833,35 @@ void ContactSolver::load_rows(const Components& k, bool after_bounce) {
   const std::span<const std::uint32_t> slot_of(slot_of_);
   const std::span<SolverRow> rows(rows_);
   const std::span<double> targets(targets_);
-  // (after_bounce a constant of each loop: a test a row otherwise.)
-  const auto load = [&](auto bounce) {
-    constexpr bool after = decltype(bounce)::value;
-    return [&, by_axis](std::size_t begin, std::size_t end) {
-      for (std::size_t i = begin; i < end; ++i) {
-        const ContactConstraint& ct = contacts[order[i]];
-        const double target = after && !ct.resting ? 0.0 : ct.target;
-        // By axis (sweep_axis): each row's normal along +x or +y, its bodies swapped if it was -x or -y.
-        const bool swap = by_axis && (ct.axis & 1) == 0;
-        rows[i] = {slot_of[swap ? ct.b : ct.c], slot_of[swap ? ct.c : ct.b], ct.inv_w, target, after ? 0.0 : ct.lambda};
-        targets[order[i]] = target;  // by contact, for the bottom-up pass
-      }
-    };
-  };
-  const auto load_false = load(std::false_type{});
-  const auto load_true = load(std::true_type{});
-  w.for_ranges(order.size(), min_parallel_items, [&, after_bounce](int, std::size_t begin, std::size_t end) {
-    after_bounce ? load_true(begin, end) : load_false(begin, end);
+  w.for_ranges(order.size(), min_parallel_items, [&, by_axis, after_bounce](int, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const ContactConstraint& ct = contacts[order[i]];
+      const double target = after_bounce && !ct.resting ? 0.0 : ct.target;
+      // By axis (sweep_axis): each row's normal along +x or +y, its bodies swapped if it was -x or -y.
+      const bool swap = by_axis && (ct.axis & 1) == 0;
+      rows[i] = {slot_of[swap ? ct.b : ct.c], slot_of[swap ? ct.c : ct.b], ct.inv_w, target,
+                 after_bounce ? 0.0 : ct.lambda};
+      targets[order[i]] = target;  // by contact, for the bottom-up pass
+    }
     for (std::size_t i = begin; i < std::min(end, friction_.size()); ++i) {
       const FrictionRow& f = friction_[order[i]];
       friction_rows_[i] = {f.mu, after_bounce ? 0.0 : f.lambda, static_cast<std::uint32_t>(contacts[order[i]].axis)};
     }
+  });
+}
+
+// When the rows hold the last plain relaxation's contacts, in the same order
+// (plain_rows_: a resting pile), only their accumulators are new: the warm
+// start's impulses.
+void ContactSolver::refresh_rows() {
+  const std::span<const std::uint32_t> order = row_order();
+  const std::span<const ContactConstraint> contacts(contacts_);
+  const std::span<const FrictionRow> friction(friction_);
+  const std::span<SolverRow> rows(rows_);
+  const std::span<FrictionHot> friction_rows(friction_rows_);
+  workers_or_one(workers_).for_ranges(order.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) rows[i].lambda = contacts[order[i]].lambda;
+    for (std::size_t i = begin; i < std::min(end, friction.size()); ++i) friction_rows[i].lambda = friction[order[i]].lambda;
   });
 }
 
@@ -1227,7 +1248,15 @@ void ContactSolver::store() {
   const std::span<const double> earlier_jn(earlier_jn_), earlier_jt(earlier_jt_);
   const std::span<double> last_jn(last_jn_), last_jt(last_jt_);
   workers_or_one(workers_).for_ranges(contacts.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) {
+    // One round (most substeps): the sums below without the earlier rounds' terms (+ 0.0: a -0 becomes +0,
+    // which only the tangential impulse keeps; the normal one is kept when positive).
+    for (std::size_t i = begin; earlier_jn.empty() && i < end; ++i) {
+      const ContactConstraint& ct = contacts[i];
+      const double jn = ct.lambda + ct.lambda2;
+      last_jn[i] = ct.resting && jn > 0.0 ? jn : 0.0;
+      last_jt[i] = friction.empty() ? 0.0 : friction[i].lambda + friction[i].lambda2 + 0.0;
+    }
+    for (std::size_t i = begin; !earlier_jn.empty() && i < end; ++i) {
       const ContactConstraint& ct = contacts[i];
       const std::uint32_t p = pair_of[i];
       const bool earlier = p < earlier_jn.size();  // earlier rounds of this substep (keep_round())

@@ -230,6 +230,9 @@ class ContactSolver {
   void warm_start_one(Components& k, std::size_t i, double jn, double jt);
   void relax(Components& k, Vector g, const SolverSettings& s, bool after_bounce);
   void load_rows(const Components& k, bool after_bounce);
+  void load_contact_rows(bool after_bounce);
+  void refresh_rows();
+  bool plain_rows_ = false;  // rows_ are load_contact_rows(false)'s for this substep's contacts and order
   void store_rows(Components& k, bool after_bounce);
   template <bool friction>
   void iterate(const SolverSettings& s);
