@@ -21,15 +21,22 @@ using namespace physics::numerics;
 
 BOOST_AUTO_TEST_SUITE(numerics_ccd)
 
-BOOST_AUTO_TEST_CASE(candidate_pairs_are_the_all_pairs_ones_in_registration_order) {
+// A walled box of `count` random blocks (sides 1-30 px, masses 1-5), each
+// with a random velocity of at most `speed` px/ms per axis.
+World random_blocks(Random& rng, int count, double speed) {
   World w = test::physics_world();
   Game::init_walls(w);
-  Random rng(9);
-  for (int i = 0; i < 400; ++i) {
+  for (int i = 0; i < count; ++i) {
     const auto b = Block::make(w, rng.uniform(0, 780), rng.uniform(0, 580), rng.uniform_int(1, 30),
                                rng.uniform_int(1, 30), test::grey, rng.uniform(1, 5));
-    w.components.velocity[b.id] = {rng.uniform(-2, 2), rng.uniform(-2, 2)};
+    w.components.velocity[b.id] = {rng.uniform(-speed, speed), rng.uniform(-speed, speed)};
   }
+  return w;
+}
+
+BOOST_AUTO_TEST_CASE(candidate_pairs_are_the_all_pairs_ones_in_registration_order) {
+  Random rng(9);
+  World w = random_blocks(rng, 400, 2.0);
   Block::make(w, 100, 100, 20, 20, test::grey, 1.0);  // two exactly touching boxes
   Block::make(w, 120, 100, 20, 20, test::grey, 1.0);
   for (const double h : {0.0, 16.0})
@@ -51,14 +58,8 @@ BOOST_AUTO_TEST_CASE(candidate_pairs_are_the_all_pairs_ones_in_registration_orde
 // every swept box keeps its bits. Moves far smaller than the fat margin must
 // still make and break pairs (two boxes 0.25 px apart, then touching).
 BOOST_AUTO_TEST_CASE(a_kept_broad_phase_sees_every_small_change) {
-  World w = test::physics_world();
-  Game::init_walls(w);
   Random rng(21);
-  for (int i = 0; i < 300; ++i) {
-    const auto b = Block::make(w, rng.uniform(0, 780), rng.uniform(0, 580), rng.uniform_int(1, 30),
-                               rng.uniform_int(1, 30), test::grey, rng.uniform(1, 5));
-    w.components.velocity[b.id] = {rng.uniform(-0.01, 0.01), rng.uniform(-0.01, 0.01)};
-  }
+  World w = random_blocks(rng, 300, 0.01);
   const EntityId left = Block::make(w, 100, 100, 20, 20, test::grey, 1.0).id;
   const EntityId right = Block::make(w, 120, 100, 20, 20, test::grey, 1.0).id;
   w.components.velocity[left] = w.components.velocity[right] = {0.0, 0.0};
