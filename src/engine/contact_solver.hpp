@@ -41,7 +41,11 @@
 //     the given order (so the same bits) but puts contacts that share no
 //     body side by side, for the processor to overlap. What depends only on
 //     which contacts there are (that order, the slots, the bottom-up order,
-//     the warm start's matching) is kept while they stay the same.
+//     the warm start's matching) is kept while they stay the same; when no
+//     body changed either (a resting pile, most substeps), so are the
+//     contacts themselves and the hot rows (classify(), refresh_rows()).
+//     Without friction the x rows and the y rows share no value: with
+//     threads, both are swept at once (iterate()).
 //  2. solve_positions (stage `positions`), after Move: what still overlaps by more than `slop` is
 //     projected apart (non-linear Gauss-Seidel on positions, shared in
 //     proportion to inverse masses, then the same bottom-up pass). Positions
