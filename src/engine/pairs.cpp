@@ -213,6 +213,11 @@ void BroadPhase::find(const Components& k, std::span<const EntityId> entities, d
   const bool again = keeps_unchanged && found_valid_ && same && !k.any_rules();
   const std::uint8_t flags = w.or_over_ranges(n, min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
     bool inside = same;  // (same implies fat_ holds the same n bodies)
+    // Body i's swept box s lies in its fat box, its mass as finite as it was
+    // (a NaN fails the test: a rebuild, which handles it).
+    const auto stays = [&](std::size_t i, const Bounds& s) {
+      return within(s, fat_[i]) && fixed_[i] == !std::isfinite(k.mass[entities[i]]);
+    };
     // Compared up to the first change only (a falling rain's first body).
     std::uint64_t moved = 0;
     std::size_t i = begin;
@@ -220,13 +225,11 @@ void BroadPhase::find(const Components& k, std::span<const EntityId> entities, d
       const Bounds s = swept(k, entities[i], h, reach);
       moved = bounds_differ(s, current_[i]);
       current_[i] = s;
-      inside = inside && within(s, fat_[i]) && fixed_[i] == !std::isfinite(k.mass[entities[i]]);
+      inside = inside && stays(i, s);
     }
     for (; i < end; ++i) {
       const Bounds s = current_[i] = swept(k, entities[i], h, reach);
-      // (A NaN fails the test: a rebuild, which handles it.)
-      if (!inside) continue;
-      inside = within(s, fat_[i]) && fixed_[i] == !std::isfinite(k.mass[entities[i]]);
+      if (inside) inside = stays(i, s);
     }
     // Bit 1: a body of the range left its box (or a different list); bit 2: a swept box changed.
     return static_cast<std::uint8_t>((inside ? 0 : 1) | (moved != 0 ? 2 : 0));
