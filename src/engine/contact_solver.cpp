@@ -827,11 +827,13 @@ void ContactSolver::load_contact_rows(bool after_bounce) {
   const bool by_axis = friction_.empty();
   const std::span<const std::uint32_t> order = row_order();
   rows_.resize(order.size());
+  row_lambda_.resize(order.size());
   targets_.resize(order.size());
   friction_rows_.resize(friction_.size());
   const std::span<const ContactConstraint> contacts(contacts_);
   const std::span<const std::uint32_t> slot_of(slot_of_);
   const std::span<SolverRow> rows(rows_);
+  const std::span<double> lambdas(row_lambda_);
   const std::span<double> targets(targets_);
   w.for_ranges(order.size(), min_parallel_items, [&, by_axis, after_bounce](int, std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
@@ -839,8 +841,8 @@ void ContactSolver::load_contact_rows(bool after_bounce) {
       const double target = after_bounce && !ct.resting ? 0.0 : ct.target;
       // By axis (sweep_axis): each row's normal along +x or +y, its bodies swapped if it was -x or -y.
       const bool swap = by_axis && (ct.axis & 1) == 0;
-      rows[i] = {slot_of[swap ? ct.b : ct.c], slot_of[swap ? ct.c : ct.b], ct.inv_w, target,
-                 after_bounce ? 0.0 : ct.lambda};
+      rows[i] = {slot_of[swap ? ct.b : ct.c], slot_of[swap ? ct.c : ct.b], ct.inv_w, target};
+      lambdas[i] = after_bounce ? 0.0 : ct.lambda;
       targets[order[i]] = target;  // by contact, for the bottom-up pass
     }
     for (std::size_t i = begin; i < std::min(end, friction_.size()); ++i) {
@@ -857,10 +859,10 @@ void ContactSolver::refresh_rows() {
   const std::span<const std::uint32_t> order = row_order();
   const std::span<const ContactConstraint> contacts(contacts_);
   const std::span<const FrictionRow> friction(friction_);
-  const std::span<SolverRow> rows(rows_);
+  const std::span<double> lambdas(row_lambda_);
   const std::span<FrictionHot> friction_rows(friction_rows_);
   workers_or_one(workers_).for_ranges(order.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) rows[i].lambda = contacts[order[i]].lambda;
+    for (std::size_t i = begin; i < end; ++i) lambdas[i] = contacts[order[i]].lambda;
     for (std::size_t i = begin; i < std::min(end, friction.size()); ++i) friction_rows[i].lambda = friction[order[i]].lambda;
   });
 }
@@ -871,11 +873,11 @@ void ContactSolver::store_rows(Components& k, bool after_bounce) {
   const std::span<const std::uint32_t> order = row_order();
   // (Spans and values, not the members: the loops' stores could alias them, reloaded at every item.)
   const std::span<ContactConstraint> contacts(contacts_);
-  const std::span<const SolverRow> rows(rows_);
+  const std::span<const double> lambdas(row_lambda_);
   w.for_ranges(order.size(), min_parallel_items, [&, after_bounce](int, std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
       ContactConstraint& ct = contacts[order[i]];
-      (after_bounce ? ct.lambda2 : ct.lambda) = rows[i].lambda;
+      (after_bounce ? ct.lambda2 : ct.lambda) = lambdas[i];
     }
     for (std::size_t i = begin; i < std::min(end, friction_rows_.size()); ++i) {
       FrictionRow& f = friction_[order[i]];
@@ -927,11 +929,12 @@ void ContactSolver::store_rows(Components& k, bool after_bounce) {
 template <bool friction>
 void ContactSolver::iterate(const SolverSettings& s) {
   if constexpr (!friction) {
-    const std::span<SolverRow> rows(rows_);
+    const std::span<const SolverRow> rows(rows_);
+    const std::span<double> lambdas(row_lambda_);
     const std::span<const std::uint8_t> paired(paired_);
     const auto sweep = [&](int axis) {
       const std::size_t from = axis == 0 ? 0 : x_rows_, count = axis == 0 ? x_rows_ : rows.size() - x_rows_;
-      return sweep_axis(rows.subspan(from, count), paired.subspan(from, count),
+      return sweep_axis(rows.subspan(from, count), lambdas.subspan(from, count), paired.subspan(from, count),
                         axis_bodies_[static_cast<std::size_t>(axis)]);
     };
     Workers& w = workers_or_one(workers_);
@@ -964,14 +967,14 @@ void ContactSolver::iterate(const SolverSettings& s) {
 static_assert(sizeof(Vector) == 2 * sizeof(double) && offsetof(Vector, y) == sizeof(double),
               "friction_row_sse2 loads a velocity's x and y as one pair");
 template <bool y>
-[[gnu::always_inline]] inline bool ContactSolver::friction_row_sse2(SolverRow& r, FrictionHot& f, SolverBody& bc,
-                                                                    SolverBody& bb) {
+[[gnu::always_inline]] inline bool ContactSolver::friction_row_sse2(const SolverRow& r, double& lambda_n, FrictionHot& f,
+                                                                    SolverBody& bc, SolverBody& bb) {
   constexpr int swap = y ? 1 : 2;  // _mm_shuffle_pd's: (high, low) for 1, (low, high) for 2
   const __m128d vc = _mm_loadu_pd(&bc.v.x), vb = _mm_loadu_pd(&bb.v.x);
   const __m128d rel = _mm_sub_pd(vc, vb);
   const __m128d sign = _mm_setr_pd(normal_sign[f.axis], tangent_sign[f.axis]);
   const __m128d v = _mm_mul_pd(sign, _mm_shuffle_pd(rel, rel, swap));  // (vn, vt)
-  const __m128d old = _mm_setr_pd(r.lambda, f.lambda);
+  const __m128d old = _mm_setr_pd(lambda_n, f.lambda);
   const __m128d push = _mm_mul_pd(_mm_sub_pd(v, _mm_set_sd(r.target)), _mm_set1_pd(r.inv_w));
   const __m128d unclamped = _mm_sub_pd(old, push);
   const double lambda = std::max(_mm_cvtsd_f64(unclamped), 0.0);
@@ -983,7 +986,7 @@ template <bool y>
   const __m128d db = _mm_mul_pd(_mm_mul_pd(_mm_set1_pd(bb.w), j), sign);
   _mm_storeu_pd(&bc.v.x, _mm_add_pd(vc, _mm_shuffle_pd(dc, dc, swap)));
   _mm_storeu_pd(&bb.v.x, _mm_sub_pd(vb, _mm_shuffle_pd(db, db, swap)));
-  r.lambda = lambda, f.lambda = lt;
+  lambda_n = lambda, f.lambda = lt;
   // Bits, not values, as the scalar row compares them (a 32-bit compare: SSE2 has no 64-bit one).
   return _mm_movemask_epi8(_mm_cmpeq_epi32(_mm_castpd_si128(now), _mm_castpd_si128(old))) != 0xFFFF;
 }
@@ -993,19 +996,19 @@ template <bool y>
 // along t: the normal impulse, then the tangential one within the cone;
 // whether either accumulator changed.
 template <double Vector::*n, double Vector::*t>
-[[gnu::always_inline]] inline bool ContactSolver::friction_row(SolverRow& r, FrictionHot& f,
+[[gnu::always_inline]] inline bool ContactSolver::friction_row(const SolverRow& r, double& lambda_n, FrictionHot& f,
                                                                std::span<SolverBody> bodies) {
   SolverBody& bc = bodies[r.c];
   SolverBody& bb = bodies[r.b];
 #if defined(__SSE2__)
-  if (f.mu != 0.0) return friction_row_sse2<n == &Vector::y>(r, f, bc, bb);
+  if (f.mu != 0.0) return friction_row_sse2<n == &Vector::y>(r, lambda_n, f, bc, bb);
 #endif
   const double sn = normal_sign[f.axis];
   const double vn = sn * (bc.v.*n - bb.v.*n);
-  const double lambda = std::max(r.lambda - (vn - r.target) * r.inv_w, 0.0);
-  apply_axis_impulse(bc.v.*n, bb.v.*n, sn, lambda - r.lambda, bc.w, bb.w);
-  bool changed = std::bit_cast<std::uint64_t>(lambda) != std::bit_cast<std::uint64_t>(r.lambda);
-  r.lambda = lambda;
+  const double lambda = std::max(lambda_n - (vn - r.target) * r.inv_w, 0.0);
+  apply_axis_impulse(bc.v.*n, bb.v.*n, sn, lambda - lambda_n, bc.w, bb.w);
+  bool changed = std::bit_cast<std::uint64_t>(lambda) != std::bit_cast<std::uint64_t>(lambda_n);
+  lambda_n = lambda;
   if (f.mu == 0.0) return changed;
   const double st = tangent_sign[f.axis];
   const double vt = st * (bc.v.*t - bb.v.*t);
@@ -1024,7 +1027,8 @@ template <double Vector::*n, double Vector::*t>
 // friction (friction_paired_), are solved side by side (friction_two).
 bool ContactSolver::sweep_friction() {
   // (Spans, not the members: the loop's stores could alias a vector's own pointers.)
-  const std::span<SolverRow> rows(rows_);
+  const std::span<const SolverRow> rows(rows_);
+  const std::span<double> lambdas(row_lambda_);
   const std::span<FrictionHot> friction(friction_rows_);
   const std::span<SolverBody> bodies(solver_bodies_);
   [[maybe_unused]] const std::span<const std::uint8_t> paired(friction_paired_);
@@ -1033,14 +1037,15 @@ bool ContactSolver::sweep_friction() {
     FrictionHot& f = friction[i];
 #if defined(__SSE2__)
     if (paired[i] && f.mu != 0.0 && friction[i + 1].mu != 0.0) {  // (never the last row: schedule())
-      changed |= f.axis >= 2 ? friction_two<true>(rows.subspan(i).first<2>(), friction.subspan(i).first<2>(), bodies)
-                             : friction_two<false>(rows.subspan(i).first<2>(), friction.subspan(i).first<2>(), bodies);
+      changed |= f.axis >= 2
+                     ? friction_two<true>(rows.subspan(i).first<2>(), &lambdas[i], friction.subspan(i).first<2>(), bodies)
+                     : friction_two<false>(rows.subspan(i).first<2>(), &lambdas[i], friction.subspan(i).first<2>(), bodies);
       i += 2;
       continue;
     }
 #endif
-    changed |= f.axis >= 2 ? friction_row<&Vector::y, &Vector::x>(rows[i], f, bodies)
-                           : friction_row<&Vector::x, &Vector::y>(rows[i], f, bodies);
+    changed |= f.axis >= 2 ? friction_row<&Vector::y, &Vector::x>(rows[i], lambdas[i], f, bodies)
+                           : friction_row<&Vector::x, &Vector::y>(rows[i], lambdas[i], f, bodies);
     ++i;
   }
   return changed;
@@ -1054,8 +1059,8 @@ bool ContactSolver::sweep_friction() {
 // the other component; std::clamp(v, lo, hi) is min(hi, max(lo, v)) lane by
 // lane, NaN and zeros' signs included). `y`: the normals along y.
 template <bool y>
-[[gnu::always_inline]] inline bool ContactSolver::friction_two(std::span<SolverRow, 2> r, std::span<FrictionHot, 2> f,
-                                                               std::span<SolverBody> bodies) {
+[[gnu::always_inline]] inline bool ContactSolver::friction_two(std::span<const SolverRow, 2> r, double* lambda_n,
+                                                               std::span<FrictionHot, 2> f, std::span<SolverBody> bodies) {
   SolverBody& c0 = bodies[r[0].c];
   SolverBody& c1 = bodies[r[1].c];
   SolverBody& b0 = bodies[r[0].b];
@@ -1070,7 +1075,7 @@ template <bool y>
   const __m128d st = _mm_setr_pd(tangent_sign[f[0].axis], tangent_sign[f[1].axis]);
   const __m128d inv_w = _mm_setr_pd(r[0].inv_w, r[1].inv_w);
   const __m128d vn = _mm_mul_pd(sn, _mm_sub_pd(cn, bn)), vt = _mm_mul_pd(st, _mm_sub_pd(ct, bt));
-  const __m128d old_n = _mm_setr_pd(r[0].lambda, r[1].lambda), old_t = _mm_setr_pd(f[0].lambda, f[1].lambda);
+  const __m128d old_n = _mm_loadu_pd(lambda_n), old_t = _mm_setr_pd(f[0].lambda, f[1].lambda);
   const __m128d target = _mm_setr_pd(r[0].target, r[1].target);
   const __m128d lambda = _mm_max_pd(_mm_setzero_pd(), _mm_sub_pd(old_n, _mm_mul_pd(_mm_sub_pd(vn, target), inv_w)));
   const __m128d limit = _mm_mul_pd(_mm_setr_pd(f[0].mu, f[1].mu), lambda);
@@ -1086,7 +1091,7 @@ template <bool y>
   // c0 before c1, b0 before b1: a fixed body both rows share gets either's (the same) values.
   _mm_storeu_pd(&c0.v.x, _mm_unpacklo_pd(cx2, cy2)), _mm_storeu_pd(&c1.v.x, _mm_unpackhi_pd(cx2, cy2));
   _mm_storeu_pd(&b0.v.x, _mm_unpacklo_pd(bx2, by2)), _mm_storeu_pd(&b1.v.x, _mm_unpackhi_pd(bx2, by2));
-  _mm_storel_pd(&r[0].lambda, lambda), _mm_storeh_pd(&r[1].lambda, lambda);
+  _mm_storeu_pd(lambda_n, lambda);
   _mm_storel_pd(&f[0].lambda, lt), _mm_storeh_pd(&f[1].lambda, lt);
   const __m128i same = _mm_and_si128(_mm_cmpeq_epi32(_mm_castpd_si128(lambda), _mm_castpd_si128(old_n)),
                                      _mm_cmpeq_epi32(_mm_castpd_si128(lt), _mm_castpd_si128(old_t)));
@@ -1103,25 +1108,26 @@ template <bool y>
 // accumulated one is never -0: it starts at +0 or a positive warm start,
 // and max(x, 0) is -0 only for x = -0, which only -0 minus a zero gives).
 // Then v_c + (w_c j)(-1) is v_c - w_c j, bit for bit.
-bool ContactSolver::sweep_axis(std::span<SolverRow> rows, [[maybe_unused]] std::span<const std::uint8_t> paired,
-                               std::span<AxisBody> bodies) {
+bool ContactSolver::sweep_axis(std::span<const SolverRow> rows, std::span<double> lambdas,
+                               [[maybe_unused]] std::span<const std::uint8_t> paired, std::span<AxisBody> bodies) {
   bool changed = false;
   for (std::size_t i = 0; i < rows.size();) {
 #if defined(__SSE2__)
     if (paired[i]) {  // (never the last row of the span: schedule())
-      changed |= sweep_two(rows[i], rows[i + 1], bodies);
+      changed |= sweep_two(rows[i], rows[i + 1], &lambdas[i], bodies);
       i += 2;
       continue;
     }
 #endif
-    SolverRow& r = rows[i++];
+    const SolverRow& r = rows[i];
+    double& old = lambdas[i++];
     AxisBody& bc = bodies[r.c];
     AxisBody& bb = bodies[r.b];
     const double vn = bc.v - bb.v;
-    const double lambda = std::max(r.lambda - (vn - r.target) * r.inv_w, 0.0);
-    apply_axis_impulse(bc.v, bb.v, 1.0, lambda - r.lambda, bc.w, bb.w);
-    changed |= std::bit_cast<std::uint64_t>(lambda) != std::bit_cast<std::uint64_t>(r.lambda);
-    r.lambda = lambda;
+    const double lambda = std::max(old - (vn - r.target) * r.inv_w, 0.0);
+    apply_axis_impulse(bc.v, bb.v, 1.0, lambda - old, bc.w, bb.w);
+    changed |= std::bit_cast<std::uint64_t>(lambda) != std::bit_cast<std::uint64_t>(old);
+    old = lambda;
   }
   return changed;
 }
@@ -1132,13 +1138,14 @@ bool ContactSolver::sweep_axis(std::span<SolverRow> rows, [[maybe_unused]] std::
 // operations in the same order as one row, so the same bits: each lane
 // rounds as the scalar instruction does, and max(0, x) is (0 > x ? 0 : x),
 // std::max(x, 0.0)'s choice for a NaN and for -0 too.
-[[gnu::always_inline]] inline bool ContactSolver::sweep_two(SolverRow& r0, SolverRow& r1, std::span<AxisBody> bodies) {
+[[gnu::always_inline]] inline bool ContactSolver::sweep_two(const SolverRow& r0, const SolverRow& r1, double* lambdas,
+                                                            std::span<AxisBody> bodies) {
   AxisBody& c0 = bodies[r0.c];
   AxisBody& b0 = bodies[r0.b];
   AxisBody& c1 = bodies[r1.c];
   AxisBody& b1 = bodies[r1.b];
   const __m128d vc = _mm_setr_pd(c0.v, c1.v), vb = _mm_setr_pd(b0.v, b1.v);
-  const __m128d old = _mm_setr_pd(r0.lambda, r1.lambda);
+  const __m128d old = _mm_loadu_pd(lambdas);
   const __m128d vn = _mm_sub_pd(vc, vb);
   const __m128d push = _mm_mul_pd(_mm_sub_pd(vn, _mm_setr_pd(r0.target, r1.target)), _mm_setr_pd(r0.inv_w, r1.inv_w));
   const __m128d lambda = _mm_max_pd(_mm_setzero_pd(), _mm_sub_pd(old, push));
@@ -1147,7 +1154,7 @@ bool ContactSolver::sweep_axis(std::span<SolverRow> rows, [[maybe_unused]] std::
   const __m128d vb2 = _mm_sub_pd(vb, _mm_mul_pd(_mm_setr_pd(b0.w, b1.w), j));
   _mm_storel_pd(&c0.v, vc2), _mm_storeh_pd(&c1.v, vc2);
   _mm_storel_pd(&b0.v, vb2), _mm_storeh_pd(&b1.v, vb2);
-  _mm_storel_pd(&r0.lambda, lambda), _mm_storeh_pd(&r1.lambda, lambda);
+  _mm_storeu_pd(lambdas, lambda);
   // Bits, not values, as the scalar row compares them (a 32-bit compare: SSE2 has no 64-bit one).
   return _mm_movemask_epi8(_mm_cmpeq_epi32(_mm_castpd_si128(lambda), _mm_castpd_si128(old))) != 0xFFFF;
 }

@@ -301,9 +301,13 @@ class ContactSolver {
   // (Without friction, by axis: c and b swapped where the normal is -x or
   // -y, load_rows(). With friction, the axis is the friction row's: a row
   // without it is 32 bytes, not 40.)
+  // A row's accumulator is apart (row_lambda_), in an array of its own: a
+  // sweep writes only it, so in a pile too large for the cache the rows
+  // stream in and only the accumulators go back out (a settled rain of
+  // 100 000: 8 bytes a row written back instead of the row's 32).
   struct SolverRow {
-    std::uint32_t c, b;            // slots
-    double inv_w, target, lambda;  // as ContactConstraint's (lambda: the relaxation's accumulator)
+    std::uint32_t c, b;    // slots
+    double inv_w, target;  // as ContactConstraint's
   };
   struct FrictionHot {
     double mu, lambda;
@@ -311,19 +315,21 @@ class ContactSolver {
   };
   bool sweep_friction();
   template <double Vector::*n, double Vector::*t>
-  static bool friction_row(SolverRow& r, FrictionHot& f, std::span<SolverBody> bodies);
+  static bool friction_row(const SolverRow& r, double& lambda, FrictionHot& f, std::span<SolverBody> bodies);
   template <bool y>
-  static bool friction_row_sse2(SolverRow& r, FrictionHot& f, SolverBody& bc, SolverBody& bb);
+  static bool friction_row_sse2(const SolverRow& r, double& lambda, FrictionHot& f, SolverBody& bc, SolverBody& bb);
   template <bool y>
-  static bool friction_two(std::span<SolverRow, 2> r, std::span<FrictionHot, 2> f, std::span<SolverBody> bodies);
+  static bool friction_two(std::span<const SolverRow, 2> r, double* lambda, std::span<FrictionHot, 2> f,
+                           std::span<SolverBody> bodies);
   // Without friction, one velocity component and the inverse mass: the x
   // rows and the y rows each read their own (axis_bodies_), so that two
   // threads sweep them at once without sharing a cache line.
   struct AxisBody {
     double v, w;
   };
-  static bool sweep_axis(std::span<SolverRow> rows, std::span<const std::uint8_t> paired, std::span<AxisBody> bodies);
-  static bool sweep_two(SolverRow& r0, SolverRow& r1, std::span<AxisBody> bodies);
+  static bool sweep_axis(std::span<const SolverRow> rows, std::span<double> lambda, std::span<const std::uint8_t> paired,
+                         std::span<AxisBody> bodies);
+  static bool sweep_two(const SolverRow& r0, const SolverRow& r1, double* lambda, std::span<AxisBody> bodies);
   std::span<const std::uint32_t> row_order() const;
   std::uint64_t velocity_finds_ = ~std::uint64_t{0};  // the broad phase's finds() after solve_velocities
   std::vector<std::uint32_t> slot_of_;     // by entity id: slot, or none when not in a contact
@@ -336,6 +342,7 @@ class ContactSolver {
   std::vector<std::uint8_t> paired_;       // by row of by_axis_: it and the next may be solved together
   std::vector<std::uint8_t> friction_paired_;  // the same by row of order_ (sweep_friction)
   std::vector<SolverRow> rows_;            // contacts_[row_order()[i]], hot fields
+  std::vector<double> row_lambda_;         // by row: its accumulator (SolverRow)
   std::vector<FrictionHot> friction_rows_; // friction_[order_[i]], hot fields
   std::vector<std::uint32_t> last_level_, level_, level_count_;  // schedule()'s scratch
   // What order_, the slots and support_order_ were made for (schedule()):
