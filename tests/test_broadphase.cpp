@@ -134,10 +134,10 @@ BOOST_AUTO_TEST_CASE(boxes_are_rounded_outwards_and_contain_the_body) {
 }
 
 BOOST_AUTO_TEST_CASE(a_box_around_a_body_is_its_bounds_rounded_outwards_to_float) {
-  // around() (vectorised where SSE2 is there) against outward() (scalar) on
-  // the bounds it is defined by: the same values on every kind of
-  // coordinate, including float overflow, infinities, NaN, zeros and values
-  // just around a float.
+  // around() and outward() (vectorised where SSE2 is there) against
+  // outward_scalar() on the bounds they are defined by: the same values on
+  // every kind of coordinate, including float overflow, infinities, NaN,
+  // zeros and values just around a float.
   const auto same = [](float a, float b) { return a == b || (a != a && b != b); };
   const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
   std::vector<double> xs = {0.0, -0.0, 1e-320, -1e-320, 1e-50, -1e-50, 0.1, -0.1, 1.0 / 3.0, 16777217.0,
@@ -153,12 +153,12 @@ BOOST_AUTO_TEST_CASE(a_box_around_a_body_is_its_bounds_rounded_outwards_to_float
     for (std::size_t i = 0; i < xs.size(); ++i) {
       const Vector p{xs[i], xs[(i * 7 + 3) % xs.size()]};
       const Rect r{static_cast<int>(i % 50), static_cast<int>(i % 17)};
-      const FloatBox a = FloatBox::around(p, r, margin);
-      const FloatBox b =
-          FloatBox::outward(p.x - margin, p.y - margin, (p.x + r.width) + margin, (p.y + r.height) + margin);
-      BOOST_TEST((same(a.min_x, b.min_x) && same(a.min_y, b.min_y) && same(a.max_x, b.max_x) &&
-                  same(a.max_y, b.max_y)),
-                 "p = (" << p.x << ", " << p.y << "), margin " << margin);
+      const double x0 = p.x - margin, y0 = p.y - margin, x1 = (p.x + r.width) + margin, y1 = (p.y + r.height) + margin;
+      const FloatBox b = FloatBox::outward_scalar(x0, y0, x1, y1);
+      for (const FloatBox& a : {FloatBox::around(p, r, margin), FloatBox::outward(x0, y0, x1, y1)})
+        BOOST_TEST((same(a.min_x, b.min_x) && same(a.min_y, b.min_y) && same(a.max_x, b.max_x) &&
+                    same(a.max_y, b.max_y)),
+                   "p = (" << p.x << ", " << p.y << "), margin " << margin);
     }
   }
 }

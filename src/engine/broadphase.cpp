@@ -63,9 +63,13 @@ FloatBox FloatBox::around(Vector p, Rect r, double margin) {
 }
 #endif
 
-FloatBox FloatBox::outward(double x0, double y0, double x1, double y1) {
+FloatBox FloatBox::outward_scalar(double x0, double y0, double x1, double y1) {
   return {float_down(x0), float_down(y0), float_up(x1), float_up(y1)};
 }
+
+#if !defined(__SSE2__)
+FloatBox FloatBox::outward(double x0, double y0, double x1, double y1) { return outward_scalar(x0, y0, x1, y1); }
+#endif
 
 // Cells for the small boxes' corners (min_x, min_y), at least as wide as the
 // widest small box.
