@@ -48,8 +48,9 @@ class SlideIntegrator {
   std::vector<Vector> v_start_;        // by entity id: the velocity before Forces
   std::vector<Vector> v_end_;          // by entity id: a slider's velocity after the solver
   // By entity id, over its contacts: 1 x-normal, 2 y-normal, 4 an impact or a
-  // finite support, 8 friction, 32 a fixed body (after_solver()); a slider
-  // keeps its bits but 32, and 16, until shift().
+  // finite support, 8 friction, 32 a fixed body (after_solver()); shift()
+  // reads a slider's axis there ((t & 3) == 2: y-normal contacts, a floor or
+  // a ceiling, so along x).
   std::vector<std::uint8_t> touched_;
   std::vector<EntityId> sliders_;
 };
