@@ -286,6 +286,48 @@ BOOST_AUTO_TEST_CASE(rows_without_friction_give_the_friction_loops_bits) {
   });
 }
 
+// With friction on every pair, the friction sweep solves four rows of a
+// level side by side with AVX2 where the processor has it
+// (ContactSolver::friction_four), else two with SSE2 (friction_two): the same
+// bits. A pyramid with rain falling on it, both ways.
+BOOST_AUTO_TEST_CASE(four_friction_rows_side_by_side_give_the_bits_of_two) {
+  BOOST_TEST_MESSAGE("four rows with AVX2 on this processor: " << (ContactSolver::wide_rows ? "yes" : "no"));
+  const auto run = [](bool wide) {
+    const bool was = ContactSolver::wide_rows;
+    ContactSolver::wide_rows = wide && was;
+    Params p;
+    p.solver = Solver::stable;
+    p.gravity = {0, 0.001};
+    World w = test::physics_world(p);
+    Game::init_walls(w);
+    std::vector<EntityId> ids;
+    for (int r = 0; r < 14; ++r)
+      for (int i = 0; i < 14 - r; ++i)
+        ids.push_back(Block::make(w, 60 + 10 * r + 20 * i, 540 - 20 * r, 20, 20, test::grey, 1.0).id);
+    for (int i = 0; i < 16; ++i) {
+      ids.push_back(Block::make(w, 40 + 22 * i, 200 - 15 * (i % 3), 12, 12, test::grey, 0.5 + 0.25 * (i % 4), 0.5).id);
+      w.components.velocity[ids.back()] = {0.02 * ((i % 5) - 2), 0.1};
+    }
+    for (EntityId e = 0; e < w.components.size(); ++e) w.components.friction[e] = 0.3 + 0.1 * (e % 4);
+    std::vector<std::uint64_t> out;
+    for (int f = 0; f < 150; ++f) {
+      Game::step(w);
+      for (const EntityId e : ids)
+        for (const double x : {w.components.position[e].x, w.components.position[e].y, w.components.velocity[e].x,
+                               w.components.velocity[e].y})
+          out.push_back(std::bit_cast<std::uint64_t>(x));
+    }
+    ContactSolver::wide_rows = was;
+    return out;
+  };
+  const auto two = run(false);
+  BOOST_TEST(two == run(true));
+  // Something happened: the last raindrop moved from the first frame to the last.
+  const std::size_t frame = two.size() / 150;
+  BOOST_TEST(!std::equal(two.begin() + static_cast<std::ptrdiff_t>(frame - 4),
+                         two.begin() + static_cast<std::ptrdiff_t>(frame), two.end() - 4));
+}
+
 BOOST_AUTO_TEST_SUITE_END()
 
 BOOST_AUTO_TEST_SUITE(numerics_course_mode)

@@ -54,6 +54,16 @@ constexpr double large_factor = 4.0;
 // to walk and a bigger table to clear).
 constexpr double cells_per_body = 2.0;
 
+// Whether sort_pairs() may sort by counting. Not in the browser's build
+// (WebAssembly under WASI), which stays within its size budget without that
+// code (docs/web.md): a comparison sort gives the same order, and its worlds
+// are small.
+#if defined(__wasi__)
+constexpr bool sorts_by_counting = false;
+#else
+constexpr bool sorts_by_counting = true;
+#endif
+
 
 }  // namespace
 
@@ -319,7 +329,7 @@ void UniformGrid::sort_pairs(std::size_t n) {
   // thousand pairs a pass): a comparison sort of the pairs costs less than
   // the counting sort's pass over every body. Both give the same order
   // (each pair is found once).
-  if (found_.size() * 32 < n) {
+  if (!sorts_by_counting || found_.size() * 32 < n) {
     pairs_.assign(found_.begin(), found_.end());
     std::sort(pairs_.begin(), pairs_.end());
     return;

@@ -3,6 +3,12 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
+#if defined(__x86_64__) && defined(__GNUC__)  // (as PHYSICS_AVX2)
+#include <immintrin.h>
+#define PHYSICS_WIDE_ROWS 1  // friction_four, with AVX2 where the processor has it
+#else
+#define PHYSICS_WIDE_ROWS 0
+#endif
 
 #include <algorithm>
 #include <array>
@@ -1024,8 +1030,20 @@ template <double Vector::*n, double Vector::*t>
 // rows come in runs of one axis (schedule()), so the test of the axis is
 // one the processor predicts, and each row's components are known.
 // Two rows of one level with normals along the same component, both with
-// friction (friction_paired_), are solved side by side (friction_two).
+// friction (friction_paired_), are solved side by side (friction_two); with
+// AVX2, four such rows (friction_four).
 bool ContactSolver::sweep_friction() {
+  return PHYSICS_WIDE_ROWS && wide_rows ? sweep_friction_rows<true>() : sweep_friction_rows<false>();
+}
+
+#if PHYSICS_WIDE_ROWS
+bool ContactSolver::wide_rows = __builtin_cpu_supports("avx2");
+#else
+bool ContactSolver::wide_rows = false;
+#endif
+
+template <bool wide>
+bool ContactSolver::sweep_friction_rows() {
   // (Spans, not the members: the loop's stores could alias a vector's own pointers.)
   const std::span<const SolverRow> rows(rows_);
   const std::span<double> lambdas(row_lambda_);
@@ -1037,6 +1055,15 @@ bool ContactSolver::sweep_friction() {
     FrictionHot& f = friction[i];
 #if defined(__SSE2__)
     if (paired[i] && f.mu != 0.0 && friction[i + 1].mu != 0.0) {  // (never the last row: schedule())
+#if PHYSICS_WIDE_ROWS
+      // Rows i to i + 3 of one level (each paired with the next, so none is the last).
+      if (wide && paired[i + 1] && paired[i + 2] && friction[i + 2].mu != 0.0 && friction[i + 3].mu != 0.0) {
+        changed |= f.axis >= 2 ? friction_four<true>(&rows[i], &lambdas[i], &f, bodies.data())
+                               : friction_four<false>(&rows[i], &lambdas[i], &f, bodies.data());
+        i += 4;
+        continue;
+      }
+#endif
       changed |= f.axis >= 2
                      ? friction_two<true>(rows.subspan(i).first<2>(), &lambdas[i], friction.subspan(i).first<2>(), bodies)
                      : friction_two<false>(rows.subspan(i).first<2>(), &lambdas[i], friction.subspan(i).first<2>(), bodies);
@@ -1050,6 +1077,71 @@ bool ContactSolver::sweep_friction() {
   }
   return changed;
 }
+
+#if PHYSICS_WIDE_ROWS
+namespace {
+// (Helpers of friction_four with its target: a lambda in it would not have AVX2.)
+// The velocities of bodies lo and hi, (x, y) each, in the low and the high half.
+[[gnu::target("avx2"), gnu::always_inline]] inline __m256d velocities(const Vector& lo, const Vector& hi) {
+  return _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(&lo.x)), _mm_loadu_pd(&hi.x), 1);
+}
+// x and y of four bodies' velocities (lanes 0 to 3) back to them, in lane order.
+[[gnu::target("avx2"), gnu::always_inline]] inline void store_velocities(std::array<Vector*, 4> to, __m256d x,
+                                                                        __m256d y) {
+  const __m256d even = _mm256_unpacklo_pd(x, y), odd = _mm256_unpackhi_pd(x, y);  // bodies 0 and 2, 1 and 3
+  _mm_storeu_pd(&to[0]->x, _mm256_castpd256_pd128(even)), _mm_storeu_pd(&to[1]->x, _mm256_castpd256_pd128(odd));
+  _mm_storeu_pd(&to[2]->x, _mm256_extractf128_pd(even, 1)), _mm_storeu_pd(&to[3]->x, _mm256_extractf128_pd(odd, 1));
+}
+}  // namespace
+
+// Four friction rows that share no linking body, one in each of AVX2's
+// lanes, with friction_two's operations in its order, lane by lane: the
+// same bits (AVX2's instructions round each lane as SSE2's do; no fused
+// multiply-add: the build keeps -ffp-contract=off and AVX2 alone has none).
+// Out of line: a function with AVX2 cannot be inlined into one without it.
+template <bool y>
+[[gnu::noinline]] bool ContactSolver::friction_four(const SolverRow* r, double* lambda_n, FrictionHot* f,
+                                                   SolverBody* bodies) {
+  SolverBody &c0 = bodies[r[0].c], &c1 = bodies[r[1].c], &c2 = bodies[r[2].c], &c3 = bodies[r[3].c];
+  SolverBody &b0 = bodies[r[0].b], &b1 = bodies[r[1].b], &b2 = bodies[r[2].b], &b3 = bodies[r[3].b];
+  // Bodies 0 and 2 in one register, 1 and 3 in the other: unpacked, x of all four, then y.
+  const __m256d c02 = velocities(c0.v, c2.v), c13 = velocities(c1.v, c3.v);
+  const __m256d b02 = velocities(b0.v, b2.v), b13 = velocities(b1.v, b3.v);
+  const __m256d cx = _mm256_unpacklo_pd(c02, c13), cy = _mm256_unpackhi_pd(c02, c13);
+  const __m256d bx = _mm256_unpacklo_pd(b02, b13), by = _mm256_unpackhi_pd(b02, b13);
+  const __m256d cn = y ? cy : cx, ct = y ? cx : cy, bn = y ? by : bx, bt = y ? bx : by;
+  const __m256d sn = _mm256_setr_pd(normal_sign[f[0].axis], normal_sign[f[1].axis], normal_sign[f[2].axis],
+                                    normal_sign[f[3].axis]);
+  const __m256d st = _mm256_setr_pd(tangent_sign[f[0].axis], tangent_sign[f[1].axis], tangent_sign[f[2].axis],
+                                    tangent_sign[f[3].axis]);
+  const __m256d inv_w = _mm256_setr_pd(r[0].inv_w, r[1].inv_w, r[2].inv_w, r[3].inv_w);
+  const __m256d vn = _mm256_mul_pd(sn, _mm256_sub_pd(cn, bn)), vt = _mm256_mul_pd(st, _mm256_sub_pd(ct, bt));
+  const __m256d old_n = _mm256_loadu_pd(lambda_n);
+  const __m256d old_t = _mm256_setr_pd(f[0].lambda, f[1].lambda, f[2].lambda, f[3].lambda);
+  const __m256d target = _mm256_setr_pd(r[0].target, r[1].target, r[2].target, r[3].target);
+  const __m256d lambda =
+      _mm256_max_pd(_mm256_setzero_pd(), _mm256_sub_pd(old_n, _mm256_mul_pd(_mm256_sub_pd(vn, target), inv_w)));
+  const __m256d limit = _mm256_mul_pd(_mm256_setr_pd(f[0].mu, f[1].mu, f[2].mu, f[3].mu), lambda);
+  const __m256d neg_limit = _mm256_xor_pd(limit, _mm256_set1_pd(-0.0));
+  const __m256d lt = _mm256_min_pd(limit, _mm256_max_pd(neg_limit, _mm256_sub_pd(old_t, _mm256_mul_pd(vt, inv_w))));
+  const __m256d jn = _mm256_sub_pd(lambda, old_n), jt = _mm256_sub_pd(lt, old_t);
+  const __m256d wc = _mm256_setr_pd(c0.w, c1.w, c2.w, c3.w), wb = _mm256_setr_pd(b0.w, b1.w, b2.w, b3.w);
+  const __m256d cn2 = _mm256_add_pd(cn, _mm256_mul_pd(_mm256_mul_pd(wc, jn), sn));
+  const __m256d bn2 = _mm256_sub_pd(bn, _mm256_mul_pd(_mm256_mul_pd(wb, jn), sn));
+  const __m256d ct2 = _mm256_add_pd(ct, _mm256_mul_pd(_mm256_mul_pd(wc, jt), st));
+  const __m256d bt2 = _mm256_sub_pd(bt, _mm256_mul_pd(_mm256_mul_pd(wb, jt), st));
+  // In friction_two's order: the c bodies, then the b bodies (a fixed body rows share gets the same values).
+  store_velocities({&c0.v, &c1.v, &c2.v, &c3.v}, y ? ct2 : cn2, y ? cn2 : ct2);
+  store_velocities({&b0.v, &b1.v, &b2.v, &b3.v}, y ? bt2 : bn2, y ? bn2 : bt2);
+  _mm256_storeu_pd(lambda_n, lambda);
+  const __m128d lt01 = _mm256_castpd256_pd128(lt), lt23 = _mm256_extractf128_pd(lt, 1);
+  _mm_storel_pd(&f[0].lambda, lt01), _mm_storeh_pd(&f[1].lambda, lt01);
+  _mm_storel_pd(&f[2].lambda, lt23), _mm_storeh_pd(&f[3].lambda, lt23);
+  const __m256i same = _mm256_and_si256(_mm256_cmpeq_epi64(_mm256_castpd_si256(lambda), _mm256_castpd_si256(old_n)),
+                                        _mm256_cmpeq_epi64(_mm256_castpd_si256(lt), _mm256_castpd_si256(old_t)));
+  return _mm256_movemask_epi8(same) != -1;
+}
+#endif
 
 #if defined(__SSE2__)
 // Two friction rows that share no linking body, one in each lane, by

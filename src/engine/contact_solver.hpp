@@ -162,6 +162,14 @@ struct ShockPass {
   std::vector<ShockRow> rows;
 };
 
+// The attribute of the functions built for AVX2 beside the rest (x86-64:
+// ContactSolver::wide_rows says whether they run).
+#if defined(__x86_64__) && defined(__GNUC__)
+#define PHYSICS_AVX2 __attribute__((target("avx2")))
+#else
+#define PHYSICS_AVX2
+#endif
+
 class ContactSolver {
  public:
   void solve_velocities(Components& k, std::span<const EntityId> entities, double h, Vector gravity,
@@ -181,6 +189,11 @@ class ContactSolver {
   // The warm-start impulses the next substep reads (save and restore).
   std::vector<WarmImpulse> warm_impulses() const;
   void restore(std::span<const WarmImpulse> impulses);
+
+  // Whether the friction sweep solves four rows at once with AVX2, where the
+  // processor has it (else two with SSE2): the same bits either way. For the
+  // tests, which compare the two; false where there is no such path.
+  static bool wide_rows;
 
  private:
   // The stages of solve_velocities, in order.
@@ -300,7 +313,7 @@ class ContactSolver {
   };
   // (Without friction, by axis: c and b swapped where the normal is -x or
   // -y, load_rows(). With friction, the axis is the friction row's: a row
-  // without it is 32 bytes, not 40.)
+  // without it is 24 bytes, not 32.)
   // A row's accumulator is apart (row_lambda_), in an array of its own: a
   // sweep writes only it, so in a pile too large for the cache the rows
   // stream in and only the accumulators go back out (a settled rain of
@@ -314,6 +327,8 @@ class ContactSolver {
     std::uint32_t axis;  // the contact's (the normal's, as ContactConstraint::axis)
   };
   bool sweep_friction();
+  template <bool wide>
+  bool sweep_friction_rows();
   template <double Vector::*n, double Vector::*t>
   static bool friction_row(const SolverRow& r, double& lambda, FrictionHot& f, std::span<SolverBody> bodies);
   template <bool y>
@@ -321,6 +336,8 @@ class ContactSolver {
   template <bool y>
   static bool friction_two(std::span<const SolverRow, 2> r, double* lambda, std::span<FrictionHot, 2> f,
                            std::span<SolverBody> bodies);
+  template <bool y>
+  PHYSICS_AVX2 static bool friction_four(const SolverRow* r, double* lambda, FrictionHot* f, SolverBody* bodies);
   // Without friction, one velocity component and the inverse mass: the x
   // rows and the y rows each read their own (axis_bodies_), so that two
   // threads sweep them at once without sharing a cache line.
