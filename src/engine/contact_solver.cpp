@@ -80,9 +80,12 @@ constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
 // Whether the boxes of pair p overlap by more than the slop (what the position stage corrects).
 bool overlaps(const Components& k, const Pair& p, double slop) { return best_axis(k, p.c, p.b).second < -slop; }
 
-// By axis (-x, +x, -y, +y): the normal's sign, the tangent's (tangent(n) = (-n.y, n.x)).
-constexpr double normal_sign[4] = {-1.0, 1.0, -1.0, 1.0};
-constexpr double tangent_sign[4] = {-1.0, 1.0, 1.0, -1.0};
+// By axis (-x, +x, -y, +y): the normal's sign, the tangent's (tangent(n) =
+// (-n.y, n.x)), side by side: the friction rows load them as a pair.
+struct AxisSigns {
+  double normal, tangent;
+};
+constexpr AxisSigns axis_signs[4] = {{-1.0, -1.0}, {1.0, 1.0}, {-1.0, 1.0}, {1.0, -1.0}};
 
 // Breadth-first from the fixed bodies along the weight-bearing contacts
 // (lower -> upper) finds the bodies that rest on something fixed; then each
@@ -856,6 +859,27 @@ void ContactSolver::load_contact_rows(bool after_bounce) {
       friction_rows_[i] = {f.mu, after_bounce ? 0.0 : f.lambda, static_cast<std::uint32_t>(contacts[order[i]].axis)};
     }
   });
+  group_friction_rows();
+}
+
+// The friction sweep's groups (refresh_rows() keeps them with the rows):
+// rows i and i + 1 go side by side (2) when they are paired (friction_paired_)
+// and both have friction; four rows (4) when rows i + 2 and i + 3 do too,
+// the third then marked 2 for the sweep without AVX2; else one row (1). Read
+// once a row in the sweep, where the tests were about 40 instructions a group.
+void ContactSolver::group_friction_rows() {
+#if defined(__SSE2__)
+  const std::span<const FrictionHot> f(friction_rows_);
+  const std::span<const std::uint8_t> paired(friction_paired_);
+  friction_group_.assign(f.size(), 0);
+  const auto two = [&](std::size_t i) { return paired[i] && f[i].mu != 0.0 && f[i + 1].mu != 0.0; };  // (paired: i + 1 exists)
+  for (std::size_t i = 0; i < f.size();) {
+    const std::uint8_t n = !two(i) ? 1 : paired[i + 1] && two(i + 2) ? 4 : 2;
+    friction_group_[i] = n;
+    if (n == 4) friction_group_[i + 2] = 2;
+    i += n;
+  }
+#endif
 }
 
 // When the rows hold the last plain relaxation's contacts, in the same order
@@ -978,7 +1002,7 @@ template <bool y>
   constexpr int swap = y ? 1 : 2;  // _mm_shuffle_pd's: (high, low) for 1, (low, high) for 2
   const __m128d vc = _mm_loadu_pd(&bc.v.x), vb = _mm_loadu_pd(&bb.v.x);
   const __m128d rel = _mm_sub_pd(vc, vb);
-  const __m128d sign = _mm_setr_pd(normal_sign[f.axis], tangent_sign[f.axis]);
+  const __m128d sign = _mm_loadu_pd(&axis_signs[f.axis].normal);
   const __m128d v = _mm_mul_pd(sign, _mm_shuffle_pd(rel, rel, swap));  // (vn, vt)
   const __m128d old = _mm_setr_pd(lambda_n, f.lambda);
   const __m128d push = _mm_mul_pd(_mm_sub_pd(v, _mm_set_sd(r.target)), _mm_set1_pd(r.inv_w));
@@ -1009,14 +1033,14 @@ template <double Vector::*n, double Vector::*t>
 #if defined(__SSE2__)
   if (f.mu != 0.0) return friction_row_sse2<n == &Vector::y>(r, lambda_n, f, bc, bb);
 #endif
-  const double sn = normal_sign[f.axis];
+  const double sn = axis_signs[f.axis].normal;
   const double vn = sn * (bc.v.*n - bb.v.*n);
   const double lambda = std::max(lambda_n - (vn - r.target) * r.inv_w, 0.0);
   apply_axis_impulse(bc.v.*n, bb.v.*n, sn, lambda - lambda_n, bc.w, bb.w);
   bool changed = std::bit_cast<std::uint64_t>(lambda) != std::bit_cast<std::uint64_t>(lambda_n);
   lambda_n = lambda;
   if (f.mu == 0.0) return changed;
-  const double st = tangent_sign[f.axis];
+  const double st = axis_signs[f.axis].tangent;
   const double vt = st * (bc.v.*t - bb.v.*t);
   const double limit = f.mu * lambda;
   const double lt = std::clamp(f.lambda - vt * r.inv_w, -limit, limit);
@@ -1030,8 +1054,8 @@ template <double Vector::*n, double Vector::*t>
 // rows come in runs of one axis (schedule()), so the test of the axis is
 // one the processor predicts, and each row's components are known.
 // Two rows of one level with normals along the same component, both with
-// friction (friction_paired_), are solved side by side (friction_two); with
-// AVX2, four such rows (friction_four).
+// friction, are solved side by side (friction_two); with AVX2, four such rows
+// (friction_four): friction_group_ says which.
 bool ContactSolver::sweep_friction() {
   return PHYSICS_WIDE_ROWS && wide_rows ? sweep_friction_rows<true>() : sweep_friction_rows<false>();
 }
@@ -1049,21 +1073,20 @@ bool ContactSolver::sweep_friction_rows() {
   const std::span<double> lambdas(row_lambda_);
   const std::span<FrictionHot> friction(friction_rows_);
   const std::span<SolverBody> bodies(solver_bodies_);
-  [[maybe_unused]] const std::span<const std::uint8_t> paired(friction_paired_);
+  [[maybe_unused]] const std::span<const std::uint8_t> group(friction_group_);
   bool changed = false;
   for (std::size_t i = 0; i < rows.size();) {
     FrictionHot& f = friction[i];
-#if defined(__SSE2__)
-    if (paired[i] && f.mu != 0.0 && friction[i + 1].mu != 0.0) {  // (never the last row: schedule())
 #if PHYSICS_WIDE_ROWS
-      // Rows i to i + 3 of one level (each paired with the next, so none is the last).
-      if (wide && paired[i + 1] && paired[i + 2] && friction[i + 2].mu != 0.0 && friction[i + 3].mu != 0.0) {
-        changed |= f.axis >= 2 ? friction_four<true>(&rows[i], &lambdas[i], &f, bodies.data())
-                               : friction_four<false>(&rows[i], &lambdas[i], &f, bodies.data());
-        i += 4;
-        continue;
-      }
+    if (wide && group[i] == 4) {
+      changed |= f.axis >= 2 ? friction_four<true>(&rows[i], &lambdas[i], &f, bodies.data())
+                             : friction_four<false>(&rows[i], &lambdas[i], &f, bodies.data());
+      i += 4;
+      continue;
+    }
 #endif
+#if defined(__SSE2__)
+    if (group[i] >= 2) {
       changed |= f.axis >= 2
                      ? friction_two<true>(rows.subspan(i).first<2>(), &lambdas[i], friction.subspan(i).first<2>(), bodies)
                      : friction_two<false>(rows.subspan(i).first<2>(), &lambdas[i], friction.subspan(i).first<2>(), bodies);
@@ -1081,9 +1104,17 @@ bool ContactSolver::sweep_friction_rows() {
 #if PHYSICS_WIDE_ROWS
 namespace {
 // (Helpers of friction_four with its target: a lambda in it would not have AVX2.)
-// The velocities of bodies lo and hi, (x, y) each, in the low and the high half.
-[[gnu::target("avx2"), gnu::always_inline]] inline __m256d velocities(const Vector& lo, const Vector& hi) {
-  return _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(&lo.x)), _mm_loadu_pd(&hi.x), 1);
+// Four pairs of doubles (a body's velocity, a row's inverse mass and target,
+// a friction row's coefficient and accumulator, an axis's signs) as all four
+// firsts and all four seconds: two loads into each half, then unpacked.
+struct Lanes {
+  __m256d first, second;
+};
+[[gnu::target("avx2"), gnu::always_inline]] inline Lanes by_field(const double* p0, const double* p1, const double* p2,
+                                                                 const double* p3) {
+  const __m256d even = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(p0)), _mm_loadu_pd(p2), 1);
+  const __m256d odd = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(p1)), _mm_loadu_pd(p3), 1);
+  return {_mm256_unpacklo_pd(even, odd), _mm256_unpackhi_pd(even, odd)};
 }
 // x and y of four bodies' velocities (lanes 0 to 3) back to them, in lane order.
 [[gnu::target("avx2"), gnu::always_inline]] inline void store_velocities(std::array<Vector*, 4> to, __m256d x,
@@ -1104,24 +1135,20 @@ template <bool y>
                                                    SolverBody* bodies) {
   SolverBody &c0 = bodies[r[0].c], &c1 = bodies[r[1].c], &c2 = bodies[r[2].c], &c3 = bodies[r[3].c];
   SolverBody &b0 = bodies[r[0].b], &b1 = bodies[r[1].b], &b2 = bodies[r[2].b], &b3 = bodies[r[3].b];
-  // Bodies 0 and 2 in one register, 1 and 3 in the other: unpacked, x of all four, then y.
-  const __m256d c02 = velocities(c0.v, c2.v), c13 = velocities(c1.v, c3.v);
-  const __m256d b02 = velocities(b0.v, b2.v), b13 = velocities(b1.v, b3.v);
-  const __m256d cx = _mm256_unpacklo_pd(c02, c13), cy = _mm256_unpackhi_pd(c02, c13);
-  const __m256d bx = _mm256_unpacklo_pd(b02, b13), by = _mm256_unpackhi_pd(b02, b13);
+  static_assert(offsetof(SolverRow, target) == offsetof(SolverRow, inv_w) + sizeof(double) &&
+                offsetof(FrictionHot, lambda) == sizeof(double) && offsetof(AxisSigns, tangent) == sizeof(double));
+  const auto [cx, cy] = by_field(&c0.v.x, &c1.v.x, &c2.v.x, &c3.v.x);
+  const auto [bx, by] = by_field(&b0.v.x, &b1.v.x, &b2.v.x, &b3.v.x);
   const __m256d cn = y ? cy : cx, ct = y ? cx : cy, bn = y ? by : bx, bt = y ? bx : by;
-  const __m256d sn = _mm256_setr_pd(normal_sign[f[0].axis], normal_sign[f[1].axis], normal_sign[f[2].axis],
-                                    normal_sign[f[3].axis]);
-  const __m256d st = _mm256_setr_pd(tangent_sign[f[0].axis], tangent_sign[f[1].axis], tangent_sign[f[2].axis],
-                                    tangent_sign[f[3].axis]);
-  const __m256d inv_w = _mm256_setr_pd(r[0].inv_w, r[1].inv_w, r[2].inv_w, r[3].inv_w);
+  const auto [sn, st] = by_field(&axis_signs[f[0].axis].normal, &axis_signs[f[1].axis].normal,
+                                 &axis_signs[f[2].axis].normal, &axis_signs[f[3].axis].normal);
+  const auto [inv_w, target] = by_field(&r[0].inv_w, &r[1].inv_w, &r[2].inv_w, &r[3].inv_w);
+  const auto [mu, old_t] = by_field(&f[0].mu, &f[1].mu, &f[2].mu, &f[3].mu);
   const __m256d vn = _mm256_mul_pd(sn, _mm256_sub_pd(cn, bn)), vt = _mm256_mul_pd(st, _mm256_sub_pd(ct, bt));
   const __m256d old_n = _mm256_loadu_pd(lambda_n);
-  const __m256d old_t = _mm256_setr_pd(f[0].lambda, f[1].lambda, f[2].lambda, f[3].lambda);
-  const __m256d target = _mm256_setr_pd(r[0].target, r[1].target, r[2].target, r[3].target);
   const __m256d lambda =
       _mm256_max_pd(_mm256_setzero_pd(), _mm256_sub_pd(old_n, _mm256_mul_pd(_mm256_sub_pd(vn, target), inv_w)));
-  const __m256d limit = _mm256_mul_pd(_mm256_setr_pd(f[0].mu, f[1].mu, f[2].mu, f[3].mu), lambda);
+  const __m256d limit = _mm256_mul_pd(mu, lambda);
   const __m256d neg_limit = _mm256_xor_pd(limit, _mm256_set1_pd(-0.0));
   const __m256d lt = _mm256_min_pd(limit, _mm256_max_pd(neg_limit, _mm256_sub_pd(old_t, _mm256_mul_pd(vt, inv_w))));
   const __m256d jn = _mm256_sub_pd(lambda, old_n), jt = _mm256_sub_pd(lt, old_t);
@@ -1163,8 +1190,8 @@ template <bool y>
   const __m128d cx = _mm_unpacklo_pd(c0v, c1v), cy = _mm_unpackhi_pd(c0v, c1v);
   const __m128d bx = _mm_unpacklo_pd(b0v, b1v), by = _mm_unpackhi_pd(b0v, b1v);
   const __m128d cn = y ? cy : cx, ct = y ? cx : cy, bn = y ? by : bx, bt = y ? bx : by;
-  const __m128d sn = _mm_setr_pd(normal_sign[f[0].axis], normal_sign[f[1].axis]);
-  const __m128d st = _mm_setr_pd(tangent_sign[f[0].axis], tangent_sign[f[1].axis]);
+  const __m128d sn = _mm_setr_pd(axis_signs[f[0].axis].normal, axis_signs[f[1].axis].normal);
+  const __m128d st = _mm_setr_pd(axis_signs[f[0].axis].tangent, axis_signs[f[1].axis].tangent);
   const __m128d inv_w = _mm_setr_pd(r[0].inv_w, r[1].inv_w);
   const __m128d vn = _mm_mul_pd(sn, _mm_sub_pd(cn, bn)), vt = _mm_mul_pd(st, _mm_sub_pd(ct, bt));
   const __m128d old_n = _mm_loadu_pd(lambda_n), old_t = _mm_setr_pd(f[0].lambda, f[1].lambda);

@@ -358,6 +358,10 @@ class ContactSolver {
   std::size_t x_rows_ = 0;                 // how many of by_axis_ are x rows
   std::vector<std::uint8_t> paired_;       // by row of by_axis_: it and the next may be solved together
   std::vector<std::uint8_t> friction_paired_;  // the same by row of order_ (sweep_friction)
+  // By row of order_, with friction: how many rows from it the friction sweep
+  // solves together (group_friction_rows()).
+  std::vector<std::uint8_t> friction_group_;
+  void group_friction_rows();
   std::vector<SolverRow> rows_;            // contacts_[row_order()[i]], hot fields
   std::vector<double> row_lambda_;         // by row: its accumulator (SolverRow)
   std::vector<FrictionHot> friction_rows_; // friction_[order_[i]], hot fields
