@@ -781,13 +781,15 @@ void ContactSolver::schedule(const Components& k, Vector g, bool kept_all) {
   if (!paired_.empty()) paired_.back() = 0;
   // The same in order_ for the friction sweep: rows i and i + 1 of one chunk
   // and level with normals along the same component (schedule's sort puts a
-  // level's x rows before its y rows).
+  // level's x rows before its y rows). Read only where rows go side by side.
+#if defined(__SSE2__)
   friction_paired_.resize(order_.size());
   for (std::size_t i = 0; i + 1 < order_.size(); ++i) {
     const std::uint32_t a = order_[i], b = order_[i + 1];
     friction_paired_[i] = same_level(a, b) && (contacts_[a].axis >= 2) == (contacts_[b].axis >= 2);
   }
   if (!friction_paired_.empty()) friction_paired_.back() = 0;
+#endif
 }
 
 // The rows' order: without friction, a row reads and changes one velocity
