@@ -258,20 +258,23 @@ void check_same_bits(const std::function<std::vector<EntityId>(World&)>& build) 
   BOOST_TEST(!std::equal(plain.begin(), plain.begin() + half, plain.begin() + half));
 }
 
+// Within the walls, a pyramid of `base` blocks at its foot and `drops` smaller
+// blocks falling on it: their ids.
+std::vector<EntityId> pyramid_under_rain(World& w, int base, int drops) {
+  Game::init_walls(w);
+  std::vector<EntityId> ids;
+  for (int r = 0; r < base; ++r)
+    for (int i = 0; i < base - r; ++i)
+      ids.push_back(Block::make(w, 60 + 10 * r + 20 * i, 540 - 20 * r, 20, 20, test::grey, 1.0).id);
+  for (int i = 0; i < drops; ++i) {
+    ids.push_back(Block::make(w, 40 + 22 * i, 200 - 15 * (i % 3), 12, 12, test::grey, 0.5 + 0.25 * (i % 4), 0.5).id);
+    w.components.velocity[ids.back()] = {0.02 * ((i % 5) - 2), 0.1};
+  }
+  return ids;
+}
+
 BOOST_AUTO_TEST_CASE(rows_without_friction_give_the_friction_loops_bits) {
-  // A pyramid with rain falling on it.
-  check_same_bits([](World& w) {
-    Game::init_walls(w);
-    std::vector<EntityId> ids;
-    for (int r = 0; r < 10; ++r)
-      for (int i = 0; i < 10 - r; ++i)
-        ids.push_back(Block::make(w, 60 + 10 * r + 20 * i, 540 - 20 * r, 20, 20, test::grey, 1.0).id);
-    for (int i = 0; i < 12; ++i) {
-      ids.push_back(Block::make(w, 40 + 22 * i, 200 - 15 * (i % 3), 12, 12, test::grey, 0.5 + 0.25 * (i % 4), 0.5).id);
-      w.components.velocity[ids.back()] = {0.02 * ((i % 5) - 2), 0.1};
-    }
-    return ids;
-  });
+  check_same_bits([](World& w) { return pyramid_under_rain(w, 10, 12); });
   // The last x row and the first y row of the same level (the x contact is
   // the first of both its blocks, the walls come after them): not side by
   // side, each is solved along its own axis.
@@ -299,15 +302,7 @@ BOOST_AUTO_TEST_CASE(four_friction_rows_side_by_side_give_the_bits_of_two) {
     p.solver = Solver::stable;
     p.gravity = {0, 0.001};
     World w = test::physics_world(p);
-    Game::init_walls(w);
-    std::vector<EntityId> ids;
-    for (int r = 0; r < 14; ++r)
-      for (int i = 0; i < 14 - r; ++i)
-        ids.push_back(Block::make(w, 60 + 10 * r + 20 * i, 540 - 20 * r, 20, 20, test::grey, 1.0).id);
-    for (int i = 0; i < 16; ++i) {
-      ids.push_back(Block::make(w, 40 + 22 * i, 200 - 15 * (i % 3), 12, 12, test::grey, 0.5 + 0.25 * (i % 4), 0.5).id);
-      w.components.velocity[ids.back()] = {0.02 * ((i % 5) - 2), 0.1};
-    }
+    const std::vector<EntityId> ids = pyramid_under_rain(w, 14, 16);
     for (EntityId e = 0; e < w.components.size(); ++e) w.components.friction[e] = 0.3 + 0.1 * (e % 4);
     std::vector<std::uint64_t> out;
     for (int f = 0; f < 150; ++f) {

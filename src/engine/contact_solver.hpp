@@ -357,7 +357,7 @@ class ContactSolver {
   std::vector<std::uint32_t> by_axis_;     // order_'s x rows, then its y rows (row_order())
   std::size_t x_rows_ = 0;                 // how many of by_axis_ are x rows
   std::vector<std::uint8_t> paired_;       // by row of by_axis_: it and the next may be solved together
-  std::vector<std::uint8_t> friction_paired_;  // the same by row of order_ (sweep_friction)
+  std::vector<std::uint8_t> friction_paired_;  // the same by row of order_ (with SSE2: group_friction_rows)
   // By row of order_, with friction: how many rows from it the friction sweep
   // solves together (group_friction_rows()).
   std::vector<std::uint8_t> friction_group_;

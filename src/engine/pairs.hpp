@@ -114,7 +114,7 @@ class BroadPhase {
   bool course_next_slow(Pair& out);     // the next pair, merging the list with the pairs found late
   // From `out` (or the end, if done) on, the first pair the rules keep.
   bool course_skip_unsolvable(const Components& k, Pair& out, bool done);
-  static constexpr std::size_t pair_ahead = 8;
+  static constexpr std::size_t pair_ahead = 8;  // course_next() asks for the bodies of the pair this far ahead
   [[gnu::always_inline]] void prefetch_body(const Components& k, std::uint32_t i) const {
     const EntityId e = course_entities_[i];
     __builtin_prefetch(&k.position[e]);
