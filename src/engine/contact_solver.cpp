@@ -3,11 +3,8 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
-#if defined(__x86_64__) && defined(__GNUC__)  // (as PHYSICS_AVX2)
+#if PHYSICS_WIDE_ROWS  // (contact_solver.hpp)
 #include <immintrin.h>
-#define PHYSICS_WIDE_ROWS 1  // friction_four, with AVX2 where the processor has it
-#else
-#define PHYSICS_WIDE_ROWS 0
 #endif
 
 #include <algorithm>

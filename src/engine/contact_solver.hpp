@@ -162,11 +162,14 @@ struct ShockPass {
   std::vector<ShockRow> rows;
 };
 
-// The attribute of the functions built for AVX2 beside the rest (x86-64:
-// ContactSolver::wide_rows says whether they run).
+// On x86-64, functions built for AVX2 beside the rest (friction_four:
+// PHYSICS_WIDE_ROWS), with PHYSICS_AVX2 as their attribute;
+// ContactSolver::wide_rows says whether they run.
 #if defined(__x86_64__) && defined(__GNUC__)
+#define PHYSICS_WIDE_ROWS 1
 #define PHYSICS_AVX2 __attribute__((target("avx2")))
 #else
+#define PHYSICS_WIDE_ROWS 0
 #define PHYSICS_AVX2
 #endif
 
