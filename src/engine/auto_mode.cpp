@@ -227,7 +227,8 @@ void AutoMode::keep(const Components& k) {
 // joined by the solver's contacts, as its guard joins them: through finite
 // bodies) that had such a chain, or whose energy changed though all their
 // contacts have e = 1, are put back as they were and swept from the start.
-void AutoMode::roll_back(Components& k, std::span<const EntityId> bodies, std::span<const ContactConstraint> contacts) {
+void AutoMode::roll_back(Components& k, std::span<const EntityId> bodies, std::span<const ContactConstraint> contacts,
+                         std::span<const ContactImpulse> impulses) {
   if (any_undone_) std::fill(undone_.begin(), undone_.end(), 0), any_undone_ = false;
   if (!trial_) return;
   undone_.resize(k.size(), 0);
@@ -238,8 +239,9 @@ void AutoMode::roll_back(Components& k, std::span<const EntityId> bodies, std::s
   for (const ContactConstraint& ct : contacts)
     if (ct.wc > 0.0 && ct.wb > 0.0) root_.join(ct.c, ct.b);
   // Per body, its pushing contacts (1: one, 2: a bounce among them, 3: a chain).
-  for (const ContactConstraint& ct : contacts) {
-    if (!(ct.lambda + ct.lambda2 > 0.0)) continue;  // no impulse: it changed nothing
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const ContactConstraint& ct = contacts[i];
+    if (!(impulses[i].lambda + impulses[i].lambda2 > 0.0)) continue;  // no impulse: it changed nothing
     const std::uint8_t kind = !ct.resting && ct.restitution > 0.0 ? 2 : 1;
     for (const EntityId e : {ct.c, ct.b})
       if (std::isfinite(k.mass[e])) undone_[e] = undone_[e] != 0 && (undone_[e] | kind) > 1 ? 3 : std::max(undone_[e], kind);
@@ -267,14 +269,17 @@ void AutoMode::roll_back(Components& k, std::span<const EntityId> bodies, std::s
 }
 
 void AutoMode::after_solver(const Components& k, std::span<const EntityId> bodies,
-                            std::span<const ContactConstraint> contacts, double h) {
+                            std::span<const ContactConstraint> contacts, std::span<const ContactImpulse> impulses,
+                            double h) {
   stats.contacts += static_cast<std::int64_t>(contacts.size());
   pressed_.clear();
   // On trial, impacts do not count: a fast gas's pairs meet again and again,
   // and holding the solver for them would give it their chains.
-  for (const ContactConstraint& ct : contacts)
-    if (ct.wc > 0.0 && ct.wb > 0.0 && ct.lambda + ct.lambda2 > 0.0 && !(trial_ && !ct.resting))
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const ContactConstraint& ct = contacts[i];
+    if (ct.wc > 0.0 && ct.wb > 0.0 && impulses[i].lambda + impulses[i].lambda2 > 0.0 && !(trial_ && !ct.resting))
       pressed_.push_back(Pair{ct.c, ct.b}.key());
+  }
   count_pressed();
   if (first_ && !pressed_.empty()) hold_left_ = hold;  // a pile from the start
   if (jam_left_ > 0) {  // a jam: the solver takes it whole (after_sweep)

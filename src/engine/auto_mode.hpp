@@ -110,8 +110,9 @@ class AutoMode {
   bool plan(const Components& k, std::span<const EntityId> bodies, double h, Vector gravity);
   // After the solver's velocities: whether finite bodies carry each other
   // (keeps the solver), and which bodies are still fast, from when.
+  // (impulses: the contacts' accumulated impulses, beside them.)
   void after_solver(const Components& k, std::span<const EntityId> bodies, std::span<const ContactConstraint> contacts,
-                    double h);
+                    std::span<const ContactImpulse> impulses, double h);
   // After the course's pass: whether a pair of finite bodies it resolved was
   // resolved by the pass before too (switches to the solver).
   void after_course_pass(const Components& k, std::span<const Contact> contacts);
@@ -124,7 +125,8 @@ class AutoMode {
   // they were and sweeps them instead. undone(e): e's solver contacts were
   // undone this substep (its events are CCD's).
   void keep(const Components& k);
-  void roll_back(Components& k, std::span<const EntityId> bodies, std::span<const ContactConstraint> contacts);
+  void roll_back(Components& k, std::span<const EntityId> bodies, std::span<const ContactConstraint> contacts,
+                 std::span<const ContactImpulse> impulses);
   bool undone(EntityId e) const { return e < undone_.size() && undone_[e] == 1; }
 
   // The state a saved world keeps; restore() also marks the world as

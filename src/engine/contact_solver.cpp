@@ -216,6 +216,7 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
   shifted_.clear();
   line_start_.resize(k.size(), 0.0);
   earlier_.clear();
+  earlier_impulses_.clear();
   earlier_friction_.clear();
   earlier_jn_.clear();
   earlier_jt_.clear();
@@ -278,7 +279,7 @@ std::uint8_t ContactSolver::make_contacts(const Components& k, double h) {
   Workers& w = workers_or_one(workers_);
   const std::size_t n = pairs_.size();
   const RangeCount& all = counts_.back();
-  contacts_.resize(all.contacts), pair_of_.resize(all.contacts);
+  contacts_.resize(all.contacts), impulses_.resize(all.contacts), pair_of_.resize(all.contacts);
   topology_next_.resize(all.contacts), impacts_.resize(all.impacts), apart_.resize(all.apart);
   contact_bits_.resize(all.contacts);
   // When every pair is what it was (same_kinds_), each contact is where it
@@ -294,7 +295,7 @@ std::uint8_t ContactSolver::make_contacts(const Components& k, double h) {
       if (kinds_[i] == PairKind::impact) impacts_[at.impacts++] = static_cast<std::uint32_t>(at.contacts);
       const std::size_t j = at.contacts++;
       if (keep && !(changed_[pairs_[i].c] | changed_[pairs_[i].b])) {
-        contacts_[j].lambda = contacts_[j].lambda2 = 0.0;
+        impulses_[j] = {};
         topology_next_[j] = topology_[j];
       } else {
         contact_bits_[j] = make_contact(k, i, h, j);
@@ -309,11 +310,11 @@ std::uint8_t ContactSolver::make_contacts(const Components& k, double h) {
 // the last preparation's contacts, lists and topology are this one's: only
 // the accumulators are cleared, as make_contact() clears them.
 std::uint8_t ContactSolver::keep_contacts() {
-  const std::span<ContactConstraint> contacts(contacts_);
+  const std::span<ContactImpulse> impulses(impulses_);
   const std::span<const std::uint8_t> contact_bits(contact_bits_);
-  return workers_or_one(workers_).or_over_ranges(contacts.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+  return workers_or_one(workers_).or_over_ranges(impulses.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
     std::uint8_t bits = 0;
-    for (std::size_t j = begin; j < end; ++j) contacts[j].lambda = contacts[j].lambda2 = 0.0, bits |= contact_bits[j];
+    for (std::size_t j = begin; j < end; ++j) impulses[j] = {}, bits |= contact_bits[j];
     return bits;
   });
 }
@@ -472,7 +473,7 @@ inline std::uint8_t ContactSolver::make_contact(const Components& k, std::size_t
   // stall: 10 % of the pyramid's step, perf annotate).
   ContactConstraint& ct = contacts_[j];
   ct.c = p.c, ct.b = p.b, ct.axis = axis, ct.wc = wc, ct.wb = wb, ct.inv_w = 1.0 / (wc + wb);
-  ct.lambda = ct.lambda2 = 0.0;
+  impulses_[j] = {};
   if (kinds_[i] == PairKind::impact) {
     // A real impact this substep: stopped here (target 0), then bounced by
     // e times the stopping impulse once the iterations are done.
@@ -612,9 +613,10 @@ void ContactSolver::keep_round() {
   for (std::size_t i = 0; i < contacts_.size(); ++i) {
     const ContactConstraint& ct = contacts_[i];
     earlier_.push_back(ct);
+    earlier_impulses_.push_back(impulses_[i]);
     earlier_friction_.push_back(friction_.empty() ? FrictionRow{} : friction_[i]);
     if (!ct.resting) continue;
-    earlier_jn_[pair_of_[i]] += ct.lambda + ct.lambda2;
+    earlier_jn_[pair_of_[i]] += impulses_[i].lambda + impulses_[i].lambda2;
     if (!friction_.empty()) earlier_jt_[pair_of_[i]] += friction_[i].lambda + friction_[i].lambda2;
   }
 }
@@ -661,13 +663,13 @@ void ContactSolver::warm_start_search(Components& k) {
 
 // Contact i starts with the normal impulse jn and the tangential jt.
 void ContactSolver::warm_start_one(Components& k, std::size_t i, double jn, double jt) {
-  ContactConstraint& ct = contacts_[i];
-  ct.lambda = jn;
-  apply(k, ct, ct.lambda);
+  const ContactConstraint& ct = contacts_[i];
+  impulses_[i].lambda = jn;
+  apply(k, ct, jn);
   if (friction_.empty()) return;
   FrictionRow& f = friction_[i];
   // Within the cone of this substep's start (mu may be 0 for a pair that had none).
-  f.lambda = std::clamp(jt, -f.mu * ct.lambda, f.mu * ct.lambda);
+  f.lambda = std::clamp(jt, -f.mu * jn, f.mu * jn);
   if (f.lambda != 0.0) apply_tangent(k, ct, f.lambda);
 }
 
@@ -683,7 +685,7 @@ void ContactSolver::relax(Components& k, Vector g, const SolverSettings& s, bool
   else
     iterate<true>(s);
   store_rows(k, after_bounce);
-  if (!after_bounce && Vector::is_zero(g)) islands_solve_.solve(k, contacts_, friction_);
+  if (!after_bounce && Vector::is_zero(g)) islands_solve_.solve(k, contacts_, impulses_, friction_);
   if (!s.shock_propagation) return;
   if (!have_order_) support_order_ = shock_passes(k, contacts_, g), have_order_ = true;
   for (const ShockPass& pass : support_order_)
@@ -839,6 +841,7 @@ void ContactSolver::load_contact_rows(bool after_bounce) {
   targets_.resize(order.size());
   friction_rows_.resize(friction_.size());
   const std::span<const ContactConstraint> contacts(contacts_);
+  const std::span<const ContactImpulse> impulses(impulses_);
   const std::span<const std::uint32_t> slot_of(slot_of_);
   const std::span<SolverRow> rows(rows_);
   const std::span<double> lambdas(row_lambda_);
@@ -850,7 +853,7 @@ void ContactSolver::load_contact_rows(bool after_bounce) {
       // By axis (sweep_axis): each row's normal along +x or +y, its bodies swapped if it was -x or -y.
       const bool swap = by_axis && (ct.axis & 1) == 0;
       rows[i] = {slot_of[swap ? ct.b : ct.c], slot_of[swap ? ct.c : ct.b], ct.inv_w, target};
-      lambdas[i] = after_bounce ? 0.0 : ct.lambda;
+      lambdas[i] = after_bounce ? 0.0 : impulses[order[i]].lambda;
       targets[order[i]] = target;  // by contact, for the bottom-up pass
     }
     for (std::size_t i = begin; i < std::min(end, friction_.size()); ++i) {
@@ -886,12 +889,12 @@ void ContactSolver::group_friction_rows() {
 // start's impulses.
 void ContactSolver::refresh_rows() {
   const std::span<const std::uint32_t> order = row_order();
-  const std::span<const ContactConstraint> contacts(contacts_);
+  const std::span<const ContactImpulse> impulses(impulses_);
   const std::span<const FrictionRow> friction(friction_);
   const std::span<double> lambdas(row_lambda_);
   const std::span<FrictionHot> friction_rows(friction_rows_);
   workers_or_one(workers_).for_ranges(order.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) lambdas[i] = contacts[order[i]].lambda;
+    for (std::size_t i = begin; i < end; ++i) lambdas[i] = impulses[order[i]].lambda;
     for (std::size_t i = begin; i < std::min(end, friction.size()); ++i) friction_rows[i].lambda = friction[order[i]].lambda;
   });
 }
@@ -901,12 +904,12 @@ void ContactSolver::store_rows(Components& k, bool after_bounce) {
   Workers& w = workers_or_one(workers_);
   const std::span<const std::uint32_t> order = row_order();
   // (Spans and values, not the members: the loops' stores could alias them, reloaded at every item.)
-  const std::span<ContactConstraint> contacts(contacts_);
+  const std::span<ContactImpulse> impulses(impulses_);
   const std::span<const double> lambdas(row_lambda_);
   w.for_ranges(order.size(), min_parallel_items, [&, after_bounce](int, std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
-      ContactConstraint& ct = contacts[order[i]];
-      (after_bounce ? ct.lambda2 : ct.lambda) = lambdas[i];
+      ContactImpulse& j = impulses[order[i]];
+      (after_bounce ? j.lambda2 : j.lambda) = lambdas[i];
     }
     for (std::size_t i = begin; i < std::min(end, friction_rows_.size()); ++i) {
       FrictionRow& f = friction_[order[i]];
@@ -1300,14 +1303,14 @@ void ContactSolver::prepare_friction(const Components& k, bool any, bool kept_al
 // they are the velocities themselves, which the energy guard reads then.)
 void ContactSolver::restitution(Components& k, Vector g, const SolverSettings& s) {
   have_inelastic_ = false;
-  if (std::none_of(impacts_.begin(), impacts_.end(), [&](std::uint32_t i) { return bounces(contacts_[i]); })) {
+  if (std::none_of(impacts_.begin(), impacts_.end(), [&](std::uint32_t i) { return bounces(i); })) {
     guard_energy(k);
     return;
   }
   keep_inelastic(k);
   for (const std::uint32_t i : impacts_) {
     const ContactConstraint& ct = contacts_[i];
-    if (bounces(ct)) apply(k, ct, ct.restitution * ct.lambda);
+    if (bounces(i)) apply(k, ct, ct.restitution * impulses_[i].lambda);
   }
   // The bounce impulses were computed contact by contact: a light block
   // lying on the floor when a heavy one lands on it gets e times its share
@@ -1368,6 +1371,7 @@ void ContactSolver::store() {
   last_jt_.resize(contacts_.size());
   // (Spans, not the members: the stores could alias a vector's own pointers.)
   const std::span<const ContactConstraint> contacts(contacts_);
+  const std::span<const ContactImpulse> impulses(impulses_);
   const std::span<const FrictionRow> friction(friction_);
   const std::span<const std::uint32_t> pair_of(pair_of_);
   const std::span<const double> earlier_jn(earlier_jn_), earlier_jt(earlier_jt_);
@@ -1376,16 +1380,15 @@ void ContactSolver::store() {
     // One round (most substeps): the sums below without the earlier rounds' terms (+ 0.0: a -0 becomes +0,
     // which only the tangential impulse keeps; the normal one is kept when positive).
     for (std::size_t i = begin; earlier_jn.empty() && i < end; ++i) {
-      const ContactConstraint& ct = contacts[i];
-      const double jn = ct.lambda + ct.lambda2;
-      last_jn[i] = ct.resting && jn > 0.0 ? jn : 0.0;
+      const double jn = impulses[i].lambda + impulses[i].lambda2;
+      last_jn[i] = contacts[i].resting && jn > 0.0 ? jn : 0.0;
       last_jt[i] = friction.empty() ? 0.0 : friction[i].lambda + friction[i].lambda2 + 0.0;
     }
     for (std::size_t i = begin; !earlier_jn.empty() && i < end; ++i) {
       const ContactConstraint& ct = contacts[i];
       const std::uint32_t p = pair_of[i];
       const bool earlier = p < earlier_jn.size();  // earlier rounds of this substep (keep_round())
-      const double jn = ct.lambda + ct.lambda2 + (earlier ? earlier_jn[p] : 0.0);
+      const double jn = impulses[i].lambda + impulses[i].lambda2 + (earlier ? earlier_jn[p] : 0.0);
       const bool keep = ct.resting && jn > 0.0;
       last_jn[i] = keep ? jn : 0.0;
       last_jt[i] =

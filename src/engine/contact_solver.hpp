@@ -117,7 +117,7 @@ struct SolverStats {
 };
 
 // One contact as the solver's iterations read it: the pair, its axis and
-// inverse masses, and the accumulated impulses.
+// inverse masses (its accumulated impulses apart: ContactImpulse).
 struct ContactConstraint {
   EntityId c, b;
   int axis;          // 0: -x, 1: +x, 2: -y, 3: +y (the normal that moves c away from b)
@@ -126,10 +126,18 @@ struct ContactConstraint {
   double wc, wb;     // inverse masses
   double inv_w;      // 1 / (wc + wb): the iterations multiply by it (a division there sat on the dependency chain)
   double target;     // lowest allowed (v_c - v_b)·n
-  double lambda;     // accumulated impulse
-  double lambda2;    // accumulated in the relaxation after the bounces
   double restitution;  // of an impact: bounce impulse = restitution × lambda
   double toi;          // of an impact found before touching: ms into the substep
+};
+
+// A contact's accumulated normal impulses, beside its ContactConstraint
+// (same index), in an array of their own: the passes that clear, load, store
+// and keep them at every substep read 16 bytes a contact, not its 64-byte
+// contact (a resting pile's contacts, beyond the caches: those passes were a
+// third of many_pyramids' step, perf).
+struct ContactImpulse {
+  double lambda;   // accumulated impulse
+  double lambda2;  // accumulated in the relaxation after the bounces
 };
 
 // A contact's friction, beside its ContactConstraint (same index), kept only
@@ -187,6 +195,7 @@ class ContactSolver {
   // (empty when no contact had friction), for contact events.
   // When the substep took several rounds (turned_to_meet), every round's.
   std::span<const ContactConstraint> constraints() const { return earlier_.empty() ? contacts_ : earlier_; }
+  std::span<const ContactImpulse> impulses() const { return earlier_.empty() ? impulses_ : earlier_impulses_; }
   std::span<const FrictionRow> friction_rows() const { return earlier_.empty() ? friction_ : earlier_friction_; }
 
   // The warm-start impulses the next substep reads (save and restore).
@@ -271,7 +280,9 @@ class ContactSolver {
   void keep_round();
   bool last_round_ = false;             // round `rounds`: no bounce
   // Whether an impact bounces (its restitution stays the pair's: auto reads it).
-  bool bounces(const ContactConstraint& ct) const { return !last_round_ && ct.restitution > 0.0 && ct.lambda > 0.0; }
+  bool bounces(std::size_t i) const {
+    return !last_round_ && contacts_[i].restitution > 0.0 && impulses_[i].lambda > 0.0;
+  }
   std::vector<std::uint32_t> apart_;    // pairs prepare() did not take: neither close nor closing
   std::vector<std::uint32_t> pair_of_;  // by contact: its index in pairs_
   std::vector<Pair> later_;             // turned_to_meet(): the pairs for the solved velocities
@@ -280,6 +291,7 @@ class ContactSolver {
   // The earlier rounds' contacts and friction rows (then the last round's
   // too: constraints()), and their resting impulses by pair (store()).
   std::vector<ContactConstraint> earlier_;
+  std::vector<ContactImpulse> earlier_impulses_;
   std::vector<FrictionRow> earlier_friction_;
   std::vector<double> earlier_jn_, earlier_jt_;
   void contact_axes(const Components& k, const SolverSettings& s);
@@ -307,6 +319,7 @@ class ContactSolver {
 
   std::vector<Pair> pairs_;
   std::vector<ContactConstraint> contacts_;
+  std::vector<ContactImpulse> impulses_;  // by contact
   IslandSolve islands_solve_;  // relax's exact solve of small free islands (engine/island_solve.hpp)
   // The iterations' copy of the contacts and their bodies (schedule()):
   // what the hot loop reads and nothing else, bodies by a dense slot.

@@ -26,7 +26,8 @@ bool IslandSolve::violated(const Components& k, const ContactConstraint& ct) con
   return ct.target - normal_speed(k, ct) > slack(k, ct);
 }
 
-void IslandSolve::solve(Components& k, std::span<ContactConstraint> contacts, std::span<const FrictionRow> friction) {
+void IslandSolve::solve(Components& k, std::span<const ContactConstraint> contacts, std::span<ContactImpulse> impulses,
+                        std::span<const FrictionRow> friction) {
   const auto free_pair = [&](const ContactConstraint& ct) { return ct.wc > 0.0 && ct.wb > 0.0; };
   if (std::none_of(contacts.begin(), contacts.end(),
                    [&](const ContactConstraint& ct) { return free_pair(ct) && violated(k, ct); }))
@@ -54,21 +55,22 @@ void IslandSolve::solve(Components& k, std::span<ContactConstraint> contacts, st
     bool any = false;
     for (to = from; to < keys_.size() && keys_[to] >> 32 == keys_[from] >> 32; ++to)
       any = any || violated(k, contacts[static_cast<std::uint32_t>(keys_[to])]);
-    if (any && to - from <= max_contacts) solve_island(k, contacts, std::span(keys_).subspan(from, to - from));
+    if (any && to - from <= max_contacts) solve_island(k, contacts, impulses, std::span(keys_).subspan(from, to - from));
   }
 }
 
 // The island (its contacts' indices in the low bits of `members`): A δ = r
 // on the active contacts, the others' impulse dropped to 0, until no active
 // one pulls and no other one approaches.
-bool IslandSolve::solve_island(Components& k, std::span<ContactConstraint> contacts,
-                               std::span<const std::uint64_t> members) {
+bool IslandSolve::solve_island(Components& k, std::span<const ContactConstraint> contacts,
+                               std::span<ContactImpulse> impulses, std::span<const std::uint64_t> members) {
   const std::size_t m = members.size();
-  const auto member = [&](std::size_t i) -> ContactConstraint& { return contacts[static_cast<std::uint32_t>(members[i])]; };
+  const auto index = [&](std::size_t i) { return static_cast<std::uint32_t>(members[i]); };
+  const auto member = [&](std::size_t i) -> const ContactConstraint& { return contacts[index(i)]; };
   for (std::size_t i = 0; i < m; ++i) {
     const ContactConstraint& ci = member(i);
     r_[i] = ci.target - normal_speed(k, ci);
-    lambda_[i] = ci.lambda;
+    lambda_[i] = impulses[index(i)].lambda;
     tol_[i] = slack(k, ci);
     active_[i] = lambda_[i] > 0.0 || r_[i] > tol_[i];
     for (std::size_t j = 0; j < m; ++j) {
@@ -93,9 +95,9 @@ bool IslandSolve::solve_island(Components& k, std::span<ContactConstraint> conta
     }
     if (worst == m) {
       for (std::size_t i = 0; i < m; ++i) {
-        ContactConstraint& ct = member(i);
+        const ContactConstraint& ct = member(i);
         apply_normal_impulse(k.velocity[ct.c], k.velocity[ct.b], axis_normal[ct.axis], delta_[i], ct.wc, ct.wb);
-        ct.lambda = std::max(lambda_[i] + delta_[i], 0.0);
+        impulses[index(i)].lambda = std::max(lambda_[i] + delta_[i], 0.0);
       }
       return true;
     }

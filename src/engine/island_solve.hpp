@@ -34,20 +34,23 @@
 namespace physics {
 
 struct ContactConstraint;  // engine/contact_solver.hpp, which holds an IslandSolve
+struct ContactImpulse;
 struct FrictionRow;
 
 class IslandSolve {
  public:
   static constexpr std::size_t max_contacts = 16;
 
-  // contacts: the solver's after its first iterations (the impulses that
-  // stop the impacts: restitution gives e times them back); friction: the
-  // rows beside them (empty when no contact has friction).
-  void solve(Components& k, std::span<ContactConstraint> contacts, std::span<const FrictionRow> friction);
+  // contacts and their impulses: the solver's after its first iterations
+  // (the impulses that stop the impacts: restitution gives e times them
+  // back); friction: the rows beside them (empty when no contact has friction).
+  void solve(Components& k, std::span<const ContactConstraint> contacts, std::span<ContactImpulse> impulses,
+             std::span<const FrictionRow> friction);
 
  private:
   bool violated(const Components& k, const ContactConstraint& ct) const;
-  bool solve_island(Components& k, std::span<ContactConstraint> contacts, std::span<const std::uint64_t> members);
+  bool solve_island(Components& k, std::span<const ContactConstraint> contacts, std::span<ContactImpulse> impulses,
+                    std::span<const std::uint64_t> members);
   bool solve_active(std::size_t m);
   UnionFind islands_;                       // over bodies, and `held` (solve)
   std::vector<std::uint64_t> keys_;         // root << 32 | contact, of the free islands' contacts

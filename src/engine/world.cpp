@@ -188,8 +188,8 @@ void World::auto_before_move(std::span<const EntityId> bodies, double h) {
     }
     automatic.keep(components);
     contact_solver.solve_velocities(components, bodies, h, params.gravity, s, broadphase, times);
-    automatic.after_solver(components, bodies, contact_solver.constraints(), h);
-    automatic.roll_back(components, bodies, contact_solver.constraints());
+    automatic.after_solver(components, bodies, contact_solver.constraints(), contact_solver.impulses(), h);
+    automatic.roll_back(components, bodies, contact_solver.constraints(), contact_solver.impulses());
     slide_.after_solver(components, contact_solver.constraints(), contact_solver.friction_rows());
     record_solver_contacts();
   }
@@ -233,10 +233,12 @@ void World::record_solver_contacts() {
   if (!events.enabled) return;
   const auto rows = contact_solver.friction_rows();
   const auto constraints = contact_solver.constraints();
+  const auto impulses = contact_solver.impulses();
   for (std::size_t i = 0; i < constraints.size(); ++i) {
     const ContactConstraint& ct = constraints[i];
     if (params.solver == Solver::automatic && (automatic.undone(ct.c) || automatic.undone(ct.b))) continue;
-    const double jn = ct.lambda + ct.lambda2 + (ct.resting ? 0.0 : ct.restitution * ct.lambda);
+    const ContactImpulse& j = impulses[i];
+    const double jn = j.lambda + j.lambda2 + (ct.resting ? 0.0 : ct.restitution * j.lambda);
     const double jt = rows.empty() ? 0.0 : rows[i].lambda + rows[i].lambda2;
     if (jn > 0.0) events.touch(ct.c, ct.b, axis_normal[ct.axis], jn, jt);
   }
