@@ -631,7 +631,7 @@ void ContactSolver::warm_start(Components& k) {
     return;
   }
   for (std::size_t i = 0; i < contacts_.size(); ++i)
-    if (contacts_[i].resting && last_jn_[i] > 0.0) warm_start_one(k, i, last_jn_[i], last_jt_[i]);
+    if (last_jn_[i] > 0.0 && contacts_[i].resting) warm_start_one(k, i, last_jn_[i], last_jt_[i]);
 }
 
 // Otherwise each contact's impulse is looked up by pair and axis in the
@@ -1366,6 +1366,9 @@ void ContactSolver::impact_time(Components& k, double h, Vector g, bool exact_mo
 
 // The resting contacts' impulses, for the next substep's warm start, by
 // contact (last_jn_: 0 for none); the sorted list is made only when asked for.
+// The contacts that are not resting are the impacts (make_contact()): with
+// one round, every contact's impulse is kept, then the impacts' dropped, so
+// that the pass reads the impulses and not the contacts.
 void ContactSolver::store() {
   last_jn_.resize(contacts_.size());
   last_jt_.resize(contacts_.size());
@@ -1381,7 +1384,7 @@ void ContactSolver::store() {
     // which only the tangential impulse keeps; the normal one is kept when positive).
     for (std::size_t i = begin; earlier_jn.empty() && i < end; ++i) {
       const double jn = impulses[i].lambda + impulses[i].lambda2;
-      last_jn[i] = contacts[i].resting && jn > 0.0 ? jn : 0.0;
+      last_jn[i] = jn > 0.0 ? jn : 0.0;
       last_jt[i] = friction.empty() ? 0.0 : friction[i].lambda + friction[i].lambda2 + 0.0;
     }
     for (std::size_t i = begin; !earlier_jn.empty() && i < end; ++i) {
@@ -1395,6 +1398,8 @@ void ContactSolver::store() {
           (friction.empty() ? 0.0 : friction[i].lambda + friction[i].lambda2) + (earlier ? earlier_jt[p] : 0.0);
     }
   });
+  if (earlier_jn.empty())
+    for (const std::uint32_t i : impacts_) last_jn[i] = 0.0;
   restored_ = false;
 }
 
