@@ -164,7 +164,7 @@ struct ShockRow {
 // its contacts in order, lowest first. Only contacts whose upper body can
 // move are listed (the others would change nothing), each with what the
 // pass reads of it: a pile's pass reads this list in order and the
-// velocities and targets, not the solver's 80-byte contacts at random.
+// velocities and targets, not the solver's 64-byte contacts at random.
 struct ShockPass {
   Vector down;
   std::vector<ShockRow> rows;
