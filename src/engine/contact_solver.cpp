@@ -561,7 +561,7 @@ void ContactSolver::add_unknown_pairs() {
   if (!known_valid_) {
     known_.clear();
     for (const Pair& p : pairs_) known_.push_back(p.key());
-    if (!std::is_sorted(known_.begin(), known_.end())) std::sort(known_.begin(), known_.end());
+    if (!keeps_unchanged || !std::is_sorted(known_.begin(), known_.end())) std::sort(known_.begin(), known_.end());
     known_valid_ = true;
   }
   const bool ordered = std::is_sorted(later_.begin(), later_.end(), [](Pair a, Pair b) { return a.key() < b.key(); });
@@ -624,7 +624,8 @@ void ContactSolver::keep_round() {
 // that are not resting are the impacts, in order (make_contacts()): a merge
 // with their list, so that the pass reads no contact (warm_start_one).
 void ContactSolver::warm_start(Components& k) {
-  if (restored_ || !same_topology_) {
+  // (The browser's build, short of room, always searches: the same impulses.)
+  if (!keeps_unchanged || restored_ || !same_topology_) {
     warm_start_search(k);
     return;
   }
@@ -649,10 +650,11 @@ void ContactSolver::warm_start_search(Components& k) {
     if (!ct.resting) continue;
     const auto kk = key(ct.c, ct.b);
     const auto probe = std::make_tuple(kk, ct.axis, -infinity, -infinity);
-    if (from != warm_.begin() && !(*std::prev(from) < probe)) from = warm_.begin();
-    // Galloping: the answer is usually a step or two ahead.
-    auto hi = from;
-    for (std::ptrdiff_t step = 1; hi != warm_.end() && *hi < probe; step *= 2) {
+    if (!keeps_unchanged || (from != warm_.begin() && !(*std::prev(from) < probe))) from = warm_.begin();
+    // Galloping: the answer is usually a step or two ahead. (The browser's
+    // build, short of room, searches the whole list: the same answer.)
+    auto hi = keeps_unchanged ? from : warm_.end();
+    for (std::ptrdiff_t step = 1; keeps_unchanged && hi != warm_.end() && *hi < probe; step *= 2) {
       from = std::next(hi);
       hi = step < warm_.end() - hi ? hi + step : warm_.end();
     }
@@ -776,19 +778,20 @@ void ContactSolver::schedule(const Components& k, Vector g, bool kept_all) {
   for (const std::uint32_t i : order_)
     if (contacts_[i].axis >= 2) by_axis_.push_back(i);
   // Rows i and i + 1 of by_axis_ share no linking body when they come from
-  // the same chunk and level: sweep_axis may solve them side by side. The
-  // last row of each axis has no next one in its sweep.
+  // the same chunk and level: sweep_axis may solve them side by side (with
+  // SSE2; elsewhere paired_ stays all zeros). The last row of each axis has
+  // no next one in its sweep.
+  paired_.resize(by_axis_.size());
+#if defined(__SSE2__)
   const auto same_level = [&](std::uint32_t a, std::uint32_t b) {
     return a / chunk == b / chunk && level_[a] == level_[b];
   };
-  paired_.resize(by_axis_.size());
   for (std::size_t i = 0; i + 1 < by_axis_.size(); ++i)
     paired_[i] = i + 1 != x_rows_ && same_level(by_axis_[i], by_axis_[i + 1]);
   if (!paired_.empty()) paired_.back() = 0;
   // The same in order_ for the friction sweep: rows i and i + 1 of one chunk
   // and level with normals along the same component (schedule's sort puts a
-  // level's x rows before its y rows). Read only where rows go side by side.
-#if defined(__SSE2__)
+  // level's x rows before its y rows).
   friction_paired_.resize(order_.size());
   for (std::size_t i = 0; i + 1 < order_.size(); ++i) {
     const std::uint32_t a = order_[i], b = order_[i + 1];
@@ -1389,12 +1392,13 @@ void ContactSolver::store() {
   workers_or_one(workers_).for_ranges(contacts.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
     // One round (most substeps): the sums below without the earlier rounds' terms (+ 0.0: a -0 becomes +0,
     // which only the tangential impulse keeps; the normal one is kept when positive).
-    for (std::size_t i = begin; earlier_jn.empty() && i < end; ++i) {
+    // (The browser's build, short of room, takes the general loop below: the same values.)
+    for (std::size_t i = begin; keeps_unchanged && earlier_jn.empty() && i < end; ++i) {
       const double jn = impulses[i].lambda + impulses[i].lambda2;
       last_jn[i] = jn > 0.0 ? jn : 0.0;
       last_jt[i] = friction.empty() ? 0.0 : friction[i].lambda + friction[i].lambda2 + 0.0;
     }
-    for (std::size_t i = begin; !earlier_jn.empty() && i < end; ++i) {
+    for (std::size_t i = begin; (!keeps_unchanged || !earlier_jn.empty()) && i < end; ++i) {
       const ContactConstraint& ct = contacts[i];
       const std::uint32_t p = pair_of[i];
       const bool earlier = p < earlier_jn.size();  // earlier rounds of this substep (keep_round())
@@ -1405,7 +1409,7 @@ void ContactSolver::store() {
           (friction.empty() ? 0.0 : friction[i].lambda + friction[i].lambda2) + (earlier ? earlier_jt[p] : 0.0);
     }
   });
-  if (earlier_jn.empty())
+  if (keeps_unchanged && earlier_jn.empty())
     for (const std::uint32_t i : impacts_) last_jn[i] = 0.0;
   restored_ = false;
 }
@@ -1418,7 +1422,8 @@ std::vector<std::tuple<std::uint64_t, int, double, double>> ContactSolver::last_
   for (std::size_t i = 0; i < last_jn_.size(); ++i)
     if (last_jn_[i] > 0.0)
       out.emplace_back(key(contacts[i].c, contacts[i].b), static_cast<int>(contacts[i].flags & 3), last_jn_[i], last_jt_[i]);
-  if (!std::is_sorted(out.begin(), out.end())) std::sort(out.begin(), out.end());
+  // (Mostly sorted already; the browser's build, short of room, sorts it anyway.)
+  if (!keeps_unchanged || !std::is_sorted(out.begin(), out.end())) std::sort(out.begin(), out.end());
   return out;
 }
 
@@ -1569,7 +1574,9 @@ void ContactSolver::solve_positions(Components& k, std::span<const EntityId> ent
   // looked for there, without finding the pairs again.
   bool none = false;
   laps.time(Stage::pairs, [&] {
-    none = broadphase.finds() == velocity_finds_ && broadphase.holds(k, entities, s.workers) && !any_overlap(k, s.slop);
+    // (The browser's build, short of room, always finds them again: the same pairs overlap.)
+    none = keeps_unchanged && broadphase.finds() == velocity_finds_ && broadphase.holds(k, entities, s.workers) &&
+           !any_overlap(k, s.slop);
     if (none) return;
     broadphase.find(k, entities, 0.0, s.margin, pairs_, PairRule::solvable, s.workers);
     classified_ = false;  // (pairs_ is no longer the list classified)
