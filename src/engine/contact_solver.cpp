@@ -643,7 +643,7 @@ void ContactSolver::warm_start(Components& k) {
 // search starts where the last one ended when it can: a merge, not a binary
 // search from scratch per contact.
 void ContactSolver::warm_start_search(Components& k) {
-  if (!restored_) warm_ = last_impulses(topology_next_);
+  if (!restored_) last_impulses(topology_next_, warm_);
   restored_ = false;
   auto from = warm_.begin();
   for (ContactConstraint& ct : contacts_) {
@@ -1415,20 +1415,23 @@ void ContactSolver::store() {
 }
 
 // The impulses store() kept, as the sorted list of (pair key, axis, normal
-// impulse, tangential impulse); `contacts`: the keys of the contacts they were stored for.
-std::vector<std::tuple<std::uint64_t, int, double, double>> ContactSolver::last_impulses(
-    std::span<const TopologyKey> contacts) const {
-  std::vector<std::tuple<std::uint64_t, int, double, double>> out;
+// impulse, tangential impulse), into `out` (its memory kept from call to
+// call: a settled 100 000-body rain whose contacts change asks for it at
+// some substeps); `contacts`: the keys of the contacts they were stored for.
+void ContactSolver::last_impulses(std::span<const TopologyKey> contacts,
+                                  std::vector<std::tuple<std::uint64_t, int, double, double>>& out) const {
+  out.clear();
   for (std::size_t i = 0; i < last_jn_.size(); ++i)
     if (last_jn_[i] > 0.0)
       out.emplace_back(key(contacts[i].c, contacts[i].b), static_cast<int>(contacts[i].flags & 3), last_jn_[i], last_jt_[i]);
   // (Mostly sorted already; the browser's build, short of room, sorts it anyway.)
   if (!keeps_unchanged || !std::is_sorted(out.begin(), out.end())) std::sort(out.begin(), out.end());
-  return out;
 }
 
 std::vector<WarmImpulse> ContactSolver::warm_impulses() const {
-  const auto warm = restored_ ? warm_ : last_impulses(topology_);
+  std::vector<std::tuple<std::uint64_t, int, double, double>> last;
+  if (!restored_) last_impulses(topology_, last);
+  const auto& warm = restored_ ? warm_ : last;
   std::vector<WarmImpulse> out;
   out.reserve(warm.size());
   for (const auto& [kk, axis, jn, jt] : warm)

@@ -191,8 +191,9 @@ class ContactSolver {
   SolverStats stats;
 
 
-  // The last substep's contacts (velocity stage) and their friction rows
-  // (empty when no contact had friction), for contact events.
+  // The last substep's contacts (velocity stage), their accumulated
+  // impulses and their friction rows (empty when no contact had friction),
+  // each by the same index, for contact events.
   // When the substep took several rounds (turned_to_meet), every round's.
   std::span<const ContactConstraint> constraints() const { return earlier_.empty() ? contacts_ : earlier_; }
   std::span<const ContactImpulse> impulses() const { return earlier_.empty() ? impulses_ : earlier_impulses_; }
@@ -435,7 +436,8 @@ class ContactSolver {
   // The impulses of the last substep's contacts (store()), by contact; the
   // normal one 0 for a contact that does not warm start the next substep.
   std::vector<double> last_jn_, last_jt_;
-  std::vector<std::tuple<std::uint64_t, int, double, double>> last_impulses(std::span<const TopologyKey> contacts) const;
+  void last_impulses(std::span<const TopologyKey> contacts,
+                     std::vector<std::tuple<std::uint64_t, int, double, double>>& out) const;
   // The warm_start's sorted list (pair key, axis, normal impulse, tangential
   // impulse): made from the above when the contacts changed, or given by
   // restore() (restored_: the list holds the impulses, the above do not).
