@@ -180,6 +180,27 @@ BOOST_AUTO_TEST_CASE(a_heavy_block_on_a_light_one_rests_at_ratio_1e12) {
   BOOST_TEST(std::abs(w.components.position[heavy].y - 500.0) < 0.05);
 }
 
+// A block moved into another at rest (a game's set_position) overlaps it
+// while neither moves: the position stage must see the overlap that the
+// new classification found (ContactSolver::any_overlap lists the overlapping
+// pairs once per classification, again after the axes are written) and push
+// the two apart.
+BOOST_AUTO_TEST_CASE(a_block_moved_into_a_resting_one_is_pushed_out) {
+  Params p;
+  p.solver = Solver::stable;
+  p.gravity = {0, 0.001};
+  World w = test::physics_world(p);
+  Game::init_walls(w);
+  Block::make(w, 300, 520, 40, 40, test::grey, 1.0);
+  const auto b = Block::make(w, 400, 520, 40, 40, test::grey, 1.0).id;
+  for (int f = 0; f < 60; ++f) Game::step(w);  // at rest: a kept classification, its list of overlaps empty
+  BOOST_TEST_REQUIRE(max_overlap(w) == 0.0);
+  w.components.position[b].x = 330.0;  // 10 px into the other
+  BOOST_TEST_REQUIRE(max_overlap(w) > 9.0);
+  for (int f = 0; f < 30; ++f) Game::step(w);
+  BOOST_TEST(max_overlap(w) < 0.05);
+}
+
 BOOST_AUTO_TEST_CASE(poisson_restitution_never_adds_energy_in_a_squeeze) {
   // A light block between two heavy ones closing in: simultaneous contacts,
   // unconverged iterations; the energy guard must hold.
