@@ -146,12 +146,18 @@ BOOST_AUTO_TEST_SUITE_END()
 
 BOOST_AUTO_TEST_SUITE(numerics_stable_solver)
 
-BOOST_AUTO_TEST_CASE(a_block_on_the_floor_rests_exactly_still) {
+// The stable solver under a light gravity, within the course's walls.
+World stable_walled_world() {
   Params p;
   p.solver = Solver::stable;
   p.gravity = {0, 0.001};
   World w = test::physics_world(p);
   Game::init_walls(w);
+  return w;
+}
+
+BOOST_AUTO_TEST_CASE(a_block_on_the_floor_rests_exactly_still) {
+  World w = stable_walled_world();
   const auto b = Block::make(w, 300, 520, 40, 40, test::grey, 5.0, 0.5).id;
   for (int f = 0; f < 600; ++f) Game::step(w);
   BOOST_TEST(w.components.position[b].y == 520.0);
@@ -165,11 +171,7 @@ BOOST_AUTO_TEST_CASE(a_block_on_the_floor_rests_exactly_still) {
 }
 
 BOOST_AUTO_TEST_CASE(a_heavy_block_on_a_light_one_rests_at_ratio_1e12) {
-  Params p;
-  p.solver = Solver::stable;
-  p.gravity = {0, 0.001};
-  World w = test::physics_world(p);
-  Game::init_walls(w);
+  World w = stable_walled_world();
   const auto light = Block::make(w, 390, 540, 20, 20, test::grey, 1.0).id;
   const auto heavy = Block::make(w, 380, 500, 40, 40, test::grey, 1e12).id;
   for (int f = 0; f < 600; ++f) {
@@ -186,11 +188,7 @@ BOOST_AUTO_TEST_CASE(a_heavy_block_on_a_light_one_rests_at_ratio_1e12) {
 // pairs once per classification, again after the axes are written) and push
 // the two apart.
 BOOST_AUTO_TEST_CASE(a_block_moved_into_a_resting_one_is_pushed_out) {
-  Params p;
-  p.solver = Solver::stable;
-  p.gravity = {0, 0.001};
-  World w = test::physics_world(p);
-  Game::init_walls(w);
+  World w = stable_walled_world();
   Block::make(w, 300, 520, 40, 40, test::grey, 1.0);
   const auto b = Block::make(w, 400, 520, 40, 40, test::grey, 1.0).id;
   for (int f = 0; f < 60; ++f) Game::step(w);  // at rest: a kept classification, its list of overlaps empty
