@@ -355,9 +355,11 @@ class ContactSolver {
   static bool friction_row(const SolverRow& r, double& lambda, FrictionHot& f, std::span<SolverBody> bodies);
   template <bool y>
   static bool friction_row_sse2(const SolverRow& r, double& lambda, FrictionHot& f, SolverBody& bc, SolverBody& bb);
+  // (Inlined into the sweep: the attribute on this declaration, where GCC
+  // reads it for a template's instances; on the definition it was dropped.)
   template <bool y>
-  static bool friction_two(std::span<const SolverRow, 2> r, double* lambda, std::span<FrictionHot, 2> f,
-                           std::span<SolverBody> bodies);
+  [[gnu::always_inline]] static bool friction_two(std::span<const SolverRow, 2> r, double* lambda,
+                                                  std::span<FrictionHot, 2> f, std::span<SolverBody> bodies);
   template <bool y>
   PHYSICS_AVX2 static bool friction_four(const SolverRow* r, double* lambda, FrictionHot* f, SolverBody* bodies);
   // Without friction, one velocity component and the inverse mass: the x
