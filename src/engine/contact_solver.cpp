@@ -343,7 +343,7 @@ void ContactSolver::classify(const Components& k, double h, double threshold, co
     same_kinds_ = true;
     return;
   }
-  overlapping_valid_ = false;
+  overlap_known_ = false;
   axes_.resize(n);
   kinds_.resize(n);
   normal_speeds_.resize(n);
@@ -1592,10 +1592,11 @@ void ContactSolver::solve_positions(Components& k, std::span<const EntityId> ent
 
 // Whether some pair of pairs_ overlaps by more than `slop`. A pair of the
 // list classified last whose bodies have kept their position and box since
-// (a resting pile's, nearly all) has the separation classify() found: those
-// below -slop are listed once per classification (overlapping_), so that a
-// resting pile's substeps read the pairs' moved flags, not their 32-byte
-// axes (a settled rain of 100 000: 8 % of its step).
+// (a resting pile's, nearly all) has the separation classify() found.
+// Whether any of those is below -slop is asked once per classification
+// (classified_overlap_): when none is, a resting pile's substeps read the
+// pairs' moved flags, not their 32-byte axes (a settled rain of 100 000: 8 %
+// of its step), and when no body moved, only the pairs found after it.
 bool ContactSolver::any_overlap(const Components& k, double slop) {
   const std::size_t n = k.size();
   if (!keeps_unchanged || !classified_ || classified_bodies_.size() != n)
@@ -1607,25 +1608,25 @@ bool ContactSolver::any_overlap(const Components& k, double slop) {
     return place_differs(bodies[e].position, bodies[e].box, position[e], boxes[e]) != 0;
   };
   const std::size_t known = classified_pairs_.size();  // pairs_ starts with them (turned_to_meet() appends)
-  if (!overlapping_valid_ || bits_differ(overlap_slop_, slop)) {
-    overlapping_.clear();
-    for (std::size_t i = 0; i < known; ++i)
-      if (axes_[i].separation < -slop) overlapping_.push_back(static_cast<std::uint32_t>(i));
-    overlapping_valid_ = true, overlap_slop_ = slop;
-  }
   Workers& w = workers_or_one(workers_);
-  // The classified pairs that moved and the later ones, tested; then the listed ones that did not move.
+  if (!overlap_known_ || bits_differ(overlap_slop_, slop)) {
+    classified_overlap_ = w.or_over_ranges(known, min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i)
+        if (axes_[i].separation < -slop) return std::uint8_t{1};
+      return std::uint8_t{0};
+    }) != 0;
+    overlap_known_ = true, overlap_slop_ = slop;
+  }
   const auto any = [&](auto moved_pair, bool none_moved) {
-    const std::size_t from = none_moved ? known : 0;
-    const bool tested = w.or_over_ranges(pairs_.size() - from, min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+    const std::size_t from = none_moved && !classified_overlap_ ? known : 0;
+    return w.or_over_ranges(pairs_.size() - from, min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
       for (std::size_t i = from + begin; i < from + end; ++i) {
         const Pair p = pairs_[i];
-        if ((i >= known || moved_pair(p)) && overlaps(k, p, slop)) return std::uint8_t{1};
+        if (i < known && !moved_pair(p) ? classified_overlap_ && axes_[i].separation < -slop : overlaps(k, p, slop))
+          return std::uint8_t{1};
       }
       return std::uint8_t{0};
     }) != 0;
-    return tested || std::any_of(overlapping_.begin(), overlapping_.end(),
-                                 [&](std::uint32_t i) { return none_moved || !moved_pair(pairs_[i]); });
   };
   // A pile has several pairs a body: each body is then looked at once
   // (moved_), not at each of its pairs (a falling rain's few pairs: at each).
@@ -1686,7 +1687,7 @@ void ContactSolver::physical_axes(const Components& k, const SolverSettings& s) 
 // the axis of their bodies' face contacts: only those bodies' pairs (marked
 // with bit 2 of faces_) are looked at for them, and only when there is such a pair.
 void ContactSolver::contact_axes(const Components& k, const SolverSettings& s) {
-  overlapping_valid_ = false;
+  overlap_known_ = false;
   axes_.resize(pairs_.size());
   Workers& w = workers_or_one(s.workers);
   const bool corners = w.or_over_ranges(pairs_.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {

@@ -244,11 +244,11 @@ class ContactSolver {
   std::vector<std::uint8_t> changed_;              // by entity id, for the bodies of pairs_: differs from classified_bodies_
   std::vector<std::uint32_t> visited_;             // by entity id: the call of changed_since_classified() that looked at it
   std::vector<std::uint8_t> moved_;                // by entity id (any_overlap()): place differs from classified_bodies_
-  // any_overlap()'s: the classified pairs whose separation (axes_) is below
-  // -overlap_slop_, until axes_ is written again (overlapping_valid_).
-  std::vector<std::uint32_t> overlapping_;
+  // any_overlap()'s: whether some classified pair's separation (axes_) is
+  // below -overlap_slop_ (classified_overlap_), known until axes_ is written
+  // again (overlap_known_).
+  bool classified_overlap_ = false, overlap_known_ = false;
   double overlap_slop_ = 0.0;
-  bool overlapping_valid_ = false;
   std::uint32_t visit_ = 0;
   std::vector<Pair> classified_pairs_;
   ClassifyInputs classified_for_{};
