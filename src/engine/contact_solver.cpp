@@ -1009,8 +1009,8 @@ void ContactSolver::iterate(const SolverSettings& s) {
 static_assert(sizeof(Vector) == 2 * sizeof(double) && offsetof(Vector, y) == sizeof(double),
               "friction_row_sse2 loads a velocity's x and y as one pair");
 template <bool y>
-[[gnu::always_inline]] inline bool ContactSolver::friction_row_sse2(const SolverRow& r, double& lambda_n, FrictionHot& f,
-                                                                    SolverBody& bc, SolverBody& bb) {
+inline bool ContactSolver::friction_row_sse2(const SolverRow& r, double& lambda_n, FrictionHot& f,
+                                             SolverBody& bc, SolverBody& bb) {
   constexpr int swap = y ? 1 : 2;  // _mm_shuffle_pd's: (high, low) for 1, (low, high) for 2
   const __m128d vc = _mm_loadu_pd(&bc.v.x), vb = _mm_loadu_pd(&bb.v.x);
   const __m128d rel = _mm_sub_pd(vc, vb);
@@ -1038,8 +1038,8 @@ template <bool y>
 // along t: the normal impulse, then the tangential one within the cone;
 // whether either accumulator changed.
 template <double Vector::*n, double Vector::*t>
-[[gnu::always_inline]] inline bool ContactSolver::friction_row(const SolverRow& r, double& lambda_n, FrictionHot& f,
-                                                               std::span<SolverBody> bodies) {
+inline bool ContactSolver::friction_row(const SolverRow& r, double& lambda_n, FrictionHot& f,
+                                        std::span<SolverBody> bodies) {
   SolverBody& bc = bodies[r.c];
   SolverBody& bb = bodies[r.b];
 #if defined(__SSE2__)
@@ -1190,8 +1190,8 @@ template <bool y>
 // the other component; std::clamp(v, lo, hi) is min(hi, max(lo, v)) lane by
 // lane, NaN and zeros' signs included). `y`: the normals along y.
 template <bool y>
-[[gnu::always_inline]] inline bool ContactSolver::friction_two(std::span<const SolverRow, 2> r, double* lambda_n,
-                                                               std::span<FrictionHot, 2> f, std::span<SolverBody> bodies) {
+inline bool ContactSolver::friction_two(std::span<const SolverRow, 2> r, double* lambda_n,
+                                        std::span<FrictionHot, 2> f, std::span<SolverBody> bodies) {
   SolverBody& c0 = bodies[r[0].c];
   SolverBody& c1 = bodies[r[1].c];
   SolverBody& b0 = bodies[r[0].b];
@@ -1269,8 +1269,8 @@ bool ContactSolver::sweep_axis(std::span<const SolverRow> rows, std::span<double
 // operations in the same order as one row, so the same bits: each lane
 // rounds as the scalar instruction does, and max(0, x) is (0 > x ? 0 : x),
 // std::max(x, 0.0)'s choice for a NaN and for -0 too.
-[[gnu::always_inline]] inline bool ContactSolver::sweep_two(const SolverRow& r0, const SolverRow& r1, double* lambdas,
-                                                            std::span<AxisBody> bodies) {
+inline bool ContactSolver::sweep_two(const SolverRow& r0, const SolverRow& r1, double* lambdas,
+                                     std::span<AxisBody> bodies) {
   AxisBody& c0 = bodies[r0.c];
   AxisBody& b0 = bodies[r0.b];
   AxisBody& c1 = bodies[r1.c];

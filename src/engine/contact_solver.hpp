@@ -351,12 +351,15 @@ class ContactSolver {
   bool sweep_friction();
   template <bool wide>
   bool sweep_friction_rows();
+  // The rows' functions are inlined into the sweeps: the attribute on these
+  // declarations, where GCC reads it for a template's instances (on the
+  // definition alone it was dropped, and friction_two was called per pair).
   template <double Vector::*n, double Vector::*t>
-  static bool friction_row(const SolverRow& r, double& lambda, FrictionHot& f, std::span<SolverBody> bodies);
+  [[gnu::always_inline]] static bool friction_row(const SolverRow& r, double& lambda, FrictionHot& f,
+                                                  std::span<SolverBody> bodies);
   template <bool y>
-  static bool friction_row_sse2(const SolverRow& r, double& lambda, FrictionHot& f, SolverBody& bc, SolverBody& bb);
-  // (Inlined into the sweep: the attribute on this declaration, where GCC
-  // reads it for a template's instances; on the definition it was dropped.)
+  [[gnu::always_inline]] static bool friction_row_sse2(const SolverRow& r, double& lambda, FrictionHot& f,
+                                                       SolverBody& bc, SolverBody& bb);
   template <bool y>
   [[gnu::always_inline]] static bool friction_two(std::span<const SolverRow, 2> r, double* lambda,
                                                   std::span<FrictionHot, 2> f, std::span<SolverBody> bodies);
@@ -370,7 +373,8 @@ class ContactSolver {
   };
   static bool sweep_axis(std::span<const SolverRow> rows, std::span<double> lambda, std::span<const std::uint8_t> paired,
                          std::span<AxisBody> bodies);
-  static bool sweep_two(const SolverRow& r0, const SolverRow& r1, double* lambda, std::span<AxisBody> bodies);
+  [[gnu::always_inline]] static bool sweep_two(const SolverRow& r0, const SolverRow& r1, double* lambda,
+                                               std::span<AxisBody> bodies);
   std::span<const std::uint32_t> row_order() const;
   std::uint64_t velocity_finds_ = ~std::uint64_t{0};  // the broad phase's finds() after solve_velocities
   std::vector<std::uint32_t> slot_of_;     // by entity id: slot, or none when not in a contact
