@@ -218,9 +218,13 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
   for (int round = 0;; ++round) {
     last_round_ = s.rounds > 0 && round == s.rounds;
     laps.time(Stage::prepare, [&] {
-      // Once per body, not per contact end (a division each).
-      inverse_mass_.resize(k.size());
-      for (const EntityId e : entities) inverse_mass_[e] = inverse_mass(k.mass[e]);
+      // Once per body and substep, not per contact end (a division each).
+      if (round == 0) {
+        inverse_mass_.resize(k.size());
+        workers_or_one(s.workers).for_ranges(entities.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+          for (const EntityId e : entities.subspan(begin, end - begin)) inverse_mass_[e] = inverse_mass(k.mass[e]);
+        });
+      }
       prepare(k, h, g, s);
     });
     // Later rounds start from velocities that hold this substep's impulses already.

@@ -35,12 +35,16 @@ bool any_non_finite(const double* d, std::size_t n) {
 }
 }  // namespace
 
-void Health::check_bodies(const Components& c, std::int64_t frame) {
+void Health::check_bodies(const Components& c, std::int64_t frame, Workers* workers) {
   if (non_finite) return;
   const std::size_t n = c.size();
   static_assert(sizeof(Vector) == 2 * sizeof(double));
   // (n > 0: an empty world's data() is null, and ->x through it undefined)
-  const bool bad = n > 0 && (any_non_finite(&c.position.data()->x, 2 * n) || any_non_finite(&c.velocity.data()->x, 2 * n));
+  const bool bad = n > 0 && workers_or_one(workers).or_over_ranges(n, min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+    const std::size_t count = 2 * (end - begin);
+    return static_cast<std::uint8_t>(any_non_finite(&c.position[begin].x, count) ||
+                                     any_non_finite(&c.velocity[begin].x, count));
+  }) != 0;
   for (std::size_t e = 0; bad && e < n; ++e) {
     const Vector p = c.position[e], v = c.velocity[e];
     if (all_finite(p) && all_finite(v)) continue;

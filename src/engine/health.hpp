@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "engine/components.hpp"
+#include "engine/workers.hpp"
 
 namespace physics {
 
@@ -68,7 +69,8 @@ struct Health {
 
   // The O(n) pass over the components after frame `frame`: the first
   // non-finite body (then nothing else is checked), and new escapes.
-  void check_bodies(const Components& c, std::int64_t frame);
+  // `workers`: the threads of the look for a non-finite value; none: one.
+  void check_bodies(const Components& c, std::int64_t frame, Workers* workers = nullptr);
   // Counts the bodies newly outside (check_bodies does every escape_period).
   void count_escapes(const Components& c, std::int64_t frame);
   // Never counted as escaped: a tile layer's body and its strips' proxies

@@ -11,19 +11,23 @@ namespace physics {
 // (course/systems/forces.cpp, move.cpp, collision.cpp); here only the code,
 // kept identical to theirs.
 
-void apply_forces(Components& c, std::span<const EntityId> bodies, double h, Vector gravity) {
-  for (const EntityId e : bodies) {
-    const double m = c.mass[e];
-    if (!std::isfinite(m)) continue;
-    const Vector f = c.sum_forces[e];
-    const Vector a = Vector{f.x / m, f.y / m} + gravity;
-    c.velocity[e] = c.velocity[e] + h * a;
-    c.sum_forces[e] = Vector::zero();
-  }
+void apply_forces(Components& c, std::span<const EntityId> bodies, double h, Vector gravity, Workers* workers) {
+  workers_or_one(workers).for_ranges(bodies.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+    for (const EntityId e : bodies.subspan(begin, end - begin)) {
+      const double m = c.mass[e];
+      if (!std::isfinite(m)) continue;
+      const Vector f = c.sum_forces[e];
+      const Vector a = Vector{f.x / m, f.y / m} + gravity;
+      c.velocity[e] = c.velocity[e] + h * a;
+      c.sum_forces[e] = Vector::zero();
+    }
+  });
 }
 
-void move_bodies(Components& c, std::span<const EntityId> bodies, double h) {
-  for (const EntityId e : bodies) c.position[e] = c.position[e] + h * c.velocity[e];
+void move_bodies(Components& c, std::span<const EntityId> bodies, double h, Workers* workers) {
+  workers_or_one(workers).for_ranges(bodies.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+    for (const EntityId e : bodies.subspan(begin, end - begin)) c.position[e] = c.position[e] + h * c.velocity[e];
+  });
 }
 
 namespace {

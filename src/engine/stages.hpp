@@ -17,15 +17,18 @@
 #include "engine/components.hpp"
 #include "engine/contact.hpp"
 #include "engine/pairs.hpp"
+#include "engine/workers.hpp"
 
 namespace physics {
 
 // Forces: for each finite mass m, v += h·(Σf/m + gravity), then Σf = 0; an
-// infinite mass is left as it is.
-void apply_forces(Components& c, std::span<const EntityId> bodies, double h, Vector gravity);
+// infinite mass is left as it is. `workers`: the threads of the loop over
+// the bodies (each body its own: the same bits for any number); none: one.
+void apply_forces(Components& c, std::span<const EntityId> bodies, double h, Vector gravity,
+                  Workers* workers = nullptr);
 
-// Move: x += h·v, infinite masses included (a moving platform).
-void move_bodies(Components& c, std::span<const EntityId> bodies, double h);
+// Move: x += h·v, infinite masses included (a moving platform). `workers`: as apply_forces'.
+void move_bodies(Components& c, std::span<const EntityId> bodies, double h, Workers* workers = nullptr);
 
 // The Collision pass's answer for the pair (c, b), Collision::resolve's:
 // nothing for two infinite masses or boxes that do not overlap (false);

@@ -7,8 +7,8 @@ namespace physics {
 void step(World& w) {
   Components& c = w.components;
   run_frame(
-      w, [&](double h) { apply_forces(c, w.bodies(SystemId::forces), h, w.params.gravity); },
-      [&](double h) { move_bodies(c, w.bodies(SystemId::move), h); },
+      w, [&](double h) { apply_forces(c, w.bodies(SystemId::forces), h, w.params.gravity, &w.workers); },
+      [&](double h) { move_bodies(c, w.bodies(SystemId::move), h, &w.workers); },
       [&] {
         // As Collision::update: the last pass's count, and its contacts if recorded.
         PassContacts& p = w.pass;

@@ -262,7 +262,7 @@ void World::after_move() {
 }
 
 void World::check_health() {
-  health.check_bodies(components, frame);
+  health.check_bodies(components, frame, &workers);
   if (!health.finite() || health.deep || frame % Health::overlap_period != 0) return;
   if (!declares(SystemId::collision) || params.solver != Solver::course) return;
   // The deepest overlap of the last look, if still deeper than 1 px, is a
