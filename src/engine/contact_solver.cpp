@@ -1582,8 +1582,10 @@ void ContactSolver::solve_positions(Components& k, std::span<const EntityId> ent
   bool none = false;
   laps.time(Stage::pairs, [&] {
     // (The browser's build, short of room, always finds them again: the same pairs overlap.)
-    none = keeps_unchanged && broadphase.finds() == velocity_finds_ && broadphase.holds(k, entities, s.workers) &&
-           !any_overlap(k, s.slop);
+    // (Overlaps first: when one is found, the pairs are found again whether
+    // the bodies held or not, and the look at every body is saved.)
+    none = keeps_unchanged && broadphase.finds() == velocity_finds_ && !any_overlap(k, s.slop) &&
+           broadphase.holds(k, entities, s.workers);
     if (none) return;
     broadphase.find(k, entities, 0.0, s.margin, pairs_, PairRule::solvable, s.workers);
     classified_ = false;  // (pairs_ is no longer the list classified)

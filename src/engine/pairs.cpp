@@ -42,15 +42,16 @@ bool within(const Bounds& inner, const Bounds& outer) {
   return outer.x0 <= inner.x0 && outer.y0 <= inner.y0 && inner.x1 <= outer.x1 && inner.y1 <= outer.y1;
 }
 
-// swept()'s box written to `to`; nonzero when it differs (bits) from the box
-// `to` held. With SSE2 each half, (x0, y0) and (x1, y1), is computed in one
+// swept()'s box written to `to`: bit 1 (`changed`) set when it differs
+// (bits) from the box `to` held, bit 2 (`left`) when it does not lie within
+// it. With SSE2 each half, (x0, y0) and (x1, y1), is computed in one
 // register's lanes by swept()'s operations in its order (min_pd(q, p) is
 // std::min(p, q), max_pd(q, p) std::max(p, q), NaN included) and stored
 // whole: the compiler built the box in 8-byte halves on the stack and copied
 // it in 16-byte loads, a failed store forwarding each (four fifths of
 // find()'s time on the resting friction pyramid, perf annotate).
-[[gnu::always_inline]] inline std::uint64_t renew_swept(const Components& k, EntityId e, double h, double reach,
-                                                        Bounds& to) {
+constexpr unsigned changed = 1, left = 2;
+[[gnu::always_inline]] inline unsigned renew_swept(const Components& k, EntityId e, double h, double reach, Bounds& to) {
 #if defined(__SSE2__)
   static_assert(sizeof(Bounds) == 4 * sizeof(double) && offsetof(Vector, y) == sizeof(double) &&
                 offsetof(Rect, height) == offsetof(Rect, width) + sizeof(int));
@@ -60,17 +61,17 @@ bool within(const Bounds& inner, const Bounds& outer) {
   const __m128d size = _mm_cvtepi32_pd(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(&k.box[e].width)));  // exact
   const __m128d lo = _mm_sub_pd(_mm_min_pd(q, p), r);
   const __m128d hi = _mm_add_pd(_mm_add_pd(_mm_max_pd(q, p), size), r);
-  const __m128i was_lo = _mm_loadu_si128(reinterpret_cast<const __m128i*>(&to.x0));
-  const __m128i was_hi = _mm_loadu_si128(reinterpret_cast<const __m128i*>(&to.x1));
+  const __m128d was_lo = _mm_loadu_pd(&to.x0), was_hi = _mm_loadu_pd(&to.x1);
   _mm_storeu_pd(&to.x0, lo), _mm_storeu_pd(&to.x1, hi);
-  const __m128i same =
-      _mm_and_si128(_mm_cmpeq_epi32(was_lo, _mm_castpd_si128(lo)), _mm_cmpeq_epi32(was_hi, _mm_castpd_si128(hi)));
-  return static_cast<std::uint64_t>(_mm_movemask_epi8(same) ^ 0xFFFF);
+  const __m128i same = _mm_and_si128(_mm_cmpeq_epi32(_mm_castpd_si128(was_lo), _mm_castpd_si128(lo)),
+                                     _mm_cmpeq_epi32(_mm_castpd_si128(was_hi), _mm_castpd_si128(hi)));
+  const __m128d inside = _mm_and_pd(_mm_cmple_pd(was_lo, lo), _mm_cmple_pd(hi, was_hi));  // within(), NaN fails
+  return (_mm_movemask_epi8(same) == 0xFFFF ? 0 : changed) | (_mm_movemask_pd(inside) == 3 ? 0 : left);
 #else
   const Bounds s = swept(k, e, h, reach);
-  const std::uint64_t differ = bounds_differ(s, to);
+  const unsigned flags = (bounds_differ(s, to) ? changed : 0) | (within(s, to) ? 0 : left);
   to = s;
-  return differ;
+  return flags;
 #endif
 }
 }  // namespace
@@ -242,38 +243,70 @@ void BroadPhase::find(const Components& k, std::span<const EntityId> entities, d
   ++finds_;
   current_.resize(n);
   const bool same = fat_built_ && n == entities_.size() && std::equal(entities.begin(), entities.end(), entities_.begin());
-  // The last call's pairs are this one's when it has the same bodies and
-  // finds each one's swept box as it was (current_ holds the last call's):
-  // the grid is then kept, its candidates are the same, and the pairs are
-  // those of the candidates' boxes that touch (h and reach only set the boxes).
-  const bool again = keeps_unchanged && found_valid_ && same && !k.any_rules();
-  const std::uint8_t flags = w.or_over_ranges(n, min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
-    bool inside = same;  // (same implies fat_ holds the same n bodies)
-    // Body i's swept box s lies in its fat box, its mass as finite as it was
-    // (a NaN fails the test: a rebuild, which handles it).
+  // The last call's pairs (last_found_) are this one's when it has the same
+  // bodies and finds each one's swept box as it was (current_ holds the last
+  // call's): the grid is then kept, its candidates are the same, and the
+  // pairs are those of the candidates' boxes that touch (h and reach only
+  // set the boxes). When a few bodies' boxes left their last ones (unheld_),
+  // the pairs are near the last call's: pairs_near_last().
+  const bool known = keeps_unchanged && found_valid_ && same && !k.any_rules();
+  unheld_.resize(static_cast<std::size_t>(w.threads()));
+  const std::uint8_t flags = w.or_over_ranges(n, min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
+    bool inside = same;  // (same implies boxes_ holds the same n bodies' fat boxes)
+    // Body i's swept box s lies in its box in the grid (its fat box rounded
+    // outwards to float: half the bytes to read, and the grid finds every pair
+    // of boxes within it), its mass as finite as it was (a NaN fails the
+    // test: a rebuild, which handles it).
     const auto stays = [&](std::size_t i, const Bounds& s) {
-      return within(s, fat_[i]) && fixed_[i] == !std::isfinite(k.mass[entities[i]]);
+      const FloatBox& b = boxes_[i];
+      return b.min_x <= s.x0 && b.min_y <= s.y0 && s.x1 <= b.max_x && s.y1 <= b.max_y &&
+             fixed_[i] == !std::isfinite(k.mass[entities[i]]);
     };
-    // Compared up to the first change only (a falling rain's first body).
-    std::uint64_t moved = 0;
+    // The bodies whose box left its last one, while they are few.
+    std::vector<std::uint32_t>& unheld = unheld_[static_cast<std::size_t>(t)];
+    unheld.clear();
+    const std::size_t few = (end - begin) / unheld_share;
+    bool counting = known;
+    // Whether any box changed, and which left their last box, while few did.
+    bool moved = false;
     std::size_t i = begin;
-    for (; again && !moved && i < end; ++i) {
-      moved = renew_swept(k, entities[i], h, reach, current_[i]);
-      inside = inside && stays(i, current_[i]);
+    for (; counting && i < end; ++i) {
+      const unsigned f = renew_swept(k, entities[i], h, reach, current_[i]);
+      moved = moved || f != 0;
+      if (f & left) {
+        counting = unheld.size() < few;
+        if (counting) unheld.push_back(static_cast<std::uint32_t>(i));
+      }
+      if (inside) inside = stays(i, current_[i]);
     }
+    if (i < end) moved = true;  // (not known, or a body left its last box: its box changed)
     for (; i < end; ++i) {
       renew_swept(k, entities[i], h, reach, current_[i]);
       if (inside) inside = stays(i, current_[i]);
     }
-    // Bit 1: a body of the range left its box (or a different list); bit 2: a swept box changed.
-    return static_cast<std::uint8_t>((inside ? 0 : 1) | (moved != 0 ? 2 : 0));
+    // Bit 1: a body of the range left its box (or a different list); bit 2:
+    // a swept box changed; bit 4: too many left their last box to count.
+    return static_cast<std::uint8_t>((inside ? 0 : 1) | (moved ? 2 : 0) | (counting ? 0 : 4));
   });
   if (flags & 1) fat_rebuild(k, entities, h, w);
-  if (again && flags == 0) {
+  if (known && flags == 0) {
     out.assign(last_found_.begin(), last_found_.end());
     return;
   }
-  // The candidates that touch, each range's in order, then joined in range order.
+  if (known && flags == 2) {
+    pairs_near_last(out);
+  } else {
+    pairs_of_candidates(entities, out, w);
+    if (k.any_rules()) std::erase_if(out, [&](Pair p) { return !keeps(rule, k, p.c, p.b, h); });
+  }
+  // Kept for the next call (a copy: the callers change theirs).
+  found_valid_ = keeps_unchanged && !k.any_rules();
+  if (found_valid_) last_found_.assign(out.begin(), out.end());
+}
+
+// The grid's candidates whose boxes touch, each range's in order, then
+// joined in range order.
+void BroadPhase::pairs_of_candidates(std::span<const EntityId> entities, std::vector<Pair>& out, Workers& w) {
   const std::vector<PairKey>& candidates = grid_.pairs();
   out.clear();
   out.reserve(candidates.size());
@@ -290,12 +323,46 @@ void BroadPhase::find(const Components& k, std::span<const EntityId> entities, d
     const std::vector<Pair>& part = range_pairs_[static_cast<std::size_t>(t)];
     out.insert(out.end(), part.begin(), part.end());
   }
-  if (k.any_rules()) std::erase_if(out, [&](Pair p) { return !keeps(rule, k, p.c, p.b, h); });
-  // Kept for the next call, but not right after a call that found a box
-  // changed: bodies in motion (a falling rain) change them at every call,
-  // and the copy would then cost every call (every other one here).
-  found_valid_ = keeps_unchanged && !k.any_rules() && !again;
-  if (found_valid_) last_found_.assign(out.begin(), out.end());
+}
+
+// The pairs when every body's box lies in its fat box and in the box the
+// last call found for it, but for the few of unheld_: a pair of two held
+// bodies that touches now touched then, so it is among the last call's
+// pairs; the unheld bodies' pairs are looked up in the grid, whose boxes
+// hold every body's box now. The same pairs in the same order as the
+// candidates' test (the tests check it against brute force), without
+// testing every candidate: the second and third finds of a falling rain's
+// step (the solver's turned velocities, the position stage), whose bodies
+// mostly move within their last boxes.
+void BroadPhase::pairs_near_last(std::vector<Pair>& out) {
+  out.clear();
+  for (const Pair p : last_found_)
+    if (touch(current_[index_of_[p.c]], current_[index_of_[p.b]])) out.push_back(p);
+  late_.clear();
+  for (const std::vector<std::uint32_t>& part : unheld_) {
+    for (const std::uint32_t i : part) {
+      const Bounds& a = current_[i];
+      const FloatBox box = FloatBox::outward(a.x0, a.y0, a.x1, a.y1);
+      if (!box.valid()) continue;  // (a NaN bound touches nothing)
+      grid_.query(box, [&](std::uint32_t j) {
+        if (j != i && !(fixed_[i] && fixed_[j]) && touch(a, current_[j])) late_.push_back(pair_key(i, j));
+      });
+    }
+  }
+  if (late_.empty()) return;
+  std::sort(late_.begin(), late_.end());
+  late_.erase(std::unique(late_.begin(), late_.end()), late_.end());
+  // Merged by key: the pairs found late may be among the kept ones.
+  merged_.clear();
+  std::size_t a = 0;
+  const auto key_of = [&](Pair p) { return pair_key(index_of_[p.c], index_of_[p.b]); };
+  for (const PairKey key : late_) {
+    while (a < out.size() && key_of(out[a]) < key) merged_.push_back(out[a++]);
+    if (a < out.size() && key_of(out[a]) == key) ++a;
+    merged_.push_back({entities_[pair_first(key)], entities_[pair_second(key)]});
+  }
+  merged_.insert(merged_.end(), out.begin() + static_cast<std::ptrdiff_t>(a), out.end());
+  out.swap(merged_);
 }
 
 bool BroadPhase::holds(const Components& k, std::span<const EntityId> entities, Workers* workers) const {
@@ -337,7 +404,6 @@ void BroadPhase::find_selected(const Components& k, std::span<const EntityId> en
 
 void BroadPhase::fat_rebuild(const Components& k, std::span<const EntityId> entities, double h, Workers& w) {
   const std::size_t n = entities.size();
-  fat_.resize(n);
   boxes_.resize(n);
   fixed_.resize(n);
   w.for_ranges(n, min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
@@ -347,16 +413,17 @@ void BroadPhase::fat_rebuild(const Components& k, std::span<const EntityId> enti
       // its box for a few calls instead of leaving it at every one, and the
       // box does not grow behind it (where it only adds candidate pairs).
       const Vector d = (fat_steps * h) * k.velocity[entities[i]];
-      fat_[i] = {c.x0 - fat_margin + std::min(d.x, 0.0), c.y0 - fat_margin + std::min(d.y, 0.0),
-                 c.x1 + fat_margin + std::max(d.x, 0.0), c.y1 + fat_margin + std::max(d.y, 0.0)};
       // Rounded outwards to float: the grid's boxes contain the exact ones, so
       // it finds a superset of the pairs, which the exact test trims.
-      boxes_[i] = FloatBox::outward(fat_[i].x0, fat_[i].y0, fat_[i].x1, fat_[i].y1);
+      boxes_[i] = FloatBox::outward(c.x0 - fat_margin + std::min(d.x, 0.0), c.y0 - fat_margin + std::min(d.y, 0.0),
+                                    c.x1 + fat_margin + std::max(d.x, 0.0), c.y1 + fat_margin + std::max(d.y, 0.0));
       fixed_[i] = !std::isfinite(k.mass[entities[i]]);
     }
   });
   grid_.build(boxes_, fixed_);
   entities_.assign(entities.begin(), entities.end());
+  index_of_.resize(k.size());
+  for (std::size_t i = 0; i < n; ++i) index_of_[entities[i]] = static_cast<std::uint32_t>(i);
   fat_built_ = true;
 }
 

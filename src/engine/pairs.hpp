@@ -137,9 +137,15 @@ class BroadPhase {
   bool row_refresh(const Components& k, std::uint32_t i);
   // find().
   void fat_rebuild(const Components& k, std::span<const EntityId> entities, double h, Workers& w);
+  void pairs_of_candidates(std::span<const EntityId> entities, std::vector<Pair>& out, Workers& w);
+  void pairs_near_last(std::vector<Pair>& out);
+  // Past one body in this many of a range whose box left its last one, the
+  // candidates are tested instead (a grid query costs tens of candidate tests).
+  static constexpr std::size_t unheld_share = 32;
 
   UniformGrid grid_;
   std::vector<EntityId> entities_;   // the bodies of find()'s fat grid, in registration order
+  std::vector<std::uint32_t> index_of_;  // by entity id: its rank in entities_
   std::vector<std::uint8_t> fixed_;  // infinite mass, by registration rank
   std::vector<FloatBox> boxes_;          // the grid's boxes, by registration rank
   bool fat_built_ = false;           // the grid holds find()'s fat boxes
@@ -165,13 +171,16 @@ class BroadPhase {
   std::vector<Bounds> current_;  // this call's exact boxes
   std::uint64_t finds_ = 0;      // calls of find()
   std::vector<Bounds> scan_;     // find_selected()'s swept boxes
-  std::vector<Bounds> fat_;      // the boxes the grid was built on
   std::vector<std::vector<Pair>> range_pairs_;  // find() with threads: each range's pairs, joined in order
   // The last call's pairs: a resting pile's bodies sweep the same boxes
   // call after call, and testing the grid's candidates again would list the
-  // same pairs (the pyramids: 7 % of a step).
+  // same pairs (the pyramids: 7 % of a step); bodies that move within their
+  // last boxes keep a subset of them (pairs_near_last()).
   std::vector<Pair> last_found_;
   bool found_valid_ = false;  // (never with contact rules: they read more than the boxes)
+  std::vector<std::vector<std::uint32_t>> unheld_;  // by thread: its range's bodies whose box left its last one
+  std::vector<PairKey> late_;                        // pairs_near_last(): the unheld bodies' pairs
+  std::vector<Pair> merged_;                         // pairs_near_last(): scratch
 };
 
 // The course pass's pairs as a range: `for (const Pair p : pairs)`. Moving on
