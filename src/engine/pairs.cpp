@@ -37,24 +37,28 @@ bool touch(const Bounds& a, const Bounds& b) { return a.x0 <= b.x1 && b.x0 <= a.
   return bits_differ(a.x0, b.x0) | bits_differ(a.y0, b.y0) | bits_differ(a.x1, b.x1) | bits_differ(a.y1, b.y1);
 }
 
-// Whether `inner` lies within `outer` (closed; a NaN bound fails it).
-bool within(const Bounds& inner, const Bounds& outer) {
+// Whether `inner` lies within `outer` (closed; a NaN bound fails it; the
+// SSE2 versions below test it two coordinates at once).
+[[maybe_unused]] bool within(const Bounds& inner, const Bounds& outer) {
   return outer.x0 <= inner.x0 && outer.y0 <= inner.y0 && inner.x1 <= outer.x1 && inner.y1 <= outer.y1;
 }
 
 // swept()'s box written to `to`: bit 1 (`changed`) set when it differs
-// (bits) from the box `to` held, bit 2 (`left`) when it does not lie within
-// it. With SSE2 each half, (x0, y0) and (x1, y1), is computed in one
-// register's lanes by swept()'s operations in its order (min_pd(q, p) is
-// std::min(p, q), max_pd(q, p) std::max(p, q), NaN included) and stored
-// whole: the compiler built the box in 8-byte halves on the stack and copied
-// it in 16-byte loads, a failed store forwarding each (four fifths of
-// find()'s time on the resting friction pyramid, perf annotate).
-constexpr unsigned changed = 1, left = 2;
-[[gnu::always_inline]] inline unsigned renew_swept(const Components& k, EntityId e, double h, double reach, Bounds& to) {
+// (bits) from the box `to` held; if so, bit 2 (`left`) when it does not lie
+// within that box, and bit 4 (`escaped`) when it does not lie within `grid`
+// (which held the box `to` held). With SSE2 each half, (x0, y0) and (x1,
+// y1), is computed in one register's lanes by swept()'s operations in its
+// order (min_pd(q, p) is std::min(p, q), max_pd(q, p) std::max(p, q), NaN
+// included) and stored whole: the compiler built the box in 8-byte halves on
+// the stack and copied it in 16-byte loads, a failed store forwarding each
+// (four fifths of find()'s time on the resting friction pyramid, perf
+// annotate). A NaN bound fails both tests.
+constexpr unsigned changed = 1, left = 2, escaped = 4;
+[[gnu::always_inline]] inline unsigned renew_swept(const Components& k, EntityId e, double h, double reach, Bounds& to,
+                                                   const FloatBox& grid) {
 #if defined(__SSE2__)
   static_assert(sizeof(Bounds) == 4 * sizeof(double) && offsetof(Vector, y) == sizeof(double) &&
-                offsetof(Rect, height) == offsetof(Rect, width) + sizeof(int));
+                offsetof(Rect, height) == offsetof(Rect, width) + sizeof(int) && sizeof(FloatBox) == 4 * sizeof(float));
   const __m128d p = _mm_loadu_pd(&k.position[e].x);
   const __m128d q = _mm_add_pd(p, _mm_mul_pd(_mm_set1_pd(h), _mm_loadu_pd(&k.velocity[e].x)));
   const __m128d r = _mm_set1_pd(reach);
@@ -65,13 +69,34 @@ constexpr unsigned changed = 1, left = 2;
   _mm_storeu_pd(&to.x0, lo), _mm_storeu_pd(&to.x1, hi);
   const __m128i same = _mm_and_si128(_mm_cmpeq_epi32(_mm_castpd_si128(was_lo), _mm_castpd_si128(lo)),
                                      _mm_cmpeq_epi32(_mm_castpd_si128(was_hi), _mm_castpd_si128(hi)));
-  const __m128d inside = _mm_and_pd(_mm_cmple_pd(was_lo, lo), _mm_cmple_pd(hi, was_hi));  // within(), NaN fails
-  return (_mm_movemask_epi8(same) == 0xFFFF ? 0 : changed) | (_mm_movemask_pd(inside) == 3 ? 0 : left);
+  if (_mm_movemask_epi8(same) == 0xFFFF) return 0;  // (a resting pile's bodies: asked no more)
+  const __m128d inside = _mm_and_pd(_mm_cmple_pd(was_lo, lo), _mm_cmple_pd(hi, was_hi));
+  const __m128 g = _mm_loadu_ps(&grid.min_x);  // floats to doubles: exact
+  const __m128d in_grid =
+      _mm_and_pd(_mm_cmple_pd(_mm_cvtps_pd(g), lo), _mm_cmple_pd(hi, _mm_cvtps_pd(_mm_movehl_ps(g, g))));
+  return changed | (_mm_movemask_pd(inside) == 3 ? 0 : left) | (_mm_movemask_pd(in_grid) == 3 ? 0 : escaped);
 #else
   const Bounds s = swept(k, e, h, reach);
-  const unsigned flags = (bounds_differ(s, to) ? changed : 0) | (within(s, to) ? 0 : left);
+  const bool in_grid = grid.min_x <= s.x0 && grid.min_y <= s.y0 && s.x1 <= grid.max_x && s.y1 <= grid.max_y;
+  const unsigned flags =
+      bounds_differ(s, to) ? changed | (within(s, to) ? 0 : left) | (in_grid ? 0 : escaped) : 0;
   to = s;
   return flags;
+#endif
+}
+
+// Whether body e's box where it is now lies within `b`: within(swept(k, e,
+// 0, 0), b), with SSE2 each corner's two coordinates at once (a resting
+// pile's every substep asks it of every body).
+[[gnu::always_inline]] inline bool lies_within(const Components& k, EntityId e, const Bounds& b) {
+#if defined(__SSE2__)
+  const __m128d lo = _mm_loadu_pd(&k.position[e].x);
+  const __m128d size = _mm_cvtepi32_pd(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(&k.box[e].width)));  // exact
+  const __m128d in = _mm_and_pd(_mm_cmple_pd(_mm_loadu_pd(&b.x0), lo),
+                                _mm_cmple_pd(_mm_add_pd(lo, size), _mm_loadu_pd(&b.x1)));
+  return _mm_movemask_pd(in) == 3;
+#else
+  return within(swept(k, e, 0.0, 0.0), b);
 #endif
 }
 }  // namespace
@@ -252,37 +277,37 @@ void BroadPhase::find(const Components& k, std::span<const EntityId> entities, d
   const bool known = keeps_unchanged && found_valid_ && same && !k.any_rules();
   unheld_.resize(static_cast<std::size_t>(w.threads()));
   const std::uint8_t flags = w.or_over_ranges(n, min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
-    bool inside = same;  // (same implies boxes_ holds the same n bodies' fat boxes)
-    // Body i's swept box s lies in its box in the grid (its fat box rounded
-    // outwards to float: half the bytes to read, and the grid finds every pair
-    // of boxes within it), its mass as finite as it was (a NaN fails the
-    // test: a rebuild, which handles it).
-    const auto stays = [&](std::size_t i, const Bounds& s) {
-      const FloatBox& b = boxes_[i];
-      return b.min_x <= s.x0 && b.min_y <= s.y0 && s.x1 <= b.max_x && s.y1 <= b.max_y &&
-             fixed_[i] == !std::isfinite(k.mass[entities[i]]);
+    if (!same) {  // a new list: a rebuild
+      for (std::size_t i = begin; i < end; ++i) current_[i] = swept(k, entities[i], h, reach);
+      return std::uint8_t{1 | 2 | 4};
+    }
+    // Whether every body's box stays in its box in the grid (the grid then
+    // finds every pair of boxes) with its mass as finite as it was (a NaN
+    // fails: a rebuild, which handles it); whether any box changed; which
+    // left their last box, while few did.
+    bool inside = true;
+    const auto stays = [&](std::size_t i, unsigned f) {
+      return !(f & escaped) && fixed_[i] == !std::isfinite(k.mass[entities[i]]);
     };
-    // The bodies whose box left its last one, while they are few.
     std::vector<std::uint32_t>& unheld = unheld_[static_cast<std::size_t>(t)];
     unheld.clear();
     const std::size_t few = (end - begin) / unheld_share;
     bool counting = known;
-    // Whether any box changed, and which left their last box, while few did.
     bool moved = false;
     std::size_t i = begin;
     for (; counting && i < end; ++i) {
-      const unsigned f = renew_swept(k, entities[i], h, reach, current_[i]);
-      moved = moved || f != 0;
-      if (f & left) {
+      const unsigned f = renew_swept(k, entities[i], h, reach, current_[i], boxes_[i]);
+      moved = moved || f;
+      if (f & left) [[unlikely]] {
         counting = unheld.size() < few;
         if (counting) unheld.push_back(static_cast<std::uint32_t>(i));
       }
-      if (inside) inside = stays(i, current_[i]);
+      if (inside) inside = stays(i, f);
     }
     if (i < end) moved = true;  // (not known, or a body left its last box: its box changed)
     for (; i < end; ++i) {
-      renew_swept(k, entities[i], h, reach, current_[i]);
-      if (inside) inside = stays(i, current_[i]);
+      const unsigned f = renew_swept(k, entities[i], h, reach, current_[i], boxes_[i]);
+      if (inside) inside = stays(i, f);
     }
     // Bit 1: a body of the range left its box (or a different list); bit 2:
     // a swept box changed; bit 4: too many left their last box to count.
@@ -370,7 +395,7 @@ bool BroadPhase::holds(const Components& k, std::span<const EntityId> entities, 
     return false;
   const auto left = [&](int, std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i)
-      if (!within(swept(k, entities[i], 0.0, 0.0), current_[i])) return std::uint8_t{1};
+      if (!lies_within(k, entities[i], current_[i])) return std::uint8_t{1};
     return std::uint8_t{0};
   };
   return workers_or_one(workers).or_over_ranges(entities.size(), min_parallel_items, left) == 0;
