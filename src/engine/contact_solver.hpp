@@ -413,6 +413,8 @@ class ContactSolver {
   bool have_position_order_ = false;
   std::vector<FrictionRow> friction_;          // empty, or one per contact
   std::vector<ShockPass> support_order_;       // bottom-up passes over this substep's contacts
+  std::vector<std::uint32_t> support_ids_;     // by entity id: none (shock_passes()' scratch)
+  std::vector<EntityId> support_met_;          // shock_passes()' scratch
   bool have_order_ = false;
   std::vector<double> targets_;                // by contact: its target in this relaxation (load_rows(), for the bottom-up pass)
   std::vector<double> inverse_mass_;           // by entity id, this substep's (solve_velocities)

@@ -2,8 +2,9 @@
 
 namespace physics {
 
-void SlideIntegrator::start(const Components& k) {
-  v_start_ = k.velocity;
+void SlideIntegrator::start(const Components& k, bool needed) {
+  if (needed) v_start_ = k.velocity;
+  else v_start_.clear();
   sliders_.clear();
 }
 

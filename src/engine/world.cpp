@@ -2,6 +2,7 @@
 
 #include "engine/contact.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -147,7 +148,13 @@ SolverSettings solver_settings(const Params& p, Workers& workers) {
 
 void World::before_forces() {
   if (exact_motion() && declares(SystemId::move)) exact_.start(components, bodies(SystemId::move));
-  if (slides()) slide_.start(components);
+  // The velocities before Forces are read by the slide's shift (bodies with
+  // friction) and, with CCD, by the solver (ContactSolver::turned_by_forces).
+  if (slides()) {
+    const std::vector<double>& mu = components.friction;
+    const bool ccd = params.ccd || params.solver == Solver::automatic;
+    slide_.start(components, ccd || std::any_of(mu.begin(), mu.end(), [](double f) { return f != 0.0; }));
+  }
 }
 
 void World::before_move(double h) {
