@@ -1547,18 +1547,26 @@ void ContactSolver::island_energies(const Components& k) {
   const auto find = [&](EntityId x) { return islands_.find(x); };
   for (const ContactConstraint& ct : contacts_)
     if (ct.wc > 0.0 && ct.wb > 0.0) islands_.join(ct.c, ct.b);
-  // Found by marking: no sort.
+  // The finite bodies of the contacts, by id: marked, then listed by a look
+  // at every mark, or, when they are few against the world (a rain's lowest
+  // rows landing), sorted. seen_ and root_index_ are left as they were found
+  // (0, none), so no pass over the world sets them.
   bodies_.clear();
-  seen_.assign(n, 0);
-  for (const ContactConstraint& ct : contacts_) {
-    if (ct.wc > 0.0) seen_[ct.c] = 1;
-    if (ct.wb > 0.0) seen_[ct.b] = 1;
+  seen_.resize(n, 0);
+  for (const ContactConstraint& ct : contacts_)
+    for (const auto& [e, w] : {std::pair{ct.c, ct.wc}, std::pair{ct.b, ct.wb}})
+      if (w > 0.0 && !seen_[e]) seen_[e] = 1, bodies_.push_back(e);
+  if (bodies_.size() * 16 < n) {
+    std::sort(bodies_.begin(), bodies_.end());
+  } else {
+    bodies_.clear();
+    for (EntityId e = 0; e < n; ++e)
+      if (seen_[e]) bodies_.push_back(e);
   }
-  for (EntityId e = 0; e < n; ++e)
-    if (seen_[e]) bodies_.push_back(e);
+  for (const EntityId e : bodies_) seen_[e] = 0;
   // One IslandEnergy per island, numbered as their roots are first met.
   island_.resize(n);
-  root_index_.assign(n, none);
+  root_index_.resize(n, none);
   sums_.clear();
   for (const EntityId e : bodies_) {
     const EntityId r = find(e);
@@ -1587,6 +1595,7 @@ void ContactSolver::island_energies(const Components& k) {
     su.b_back += m * Vector::dot(v0, back);
     su.a_back += 0.5 * m * Vector::dot(back, back);
   }
+  for (const EntityId e : bodies_) root_index_[e] = none;  // (every root is among them)
 }
 
 void ContactSolver::solve_positions(Components& k, std::span<const EntityId> entities, Vector g,

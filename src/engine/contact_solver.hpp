@@ -438,8 +438,8 @@ class ContactSolver {
   std::vector<EntityId> bodies_;               // finite bodies of the contacts, by id
   UnionFind islands_;                          // the energy guard's islands
   std::vector<std::uint32_t> island_;
-  std::vector<std::uint8_t> seen_;             // guard_energy: bodies of the contacts
-  std::vector<std::uint32_t> root_index_;      // guard_energy: island of each root
+  std::vector<std::uint8_t> seen_;             // guard_energy: bodies of the contacts (0 between calls)
+  std::vector<std::uint32_t> root_index_;      // guard_energy: island of each root (none between calls)
   std::vector<double> toi_;                    // earliest impact time per body, by entity id (infinity between calls)
   // The impulses of the last substep's contacts (store()), by contact; the
   // normal one 0 for a contact that does not warm start the next substep.

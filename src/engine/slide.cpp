@@ -1,5 +1,7 @@
 #include "engine/slide.hpp"
 
+#include <algorithm>
+
 namespace physics {
 
 void SlideIntegrator::start(const Components& k, bool needed) {
@@ -11,7 +13,11 @@ void SlideIntegrator::start(const Components& k, bool needed) {
 void SlideIntegrator::after_solver(const Components& k, std::span<const ContactConstraint> contacts,
                                    std::span<const FrictionRow> rows) {
   sliders_.clear();
-  if (rows.empty()) return;  // no contact had friction
+  // No contact had friction (a frictionless contact keeps no tangential
+  // impulse, so it makes no slider): then no look at every body. The
+  // rounds' rows (ContactSolver::keep_round) are there, zero, for every
+  // contact of a frictionless rain solved again.
+  if (std::none_of(rows.begin(), rows.end(), [](const FrictionRow& r) { return r.mu > 0.0; })) return;
   touched_.assign(k.size(), 0);
   v_end_.resize(k.size());
   // (A contact's inverse masses say which end is fixed: inverse_mass() is 0
