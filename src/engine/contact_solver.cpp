@@ -570,7 +570,8 @@ bool ContactSolver::turned_to_meet(const Components& k, std::span<const EntityId
   };
   bool any = std::any_of(apart_.begin(), apart_.end(), [&](std::uint32_t i) { return closes(pairs_[i]); });
   if (!swept_further(k, h, s.margin)) return any;
-  broadphase.find(k, entities, h, s.margin, later_, PairRule::solvable, s.workers);
+  // Only the solver's bodies changed since the last find (this substep's).
+  broadphase.find_again(k, entities, slot_body_, h, s.margin, later_, PairRule::solvable, s.workers);
   const std::size_t added = pairs_.size();
   add_unknown_pairs();
   return any || std::any_of(pairs_.begin() + static_cast<std::ptrdiff_t>(added), pairs_.end(), closes);

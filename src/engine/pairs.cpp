@@ -267,7 +267,7 @@ void BroadPhase::find(const Components& k, std::span<const EntityId> entities, d
   const std::size_t n = entities.size();
   ++finds_;
   current_.resize(n);
-  const bool same = fat_built_ && n == entities_.size() && std::equal(entities.begin(), entities.end(), entities_.begin());
+  const bool same = same_bodies(entities);
   // The last call's pairs (last_found_) are this one's when it has the same
   // bodies and finds each one's swept box as it was (current_ holds the last
   // call's): the grid is then kept, its candidates are the same, and the
@@ -281,38 +281,76 @@ void BroadPhase::find(const Components& k, std::span<const EntityId> entities, d
       for (std::size_t i = begin; i < end; ++i) current_[i] = swept(k, entities[i], h, reach);
       return std::uint8_t{1 | 2 | 4};
     }
-    // Whether every body's box stays in its box in the grid (the grid then
-    // finds every pair of boxes) with its mass as finite as it was (a NaN
-    // fails: a rebuild, which handles it); whether any box changed; which
-    // left their last box, while few did.
-    bool inside = true;
-    const auto stays = [&](std::size_t i, unsigned f) {
-      return !(f & escaped) && fixed_[i] == !std::isfinite(k.mass[entities[i]]);
-    };
-    std::vector<std::uint32_t>& unheld = unheld_[static_cast<std::size_t>(t)];
-    unheld.clear();
-    const std::size_t few = (end - begin) / unheld_share;
-    bool counting = known;
-    bool moved = false;
-    std::size_t i = begin;
-    for (; counting && i < end; ++i) {
-      const unsigned f = renew_swept(k, entities[i], h, reach, current_[i], boxes_[i]);
-      moved = moved || f;
-      if (f & left) [[unlikely]] {
-        counting = unheld.size() < few;
-        if (counting) unheld.push_back(static_cast<std::uint32_t>(i));
-      }
-      if (inside) inside = stays(i, f);
-    }
-    if (i < end) moved = true;  // (not known, or a body left its last box: its box changed)
-    for (; i < end; ++i) {
-      const unsigned f = renew_swept(k, entities[i], h, reach, current_[i], boxes_[i]);
-      if (inside) inside = stays(i, f);
-    }
-    // Bit 1: a body of the range left its box (or a different list); bit 2:
-    // a swept box changed; bit 4: too many left their last box to count.
-    return static_cast<std::uint8_t>((inside ? 0 : 1) | (moved ? 2 : 0) | (counting ? 0 : 4));
+    const auto index = [&](std::size_t j) { return static_cast<std::uint32_t>(begin + j); };
+    return renew(k, end - begin, index, h, reach, known, unheld_[static_cast<std::size_t>(t)], (end - begin) / unheld_share);
   });
+  finish(k, entities, h, reach, out, rule, w, flags, known);
+}
+
+void BroadPhase::find_again(const Components& k, std::span<const EntityId> entities,
+                            std::span<const EntityId> changed, double h, double reach, std::vector<Pair>& out,
+                            PairRule rule, Workers* workers) {
+  const auto listed = [&](EntityId e) {
+    return e < index_of_.size() && index_of_[e] < entities_.size() && entities_[index_of_[e]] == e;
+  };
+  const bool known = keeps_unchanged && found_valid_ && !k.any_rules() && h == last_h_ && reach == last_reach_ &&
+                     same_bodies(entities) && std::all_of(changed.begin(), changed.end(), listed);
+  if (!known) return find(k, entities, h, reach, out, rule, workers);
+  Workers& w = workers_or_one(workers);
+  ++finds_;
+  unheld_.resize(static_cast<std::size_t>(w.threads()));
+  const std::size_t few = entities.size() / unheld_share / static_cast<std::size_t>(w.threads());
+  const auto flags = w.or_over_ranges(changed.size(), min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
+    const auto index = [&](std::size_t j) { return index_of_[changed[begin + j]]; };
+    return renew(k, end - begin, index, h, reach, true, unheld_[static_cast<std::size_t>(t)], few);
+  });
+  finish(k, entities, h, reach, out, rule, w, flags, true);
+}
+
+bool BroadPhase::same_bodies(std::span<const EntityId> entities) const {
+  return fat_built_ && entities.size() == entities_.size() && std::equal(entities.begin(), entities.end(), entities_.begin());
+}
+
+// Each listed body's swept box made again (body index(j) for j < count, of
+// entities_, the grid's bodies). Returns bit 1 when a body left its box in
+// the grid (then the grid finds not every pair of boxes) or its mass's
+// finiteness changed (a NaN fails: a rebuild, which handles it); bit 2 when
+// a box changed; bit 4 when more than `few` left their last box (`known`:
+// the last boxes are the last call's pairs', else not counted), which are
+// listed in `unheld`.
+template <class Index>
+std::uint8_t BroadPhase::renew(const Components& k, std::size_t count, Index index, double h, double reach, bool known,
+                               std::vector<std::uint32_t>& unheld, std::size_t few) {
+  bool inside = true;
+  const auto stays = [&](std::uint32_t i, unsigned f) {
+    return !(f & escaped) && fixed_[i] == !std::isfinite(k.mass[entities_[i]]);
+  };
+  unheld.clear();
+  bool counting = known, moved = false;
+  std::size_t j = 0;
+  for (; counting && j < count; ++j) {
+    const std::uint32_t i = index(j);
+    const unsigned f = renew_swept(k, entities_[i], h, reach, current_[i], boxes_[i]);
+    moved = moved || f;
+    if (f & left) [[unlikely]] {
+      counting = unheld.size() < few;
+      if (counting) unheld.push_back(i);
+    }
+    if (inside) inside = stays(i, f);
+  }
+  if (j < count) moved = true;  // (not known, or a body left its last box: its box changed)
+  for (; j < count; ++j) {
+    const std::uint32_t i = index(j);
+    const unsigned f = renew_swept(k, entities_[i], h, reach, current_[i], boxes_[i]);
+    if (inside) inside = stays(i, f);
+  }
+  return static_cast<std::uint8_t>((inside ? 0 : 1) | (moved ? 2 : 0) | (counting ? 0 : 4));
+}
+
+// find()'s pairs once renew() has made the boxes and said what changed.
+void BroadPhase::finish(const Components& k, std::span<const EntityId> entities, double h, double reach,
+                        std::vector<Pair>& out, PairRule rule, Workers& w, std::uint8_t flags, bool known) {
+  last_h_ = h, last_reach_ = reach;
   if (flags & 1) fat_rebuild(k, entities, h, w);
   if (known && flags == 0) {
     out.assign(last_found_.begin(), last_found_.end());

@@ -55,6 +55,14 @@ class BroadPhase {
   // (the same pairs, in the same order, for any number); none: one thread.
   void find(const Components& k, std::span<const EntityId> entities, double h, double reach, std::vector<Pair>& out,
             PairRule rule = PairRule::solvable, Workers* workers = nullptr);
+  // find() again, when since the last find(), for the same bodies, h and
+  // reach, only the bodies of `changed` may have moved or changed velocity,
+  // box or mass (the solver's, after its solve): the others' boxes are not
+  // made again. The same pairs as find(); find() itself when that last call
+  // is not known to be such (another h or reach, other bodies, rules).
+  void find_again(const Components& k, std::span<const EntityId> entities, std::span<const EntityId> changed,
+                  double h, double reach, std::vector<Pair>& out, PairRule rule = PairRule::solvable,
+                  Workers* workers = nullptr);
   // Whether every body of `entities`, where it is now, lies within the box
   // the last find() swept for it (for the same bodies, with no contact
   // rules): then every pair whose boxes overlap now was among its pairs.
@@ -137,6 +145,12 @@ class BroadPhase {
   bool row_refresh(const Components& k, std::uint32_t i);
   // find().
   void fat_rebuild(const Components& k, std::span<const EntityId> entities, double h, Workers& w);
+  bool same_bodies(std::span<const EntityId> entities) const;  // the grid's, fat_built_
+  template <class Index>
+  std::uint8_t renew(const Components& k, std::size_t count, Index index, double h, double reach, bool known,
+                     std::vector<std::uint32_t>& unheld, std::size_t few);
+  void finish(const Components& k, std::span<const EntityId> entities, double h, double reach, std::vector<Pair>& out,
+              PairRule rule, Workers& w, std::uint8_t flags, bool known);
   void pairs_of_candidates(std::span<const EntityId> entities, std::vector<Pair>& out, Workers& w);
   void pairs_near_last(std::vector<Pair>& out);
   // Past one body in this many of a range whose box left its last one, the
@@ -169,6 +183,7 @@ class BroadPhase {
 
   // find() state.
   std::vector<Bounds> current_;  // this call's exact boxes
+  double last_h_ = 0.0, last_reach_ = 0.0;  // this call's h and reach
   std::uint64_t finds_ = 0;      // calls of find()
   std::vector<Bounds> scan_;     // find_selected()'s swept boxes
   std::vector<std::vector<Pair>> range_pairs_;  // find() with threads: each range's pairs, joined in order
