@@ -206,7 +206,8 @@ std::vector<ShockPass> shock_passes(const Components& k, const Contacts& contact
       if (sign > 0) supports.push_back({contacts[i].b, contacts[i].c, fb, fc, index});
       else supports.push_back({contacts[i].c, contacts[i].b, fc, fb, index});
     }
-    const auto order = bottom_up(renumber(supports, ids, met, k.size()), supports);
+    // (The browser's build, short of room, numbers them by entity id: the same order.)
+    const auto order = bottom_up(keeps_unchanged ? renumber(supports, ids, met, k.size()) : k.size(), supports);
     if (order.empty()) continue;
     // Every listed contact's upper body is deeper than its lower one, so not fixed: the pass can move it.
     ShockPass& pass = out.emplace_back(ShockPass{down, std::vector<ShockRow>(order.size())});
@@ -589,7 +590,9 @@ void ContactSolver::add_unknown_pairs() {
     if (!keeps_unchanged || !std::is_sorted(known_.begin(), known_.end())) std::sort(known_.begin(), known_.end());
     known_valid_ = true;
   }
-  const bool ordered = std::is_sorted(later_.begin(), later_.end(), [](Pair a, Pair b) { return a.key() < b.key(); });
+  // (The browser's build, short of room, always searches: the same pairs.)
+  const bool ordered =
+      keeps_unchanged && std::is_sorted(later_.begin(), later_.end(), [](Pair a, Pair b) { return a.key() < b.key(); });
   const std::size_t before = known_.size();
   std::size_t at = 0;
   for (const Pair& p : later_) {
@@ -1554,17 +1557,18 @@ void ContactSolver::island_energies(const Components& k) {
   // (0, none), so no pass over the world sets them.
   bodies_.clear();
   seen_.resize(n, 0);
-  for (const ContactConstraint& ct : contacts_)
-    for (const auto& [e, w] : {std::pair{ct.c, ct.wc}, std::pair{ct.b, ct.wb}})
-      if (w > 0.0 && !seen_[e]) seen_[e] = 1, bodies_.push_back(e);
-  if (bodies_.size() * 16 < n) {
+  const auto mark = [&](EntityId e, double w) {
+    if (w > 0.0 && !seen_[e]) seen_[e] = 1, bodies_.push_back(e);
+  };
+  for (const ContactConstraint& ct : contacts_) mark(ct.c, ct.wc), mark(ct.b, ct.wb);
+  if (keeps_unchanged && bodies_.size() * 16 < n) {  // (the browser's build, short of room, reads every mark)
     std::sort(bodies_.begin(), bodies_.end());
+    for (const EntityId e : bodies_) seen_[e] = 0;
   } else {
     bodies_.clear();
     for (EntityId e = 0; e < n; ++e)
-      if (seen_[e]) bodies_.push_back(e);
+      if (seen_[e]) bodies_.push_back(e), seen_[e] = 0;
   }
-  for (const EntityId e : bodies_) seen_[e] = 0;
   // One IslandEnergy per island, numbered as their roots are first met.
   island_.resize(n);
   root_index_.resize(n, none);

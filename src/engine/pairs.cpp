@@ -78,8 +78,9 @@ constexpr unsigned changed = 1, left = 2, escaped = 4;
 #else
   const Bounds s = swept(k, e, h, reach);
   const bool in_grid = grid.min_x <= s.x0 && grid.min_y <= s.y0 && s.x1 <= grid.max_x && s.y1 <= grid.max_y;
+  // (`left` is asked only where the last pairs are kept: not in the browser's build.)
   const unsigned flags =
-      bounds_differ(s, to) ? changed | (within(s, to) ? 0 : left) | (in_grid ? 0 : escaped) : 0;
+      bounds_differ(s, to) ? changed | (!keeps_unchanged || within(s, to) ? 0 : left) | (in_grid ? 0 : escaped) : 0;
   to = s;
   return flags;
 #endif
@@ -275,14 +276,15 @@ void BroadPhase::find(const Components& k, std::span<const EntityId> entities, d
   // set the boxes). When a few bodies' boxes left their last ones (unheld_),
   // the pairs are near the last call's: pairs_near_last().
   const bool known = keeps_unchanged && found_valid_ && same && !k.any_rules();
-  unheld_.resize(static_cast<std::size_t>(w.threads()));
+  if (known) clear_unheld(w);
   const std::uint8_t flags = w.or_over_ranges(n, min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
     if (!same) {  // a new list: a rebuild
       for (std::size_t i = begin; i < end; ++i) current_[i] = swept(k, entities[i], h, reach);
       return std::uint8_t{1 | 2 | 4};
     }
     const auto index = [&](std::size_t j) { return static_cast<std::uint32_t>(begin + j); };
-    return renew(k, end - begin, index, h, reach, known, unheld_[static_cast<std::size_t>(t)], (end - begin) / unheld_share);
+    const std::size_t few = (end - begin) / unheld_share;
+    return renew(k, end - begin, index, h, reach, known ? &unheld_[static_cast<std::size_t>(t)] : nullptr, few);
   });
   finish(k, entities, h, reach, out, rule, w, flags, known);
 }
@@ -298,13 +300,20 @@ void BroadPhase::find_again(const Components& k, std::span<const EntityId> entit
   if (!known) return find(k, entities, h, reach, out, rule, workers);
   Workers& w = workers_or_one(workers);
   ++finds_;
-  unheld_.resize(static_cast<std::size_t>(w.threads()));
+  clear_unheld(w);
   const std::size_t few = entities.size() / unheld_share / static_cast<std::size_t>(w.threads());
   const auto flags = w.or_over_ranges(changed.size(), min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
     const auto index = [&](std::size_t j) { return index_of_[changed[begin + j]]; };
-    return renew(k, end - begin, index, h, reach, true, unheld_[static_cast<std::size_t>(t)], few);
+    return renew(k, end - begin, index, h, reach, &unheld_[static_cast<std::size_t>(t)], few);
   });
   finish(k, entities, h, reach, out, rule, w, flags, true);
+}
+
+// One empty list per thread (a list of a range that is not split this time
+// would otherwise hold the last call's).
+void BroadPhase::clear_unheld(const Workers& w) {
+  unheld_.resize(static_cast<std::size_t>(w.threads()));
+  for (std::vector<std::uint32_t>& part : unheld_) part.clear();
 }
 
 bool BroadPhase::same_bodies(std::span<const EntityId> entities) const {
@@ -315,26 +324,25 @@ bool BroadPhase::same_bodies(std::span<const EntityId> entities) const {
 // entities_, the grid's bodies). Returns bit 1 when a body left its box in
 // the grid (then the grid finds not every pair of boxes) or its mass's
 // finiteness changed (a NaN fails: a rebuild, which handles it); bit 2 when
-// a box changed; bit 4 when more than `few` left their last box (`known`:
-// the last boxes are the last call's pairs', else not counted), which are
-// listed in `unheld`.
+// a box changed; bit 4 when more than `few` left their last box. Those are
+// appended to *unheld when it is given (the last boxes are the last call's
+// pairs'); none given, bit 4 is set.
 template <class Index>
-std::uint8_t BroadPhase::renew(const Components& k, std::size_t count, Index index, double h, double reach, bool known,
-                               std::vector<std::uint32_t>& unheld, std::size_t few) {
+std::uint8_t BroadPhase::renew(const Components& k, std::size_t count, Index index, double h, double reach,
+                               std::vector<std::uint32_t>* unheld, std::size_t few) {
   bool inside = true;
   const auto stays = [&](std::uint32_t i, unsigned f) {
     return !(f & escaped) && fixed_[i] == !std::isfinite(k.mass[entities_[i]]);
   };
-  unheld.clear();
-  bool counting = known, moved = false;
+  bool counting = keeps_unchanged && unheld, moved = false;
   std::size_t j = 0;
   for (; counting && j < count; ++j) {
     const std::uint32_t i = index(j);
     const unsigned f = renew_swept(k, entities_[i], h, reach, current_[i], boxes_[i]);
     moved = moved || f;
     if (f & left) [[unlikely]] {
-      counting = unheld.size() < few;
-      if (counting) unheld.push_back(i);
+      counting = unheld->size() < few;
+      if (counting) unheld->push_back(i);
     }
     if (inside) inside = stays(i, f);
   }
@@ -356,7 +364,7 @@ void BroadPhase::finish(const Components& k, std::span<const EntityId> entities,
     out.assign(last_found_.begin(), last_found_.end());
     return;
   }
-  if (known && flags == 2) {
+  if (keeps_unchanged && known && flags == 2) {
     pairs_near_last(out);
   } else {
     pairs_of_candidates(entities, out, w);
@@ -485,8 +493,10 @@ void BroadPhase::fat_rebuild(const Components& k, std::span<const EntityId> enti
   });
   grid_.build(boxes_, fixed_);
   entities_.assign(entities.begin(), entities.end());
-  index_of_.resize(k.size());
-  for (std::size_t i = 0; i < n; ++i) index_of_[entities[i]] = static_cast<std::uint32_t>(i);
+  if (keeps_unchanged) {  // (pairs_near_last() and find_again(), not in the browser's build)
+    index_of_.resize(k.size());
+    for (std::size_t i = 0; i < n; ++i) index_of_[entities[i]] = static_cast<std::uint32_t>(i);
+  }
   fat_built_ = true;
 }
 

@@ -146,9 +146,10 @@ class BroadPhase {
   // find().
   void fat_rebuild(const Components& k, std::span<const EntityId> entities, double h, Workers& w);
   bool same_bodies(std::span<const EntityId> entities) const;  // the grid's, fat_built_
+  void clear_unheld(const Workers& w);
   template <class Index>
-  std::uint8_t renew(const Components& k, std::size_t count, Index index, double h, double reach, bool known,
-                     std::vector<std::uint32_t>& unheld, std::size_t few);
+  std::uint8_t renew(const Components& k, std::size_t count, Index index, double h, double reach,
+                     std::vector<std::uint32_t>* unheld, std::size_t few);
   void finish(const Components& k, std::span<const EntityId> entities, double h, double reach, std::vector<Pair>& out,
               PairRule rule, Workers& w, std::uint8_t flags, bool known);
   void pairs_of_candidates(std::span<const EntityId> entities, std::vector<Pair>& out, Workers& w);

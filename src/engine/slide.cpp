@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "engine/same_bits.hpp"
+
 namespace physics {
 
 void SlideIntegrator::start(const Components& k, bool needed) {
@@ -17,7 +19,10 @@ void SlideIntegrator::after_solver(const Components& k, std::span<const ContactC
   // impulse, so it makes no slider): then no look at every body. The
   // rounds' rows (ContactSolver::keep_round) are there, zero, for every
   // contact of a frictionless rain solved again.
-  if (std::none_of(rows.begin(), rows.end(), [](const FrictionRow& r) { return r.mu > 0.0; })) return;
+  // (The browser's build, short of room, looks whenever there are rows.)
+  if (keeps_unchanged ? std::none_of(rows.begin(), rows.end(), [](const FrictionRow& r) { return r.mu > 0.0; })
+                      : rows.empty())
+    return;
   touched_.assign(k.size(), 0);
   v_end_.resize(k.size());
   // (A contact's inverse masses say which end is fixed: inverse_mass() is 0

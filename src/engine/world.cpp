@@ -153,7 +153,9 @@ void World::before_forces() {
   if (slides()) {
     const std::vector<double>& mu = components.friction;
     const bool ccd = params.ccd || params.solver == Solver::automatic;
-    slide_.start(components, ccd || std::any_of(mu.begin(), mu.end(), [](double f) { return f != 0.0; }));
+    // (The browser's build, short of room, always copies them.)
+    const bool friction = !keeps_unchanged || std::any_of(mu.begin(), mu.end(), [](double f) { return f != 0.0; });
+    slide_.start(components, ccd || friction);
   }
 }
 
