@@ -12,7 +12,9 @@ namespace physics {
 
 // Whether they keep them: the same bits either way. Not in the browser's
 // build (WebAssembly under WASI), which stays within its size budget
-// without that code (docs/web.md).
+// without that code (docs/web.md); there the other shortcuts to the same
+// result that cost code take their plain path too (each marked "the
+// browser's build" where it is tested).
 #if defined(__wasi__)
 inline constexpr bool keeps_unchanged = false;
 #else
