@@ -77,8 +77,9 @@ struct WorldDef {
   bool collision = true;        // without collision, bodies pass through each other
   bool contact_events = false;  // record begin/end touch events (contact_events())
   // Threads of the stable and auto solvers' loops over contacts and bodies and
-  // of their broad phase, in [1, 64] (1 in a build without threads): the
-  // same results, bit for bit, for any number (docs/performance.md).
+  // of their broad phase, and of Forces and Move in every solver, in [1, 64]
+  // (1 in a build without threads): the same results, bit for bit, for any
+  // number (docs/performance.md).
   int threads = 1;
   // Bodies whose centre leaves these bounds count as escaped (health()); no bounds if empty.
   std::optional<Aabb> bounds;
