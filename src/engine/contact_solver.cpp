@@ -155,14 +155,6 @@ std::vector<std::size_t> bottom_up(std::size_t bodies, std::span<const Support> 
   return sorted;
 }
 
-// The directions of the bottom-up passes: gravity's, and both ways along
-// each axis gravity has no component on. Along those, a fixed body anchors
-// what presses on it as the floor does a stack: a light block between a
-// heavy pusher and a wall, a row driven by an infinite-mass pusher
-// (Gauss-Seidel alone carries a heavy body's push through a light one only
-// at the light one's rate, and the projection's shares by inverse mass push
-// the light one into the wall). The axes are independent (a contact's normal
-// is along one), so the passes along x do not undo those along y.
 // The supports' bodies renumbered 0, 1, ... as first met, so that the
 // support graph's tables are as long as the bodies in contacts, not as the
 // world (a falling rain of 100 000 whose lowest rows land: 1.6 MB set to
@@ -182,6 +174,15 @@ std::size_t renumber(std::span<Support> supports, std::vector<std::uint32_t>& id
   return met.size();
 }
 
+// The directions of the bottom-up passes: gravity's, and both ways along
+// each axis gravity has no component on. Along those, a fixed body anchors
+// what presses on it as the floor does a stack: a light block between a
+// heavy pusher and a wall, a row driven by an infinite-mass pusher
+// (Gauss-Seidel alone carries a heavy body's push through a light one only
+// at the light one's rate, and the projection's shares by inverse mass push
+// the light one into the wall). The axes are independent (a contact's normal
+// is along one), so the passes along x do not undo those along y. `ids`,
+// `met`: renumber()'s scratch.
 template <class Contacts>
 std::vector<ShockPass> shock_passes(const Components& k, const Contacts& contacts, Vector g,
                                     std::vector<std::uint32_t>& ids, std::vector<EntityId>& met) {

@@ -58,8 +58,9 @@ class BroadPhase {
   // find() again, when since the last find(), for the same bodies, h and
   // reach, only the bodies of `changed` may have moved or changed velocity,
   // box or mass (the solver's, after its solve; each listed once, as the
-  // threads renew their boxes apart): the others' boxes are not made again. The same pairs as find(); find() itself when that last call
-  // is not known to be such (another h or reach, other bodies, rules).
+  // threads renew their boxes apart): the others' boxes are not made again.
+  // The same pairs as find(); find() itself when that last call is not
+  // known to be such (another h or reach, other bodies, rules).
   void find_again(const Components& k, std::span<const EntityId> entities, std::span<const EntityId> changed,
                   double h, double reach, std::vector<Pair>& out, PairRule rule = PairRule::solvable,
                   Workers* workers = nullptr);
