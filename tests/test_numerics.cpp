@@ -235,14 +235,14 @@ BOOST_AUTO_TEST_CASE(a_heavy_block_on_a_light_one_rests_at_ratio_1e12) {
 
 // A block moved into another at rest (a game's set_position) overlaps it
 // while neither moves: the position stage must see the overlap that the
-// new classification found (ContactSolver::any_overlap lists the overlapping
-// pairs once per classification, again after the axes are written) and push
-// the two apart.
+// new classification found (ContactSolver::any_overlap asks once per
+// classification whether a classified pair overlaps, again after the axes
+// are written) and push the two apart.
 BOOST_AUTO_TEST_CASE(a_block_moved_into_a_resting_one_is_pushed_out) {
   World w = stable_walled_world();
   Block::make(w, 300, 520, 40, 40, test::grey, 1.0);
   const auto b = Block::make(w, 400, 520, 40, 40, test::grey, 1.0).id;
-  for (int f = 0; f < 60; ++f) Game::step(w);  // at rest: a kept classification, its list of overlaps empty
+  for (int f = 0; f < 60; ++f) Game::step(w);  // at rest: a kept classification, no classified overlap
   BOOST_TEST_REQUIRE(max_overlap(w) == 0.0);
   w.components.position[b].x = 330.0;  // 10 px into the other
   BOOST_TEST_REQUIRE(max_overlap(w) > 9.0);
