@@ -9,6 +9,7 @@
 #include "course/game.hpp"
 #include "helpers.hpp"
 #include "engine/broadphase.hpp"
+#include "engine/workers.hpp"
 #include "course/utils/random.hpp"
 
 // The file's own names, apart from the other test files' with which it is
@@ -241,6 +242,66 @@ BOOST_AUTO_TEST_CASE(large_boxes_on_both_sides_of_zero_find_the_same_pairs_as_al
   BOOST_TEST(grid.large_count() >= 300u);
   BOOST_TEST(expected.size() > 1000u);
   BOOST_TEST((grid.pairs() == expected), grid.pairs().size() << " pairs, brute force " << expected.size());
+}
+
+// The grid's passes on a team (more boxes than min_parallel_items, so that
+// each pass splits into ranges): the same pairs in the same order as on one
+// thread and as testing every pair, the same large bodies and cells, and the
+// same answers to queries after moves. Crowded boxes with walls (the pairs'
+// counting sort) and sparse small ones (their comparison sort); each grid
+// built twice (the second time on the ranges' scratch of the first).
+BOOST_AUTO_TEST_CASE(the_grid_on_a_team_finds_the_pairs_of_one_thread) {
+  for (const bool crowded : {true, false}) {
+    Random rng(crowded ? 3 : 4);
+    const double world = crowded ? 600 : 4000;
+    std::vector<FloatBox> boxes;
+    std::vector<std::uint8_t> fixed;
+    for (int i = 0; i < 6000; ++i) {
+      const double kind = rng.uniform(0, 1);
+      double w = crowded ? rng.uniform(0.5, 20) : rng.uniform(0.5, 3), h = crowded ? rng.uniform(0.5, 20) : rng.uniform(0.5, 3);
+      if (crowded && kind < 0.03) w = world, h = 10;  // walls: the large list
+      const Vector p{rng.uniform(0, world), rng.uniform(0, world)};
+      FloatBox b{static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.x + w), static_cast<float>(p.y + h)};
+      if (kind > 0.99) b.min_x = std::numeric_limits<float>::quiet_NaN();
+      if (kind > 0.98 && kind <= 0.99) b.max_y = std::numeric_limits<float>::infinity();
+      if (kind > 0.97 && kind <= 0.98 && !boxes.empty()) b = boxes[static_cast<std::size_t>(rng.uniform_int(0, i - 1))];
+      boxes.push_back(b);
+      fixed.push_back(rng.uniform(0, 1) < 0.2);
+    }
+    UniformGrid one;
+    one.build(boxes, fixed);
+    const auto expected = brute_pairs(boxes, fixed);
+    BOOST_TEST_REQUIRE((one.pairs() == expected));
+    BOOST_TEST((crowded ? expected.size() > 3 * boxes.size() : expected.size() * 32 < boxes.size()),
+               expected.size() << " pairs");
+    for (const int threads : {2, 3}) {
+      Workers team(threads);
+      UniformGrid grid;
+      for (int build = 0; build < 2; ++build) {
+        grid.build(boxes, fixed, &team);
+        BOOST_TEST((grid.pairs() == expected), threads << " threads, build " << build << ": " << grid.pairs().size()
+                                                       << " pairs, " << expected.size() << " expected");
+        BOOST_TEST(grid.large_count() == one.large_count());
+        BOOST_TEST(grid.cells() == one.cells());
+        BOOST_TEST(same_bits(grid.cell_size(), one.cell_size()));
+      }
+      // Moves (a large body's box too), then queries: the same bodies reported.
+      UniformGrid moved = one;
+      for (std::uint32_t i = 0; i < boxes.size(); i += 97) {
+        const auto x = static_cast<float>(rng.uniform(0, world)), y = static_cast<float>(rng.uniform(0, world));
+        const FloatBox b{x, y, x + 2.0f, y + 2.0f};
+        moved.move(i, b), grid.move(i, b);
+      }
+      for (int q = 0; q < 200; ++q) {
+        const auto x = static_cast<float>(rng.uniform(0, world)), y = static_cast<float>(rng.uniform(0, world));
+        const FloatBox box{x, y, x + 40.0f, y + 40.0f};
+        std::vector<std::uint32_t> a, b;
+        moved.query(box, [&](std::uint32_t j) { a.push_back(j); });
+        grid.query(box, [&](std::uint32_t j) { b.push_back(j); });
+        BOOST_TEST_REQUIRE((a == b), "query " << q << ": " << a.size() << " against " << b.size());
+      }
+    }
+  }
 }
 
 BOOST_AUTO_TEST_CASE(a_query_after_moves_reports_every_overlapping_box) {

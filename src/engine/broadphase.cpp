@@ -1,6 +1,7 @@
 #include "engine/broadphase.hpp"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cstdint>
 #include <cmath>
@@ -64,6 +65,83 @@ constexpr bool sorts_by_counting = false;
 constexpr bool sorts_by_counting = true;
 #endif
 
+constexpr std::uint32_t no_bucket = std::numeric_limits<std::uint32_t>::max();
+
+// A stable counting sort of the items [0, n): to.key(i) is item i's bucket
+// (< buckets), to.put(i, key, slot) writes it to its slot. On return start[b] is
+// where bucket b's items begin, start[buckets] how many there are. Items of
+// a bucket keep their order: each is placed from the last backwards.
+//
+// On a team each range counts its items in a table of its own (the first
+// range's is start, the others' more_tables(t)), one pass over the buckets
+// turns the counts into where each range's part of each bucket ends, then
+// every range places its items: the slots of one pass in order.
+//
+// Target::scattered(): some items have no bucket (key no_bucket: left out),
+// and the others are in no order of their buckets (bodies numbered as
+// registered, not in space: a million gas bodies' counters are 8 MB, their
+// entries 24 MB), each count and slot a miss to the last-level cache or
+// beyond. The loops then ask for them `ahead` items early (the slot in two
+// steps: its counter, then the slot the counter points at, to.ahead), so
+// the misses overlap instead of stalling one by one. (Not for the pairs,
+// whose counters fit in the second-level cache: there the asking cost 60 %
+// more instructions than it saved.)
+template <class More, class Target>
+void counting_sort(Workers& w, std::size_t n, std::size_t buckets, std::vector<std::uint32_t>& start, More&& more_tables,
+                   Target to) {
+  constexpr std::size_t ahead = 16;
+  constexpr bool scattered = Target::scattered();
+  // (Each key read once into a local: the counters' stores may alias it.)
+  const auto count = [&](std::uint32_t* counts, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      if (scattered && i + ahead < end) {
+        const std::uint32_t next = to.key(i + ahead);
+        if (next != no_bucket) __builtin_prefetch(counts + next);
+      }
+      const std::uint32_t k = to.key(i);
+      if (!scattered || k != no_bucket) ++counts[k];
+    }
+  };
+  const auto place = [&](std::uint32_t* ends, std::size_t begin, std::size_t end) {
+    for (std::size_t i = end; i-- > begin;) {
+      if (scattered && i >= begin + 2 * ahead) {
+        const std::uint32_t next = to.key(i - 2 * ahead);
+        if (next != no_bucket) __builtin_prefetch(ends + next);
+      }
+      if (scattered && i >= begin + ahead) {
+        const std::uint32_t next = to.key(i - ahead);
+        if (next != no_bucket) to.ahead(ends[next] - 1);
+      }
+      const std::uint32_t k = to.key(i);
+      if (!scattered || k != no_bucket) to.put(i, k, --ends[k]);
+    }
+  };
+  start.assign(buckets + 1, 0);
+  if constexpr (has_threads) {
+    if (w.splits(n, min_parallel_items)) {
+      const auto threads = static_cast<std::size_t>(w.threads());
+      std::array<std::vector<std::uint32_t>*, max_threads> more{&start};
+      for (int t = 1; t < w.threads(); ++t) more[static_cast<std::size_t>(t)] = &more_tables(t);
+      std::array<std::uint32_t*, max_threads> table{};
+      w.for_ranges(n, min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
+        if (t != 0) more[static_cast<std::size_t>(t)]->assign(buckets, 0);  // (each range zeroes its own)
+        table[static_cast<std::size_t>(t)] = more[static_cast<std::size_t>(t)]->data();
+        count(table[static_cast<std::size_t>(t)], begin, end);
+      });
+      std::uint32_t at = 0;
+      for (std::size_t b = 0; b < buckets; ++b)
+        for (std::size_t t = 0; t < threads; ++t) table[t][b] = at += table[t][b];
+      start[buckets] = at;
+      w.for_ranges(n, min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
+        place(table[static_cast<std::size_t>(t)], begin, end);
+      });
+      return;
+    }
+  }
+  count(start.data(), 0, n);
+  for (std::size_t b = 1; b <= buckets; ++b) start[b] += start[b - 1];
+  place(start.data(), 0, n);
+}
 
 }  // namespace
 
@@ -103,25 +181,26 @@ void UniformGrid::size_grid(const SmallBoxes& s) {
   max_small_extent_ = max_extent;
 }
 
-void UniformGrid::emit(std::uint32_t a, std::uint32_t b) {
+void UniformGrid::emit(std::vector<PairKey>& out, std::uint32_t a, std::uint32_t b) const {
   if (fixed_[a] && fixed_[b]) return;
-  found_.push_back(pair_key(a, b));
+  out.push_back(pair_key(a, b));
 }
 
 // In stages: classify the boxes (small in the grid, large aside), size the
 // grid, sort the small boxes into cells, then the pairs: grid cells against
 // their neighbours, large boxes against the grid and each other; sorted.
-void UniformGrid::build(std::span<const FloatBox> boxes, std::span<const std::uint8_t> fixed) {
+void UniformGrid::build(std::span<const FloatBox> boxes, std::span<const std::uint8_t> fixed, Workers* workers) {
   const std::size_t n = boxes.size();
   if (n >= std::size_t{std::numeric_limits<std::uint32_t>::max()}) throw std::length_error("broadphase: too many bodies");
+  Workers& w = workers_or_one(workers);
   fixed_.assign(fixed.begin(), fixed.end());
   found_.clear();
-  const SmallBoxes small = classify(boxes);
+  const SmallBoxes small = classify(boxes, w);
   size_grid(small);
-  fill_cells(boxes, small.count);
-  pairs_in_grid();
+  fill_cells(boxes, small.count, w);
+  pairs_in_grid(w);
   pairs_of_large();
-  sort_pairs(n);
+  sort_pairs(n, w);
 }
 
 void UniformGrid::index(std::span<const FloatBox> boxes) {
@@ -129,9 +208,10 @@ void UniformGrid::index(std::span<const FloatBox> boxes) {
   fixed_.clear();
   found_.clear();
   pairs_.clear();
-  const SmallBoxes small = classify(boxes);
+  Workers& one = workers_or_one(nullptr);
+  const SmallBoxes small = classify(boxes, one);
   size_grid(small);
-  fill_cells(boxes, small.count);
+  fill_cells(boxes, small.count, one);
 }
 
 namespace {
@@ -153,8 +233,11 @@ BoxSize size_of(const FloatBox& b) {
 // NaN bound are in neither and collide with nothing. Afterwards cell_of_ says
 // which bodies are small (nonzero). Returns what the grid's size depends on,
 // gathered in the same pass (one read of the boxes fewer: at a million
-// bodies the grid's passes are bound by memory).
-UniformGrid::SmallBoxes UniformGrid::classify(std::span<const FloatBox> boxes) {
+// bodies the grid's passes are bound by memory). The mean size is summed on
+// one thread (a sum in another order would round otherwise); the rest is
+// per range: bounds and counts whatever their order, the large bodies'
+// lists joined in range order.
+UniformGrid::SmallBoxes UniformGrid::classify(std::span<const FloatBox> boxes, Workers& w) {
   const std::size_t n = boxes.size();
   // large_slot_ is -1 but for the large bodies: reset those of the last pass.
   for (const std::uint32_t i : large_)
@@ -171,15 +254,42 @@ UniformGrid::SmallBoxes UniformGrid::classify(std::span<const FloatBox> boxes) {
   }
   const double threshold = counted ? large_factor * (sum / static_cast<double>(counted)) : 0.0;
   cell_of_.resize(n);
+  RangeBoxes all;
+  bool split = false;
+  if constexpr (has_threads) {  // (the browser's build has one thread: the one range alone)
+    split = w.splits(n, min_parallel_items);
+    if (split) {
+      std::array<RangeBoxes, max_threads> parts{};
+      w.append_over_ranges(n, min_parallel_items, large_, [&](int t) -> auto& { return part_of(parts_, t, w.threads()).large; },
+                           [&](int t, std::size_t begin, std::size_t end, std::vector<std::uint32_t>& large) {
+                             parts[static_cast<std::size_t>(t)] = classify_range(boxes, begin, end, threshold, large);
+                           });
+      for (const RangeBoxes& part : parts) all.add(part);  // (the ranges not run: none)
+    }
+  }
+  if (!split) all = classify_range(boxes, 0, n, threshold, large_);
+  for (std::size_t l = 0; l < large_.size(); ++l) {
+    large_slot_[large_[l]] = static_cast<std::int32_t>(l);
+    large_box_.push_back(boxes[large_[l]]);
+  }
+  if (all.count == 0) return {0.0, 0.0, 0.0, 0.0, 0.0, 0};
+  return {all.lo_x, all.lo_y, all.hi_x, all.hi_y, all.max_extent, all.count};
+}
+
+// classify() on the boxes [begin, end): marks the small ones in cell_of_,
+// appends the large ones to `large`.
+UniformGrid::RangeBoxes UniformGrid::classify_range(std::span<const FloatBox> boxes, std::size_t begin,
+                                                    std::size_t end, double threshold,
+                                                    std::vector<std::uint32_t>& large) {
   // In locals, not in the result's fields: those live in memory, which the
   // stores to cell_of_ may alias, so each body reloaded and stored all six.
   // The corners' bounds in float (exact; converted once at the end).
-  constexpr float finf = std::numeric_limits<float>::infinity();
-  float lo_x = finf, lo_y = finf, hi_x = -finf, hi_y = -finf;  // (a small box's min is finite)
+  RangeBoxes none;
+  float lo_x = none.lo_x, lo_y = none.lo_y, hi_x = none.hi_x, hi_y = none.hi_y;
   double max_extent = 0.0;
   std::size_t count = 0;
   std::uint32_t* const cell = cell_of_.data();
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = begin; i < end; ++i) {
     const FloatBox& b = boxes[i];
     const BoxSize z = size_of(b);
     const bool small = z.finite & (z.extent <= threshold);
@@ -190,49 +300,46 @@ UniformGrid::SmallBoxes UniformGrid::classify(std::span<const FloatBox> boxes) {
       lo_x = b.min_x < lo_x ? b.min_x : lo_x, hi_x = b.min_x > hi_x ? b.min_x : hi_x;
       lo_y = b.min_y < lo_y ? b.min_y : lo_y, hi_y = b.min_y > hi_y ? b.min_y : hi_y;
     } else if (b.valid()) {
-      large_slot_[i] = static_cast<std::int32_t>(large_.size());
-      large_.push_back(static_cast<std::uint32_t>(i));
-      large_box_.push_back(b);
+      large.push_back(static_cast<std::uint32_t>(i));
     }
   }
-  if (count == 0) return {0.0, 0.0, 0.0, 0.0, 0.0, 0};
   return {lo_x, lo_y, hi_x, hi_y, max_extent, count};
 }
 
-// Counting sort of the small boxes by cell (row-major). Filling backwards
-// leaves each cell's bodies in increasing index order.
-//
-// Bodies are numbered as registered, not in space: once a gas has mixed,
-// each body's counter and entry are at a random place in tables of tens of
-// MB (a million bodies: 8 MB of counters, 24 MB of entries), a miss to the
-// last-level cache or beyond each. The loops ask for them `ahead` bodies
-// early (the entry's slot in two steps: its counter, then the slot the
-// counter points at), so the misses overlap instead of stalling one by one.
-void UniformGrid::fill_cells(std::span<const FloatBox> boxes, std::size_t small) {
-  constexpr std::size_t ahead = 16;
+// Bounds, widest box and counts are the same in any order (no NaN among
+// small boxes).
+void UniformGrid::RangeBoxes::add(const RangeBoxes& o) {
+  lo_x = o.lo_x < lo_x ? o.lo_x : lo_x, lo_y = o.lo_y < lo_y ? o.lo_y : lo_y;
+  hi_x = o.hi_x > hi_x ? o.hi_x : hi_x, hi_y = o.hi_y > hi_y ? o.hi_y : hi_y;
+  max_extent = o.max_extent > max_extent ? o.max_extent : max_extent;
+  count += o.count;
+}
+
+// Counting sort of the small boxes by cell (row-major), each cell's bodies
+// in increasing index order.
+void UniformGrid::fill_cells(std::span<const FloatBox> boxes, std::size_t small, Workers& w) {
   const std::size_t n = boxes.size();
   const std::size_t cells = table_size();
-  cell_start_.assign(cells + 1, 0);
-  constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
   std::uint32_t* const cell = cell_of_.data();
-  std::uint32_t* const start = cell_start_.data();
-  for (std::size_t i = 0; i < n; ++i)
-    cell[i] = cell[i] ? static_cast<std::uint32_t>(corner_cell(boxes[i])) : none;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (i + ahead < n && cell[i + ahead] != none) __builtin_prefetch(start + cell[i + ahead]);
-    if (cell[i] != none) ++start[cell[i]];
-  }
-  for (std::size_t c = 1; c <= cells; ++c) start[c] += start[c - 1];
+  w.for_ranges(n, min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+      cell[i] = cell[i] ? static_cast<std::uint32_t>(corner_cell(boxes[i])) : no_bucket;
+  });
   // Padding after the last entry: pairs_in_run reads four entries at a time.
   entries_.resize(small + entry_padding);
-  Entry* const entry = entries_.data();
-  for (std::size_t i = n; i-- > 0;) {
-    if (i >= 2 * ahead && cell[i - 2 * ahead] != none) __builtin_prefetch(start + cell[i - 2 * ahead]);
-    if (i >= ahead && cell[i - ahead] != none) __builtin_prefetch(entry + start[cell[i - ahead]] - 1);
-    const std::uint32_t c = cell[i];
-    if (c == none) continue;
-    entry[--start[c]] = Entry{boxes[i], static_cast<std::uint32_t>(i), c};
-  }
+  struct ToEntries {
+    static constexpr bool scattered() { return true; }
+    std::span<const FloatBox> boxes;
+    const std::uint32_t* cell;
+    Entry* entry;
+    std::uint32_t key(std::size_t i) const { return cell[i]; }
+    void ahead(std::uint32_t slot) const { __builtin_prefetch(entry + slot); }
+    void put(std::size_t i, std::uint32_t c, std::uint32_t slot) const {
+      entry[slot] = Entry{boxes[i], static_cast<std::uint32_t>(i), c};
+    }
+  };
+  counting_sort(w, n, cells, cell_start_, [&](int t) -> auto& { return part_of(parts_, t, w.threads()).counts; },
+                ToEntries{boxes, cell, entries_.data()});
   // No moved bodies yet: clear the lists the last pass left.
   for (const std::uint32_t c : moved_cells_)
     if (c < moved_head_.size()) moved_head_[c] = -1;
@@ -241,6 +348,17 @@ void UniformGrid::fill_cells(std::span<const FloatBox> boxes, std::size_t small)
   moved_head_.resize(cells, -1);
 }
 
+// On a team, each range of entries finds its pairs, joined in order.
+void UniformGrid::pairs_in_grid(Workers& w) {
+  const std::uint32_t count = cell_start_[table_size()];
+  w.append_over_ranges(count, min_parallel_items, found_,
+                       [&](int t) -> auto& { return part_of(parts_, t, w.threads()).found; },
+                       [&](int, std::size_t begin, std::size_t end, std::vector<PairKey>& out) {
+                         pairs_of_entries(static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(end), out);
+                       });
+}
+
+// The pairs of the entries [from, to) with the entries after them, to `out`.
 // Walks the entries (in cell order) rather than the cells: most cells hold
 // zero, one or two bodies at random, and a test per cell for emptiness was a
 // mispredicted branch about every other cell (walking the cells, a 200 000-body
@@ -249,19 +367,20 @@ void UniformGrid::fill_cells(std::span<const FloatBox> boxes, std::size_t small)
 // earlier one: an entry meets the later entries of its cell and those of its
 // right neighbour, then the three cells below it (below-left, below,
 // below-right); each run is contiguous in entries_, and the table's empty
-// last column and row stand for the neighbours beyond the edges.
-void UniformGrid::pairs_in_grid() {
-  const std::uint32_t* start = cell_start_.data();
-  const Entry* entry = entries_.data();
+// last column and row stand for the neighbours beyond the edges. (The
+// tables' pointers in locals that no call can change: reached through a
+// closure, they were loaded again after every pair found, +30 % here.)
+void UniformGrid::pairs_of_entries(std::uint32_t from, std::uint32_t to, std::vector<PairKey>& out) const {
+  const std::uint32_t* const start = cell_start_.data();
+  const Entry* const entry = entries_.data();
   const std::size_t below = stride();
-  const std::uint32_t count = start[table_size()];
-  for (std::uint32_t a = 0; a < count; ++a) {
+  for (std::uint32_t a = from; a < to; ++a) {
     const std::size_t c = entry[a].cell;
     const std::uint32_t same_end = start[c + 2];  // this cell and the right one
     const std::uint32_t below_s = start[c + below - 1], below_e = start[c + below + 2];
     const RunTest test(entry[a].box);
-    pairs_in_run(test, entry, a, a + 1, same_end);
-    pairs_in_run(test, entry, a, below_s, below_e);
+    pairs_in_run(out, test, entry, a, a + 1, same_end);
+    pairs_in_run(out, test, entry, a, below_s, below_e);
   }
 }
 
@@ -276,24 +395,26 @@ void UniformGrid::pairs_in_grid() {
 // The hit is marked unlikely: with emit's call on the loop's path, GCC kept
 // the box's vectors on the stack and reloaded them every group; now it saves
 // them only around the call.
-[[gnu::always_inline]] inline void UniformGrid::pairs_in_run(const RunTest& test, const Entry* entry, std::uint32_t a,
-                                                             std::uint32_t b, std::uint32_t e) {
+[[gnu::always_inline]] inline void UniformGrid::pairs_in_run(std::vector<PairKey>& out, const RunTest& test,
+                                                             const Entry* entry, std::uint32_t a, std::uint32_t b,
+                                                             std::uint32_t e) const {
   do {
     const std::uint32_t hits = test.lanes(entry + b, e - b);
     if (hits) [[unlikely]]
-      emit_lanes(entry[a].index, entry + b, hits);
+      emit_lanes(out, entry[a].index, entry + b, hits);
     b += 4;
   } while (b < e);
 }
 
-void UniformGrid::emit_lanes(std::uint32_t body, const Entry* from, std::uint32_t hits) {
-  for (; hits; hits &= hits - 1) emit(body, from[std::countr_zero(hits)].index);
+void UniformGrid::emit_lanes(std::vector<PairKey>& out, std::uint32_t body, const Entry* from, std::uint32_t hits) const {
+  for (; hits; hits &= hits - 1) emit(out, body, from[std::countr_zero(hits)].index);
 }
 #else
-[[gnu::always_inline]] inline void UniformGrid::pairs_in_run(const RunTest& test, const Entry* entry, std::uint32_t a,
-                                                             std::uint32_t b, std::uint32_t e) {
+[[gnu::always_inline]] inline void UniformGrid::pairs_in_run(std::vector<PairKey>& out, const RunTest& test,
+                                                             const Entry* entry, std::uint32_t a, std::uint32_t b,
+                                                             std::uint32_t e) const {
   for (; b < e; ++b)
-    if (overlap(test.box, entry[b].box)) emit(entry[a].index, entry[b].index);
+    if (overlap(test.box, entry[b].box)) emit(out, entry[a].index, entry[b].index);
 }
 #endif
 
@@ -304,7 +425,7 @@ void UniformGrid::emit_lanes(std::uint32_t body, const Entry* from, std::uint32_
 void UniformGrid::pairs_of_large() {
   for (std::size_t l = 0; l < large_.size(); ++l) {
     const std::uint32_t i = large_[l];
-    query_grid(large_box_[l], [&](std::uint32_t j) { emit(i, j); });
+    query_grid(large_box_[l], [&](std::uint32_t j) { emit(found_, i, j); });
   }
   // By min_x, then by index: keys whose order is the floats' (one sort of
   // integers, shared with the pairs', instead of one more of its own).
@@ -319,44 +440,51 @@ void UniformGrid::pairs_of_large() {
     for (std::size_t b = a + 1; b < large_order_.size(); ++b) {
       const FloatBox& other = large_box_[at(b)];
       if (other.min_x > box.max_x) break;
-      if (overlap(box, other)) emit(large_[at(a)], large_[at(b)]);
+      if (overlap(box, other)) emit(found_, large_[at(a)], large_[at(b)]);
     }
   }
 }
 
-void UniformGrid::sort_pairs(std::size_t n) {
+void UniformGrid::sort_pairs(std::size_t n, Workers& w) {
   // Few pairs among many bodies (a thin gas: a million bodies, a few
   // thousand pairs a pass): a comparison sort of the pairs costs less than
   // the counting sort's pass over every body. Both give the same order
   // (each pair is found once).
   if (!sorts_by_counting || found_.size() * 32 < n) {
-    pairs_.assign(found_.begin(), found_.end());
+    pairs_.swap(found_);  // (found_ is cleared by the next build)
     std::sort(pairs_.begin(), pairs_.end());
     return;
   }
   // Counting sort on the first index, then each (short) run of pairs sharing
   // it by insertion sort: O(n + pairs), where a full sort would cost
-  // O(pairs log pairs) and dominate the broadphase.
-  first_count_.assign(n + 1, 0);
-  for (const PairKey k : found_) ++first_count_[pair_first(k)];
-  for (std::size_t i = 1; i <= n; ++i) first_count_[i] += first_count_[i - 1];
-  pairs_.resize(found_.size());
-  // Placed from the last found backwards, so that each run keeps the order
+  // O(pairs log pairs) and dominate the broadphase. Each run keeps the order
   // the pairs were found in, which is mostly increasing (a cell's bodies are
   // in index order): insertion sort is then nearly free, where a reversed
   // run cost O(len²) (1 000 blocks on one spot: 0.1 s a pass).
-  for (auto k = found_.rbegin(); k != found_.rend(); ++k) pairs_[--first_count_[pair_first(*k)]] = *k;
+  pairs_.resize(found_.size());
+  struct ToPairs {
+    static constexpr bool scattered() { return false; }
+    const PairKey* found;
+    PairKey* pairs;
+    std::uint32_t key(std::size_t k) const { return pair_first(found[k]); }
+    void ahead(std::uint32_t) const {}
+    void put(std::size_t k, std::uint32_t, std::uint32_t slot) const { pairs[slot] = found[k]; }
+  };
+  counting_sort(w, found_.size(), n, first_count_, [&](int t) -> auto& { return part_of(parts_, t, w.threads()).counts; },
+                ToPairs{found_.data(), pairs_.data()});
   // first_count_[i] is now where the pairs of first index i begin.
-  for (std::size_t i = 0; i < n; ++i) {
-    PairKey* const run = pairs_.data() + first_count_[i];
-    const std::size_t len = first_count_[i + 1] - first_count_[i];
-    for (std::size_t a = 1; a < len; ++a) {
-      const PairKey k = run[a];
-      std::size_t b = a;
-      for (; b > 0 && run[b - 1] > k; --b) run[b] = run[b - 1];
-      run[b] = k;
+  w.for_ranges(n, min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      PairKey* const run = pairs_.data() + first_count_[i];
+      const std::size_t len = first_count_[i + 1] - first_count_[i];
+      for (std::size_t a = 1; a < len; ++a) {
+        const PairKey k = run[a];
+        std::size_t b = a;
+        for (; b > 0 && run[b - 1] > k; --b) run[b] = run[b - 1];
+        run[b] = k;
+      }
     }
-  }
+  });
 }
 
 void UniformGrid::move(std::uint32_t i, const FloatBox& box) {

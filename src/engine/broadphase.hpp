@@ -19,6 +19,7 @@
 
 #include <bit>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -28,6 +29,7 @@
 
 #include "course/utils/rect.hpp"
 #include "course/utils/vect.hpp"
+#include "engine/workers.hpp"
 
 namespace physics {
 
@@ -128,8 +130,9 @@ class UniformGrid {
   // Finds every pair of overlapping boxes except pairs of two fixed bodies
   // (two infinite masses never collide, so they never enter the list).
   // Boxes with a NaN bound (a body at NaN) overlap nothing.
-  // O(n + pairs); the result is in pairs(), sorted.
-  void build(std::span<const FloatBox> boxes, std::span<const std::uint8_t> fixed);
+  // O(n + pairs); the result is in pairs(), sorted. The same grid and pairs
+  // on any team (`workers`: its passes split over the threads).
+  void build(std::span<const FloatBox> boxes, std::span<const std::uint8_t> fixed, Workers* workers = nullptr);
   const std::vector<PairKey>& pairs() const { return pairs_; }
   // The cells of build() without its pairs (pairs() is left empty), for
   // queries that only ask which boxes lie somewhere (engine/query.hpp).
@@ -193,17 +196,29 @@ class UniformGrid {
     double max_extent;              // the widest one's larger side
     std::size_t count;
   };
-  SmallBoxes classify(std::span<const FloatBox> boxes);
+  struct RangeBoxes {  // classify()'s findings in a range of the boxes (none yet: a small box's min is finite)
+    float lo_x = std::numeric_limits<float>::infinity(), lo_y = std::numeric_limits<float>::infinity();
+    float hi_x = -std::numeric_limits<float>::infinity(), hi_y = -std::numeric_limits<float>::infinity();
+    double max_extent = 0.0;
+    std::size_t count = 0;
+    void add(const RangeBoxes& other);
+  };
+  SmallBoxes classify(std::span<const FloatBox> boxes, Workers& w);
+  RangeBoxes classify_range(std::span<const FloatBox> boxes, std::size_t begin, std::size_t end, double threshold,
+                            std::vector<std::uint32_t>& large);
   void size_grid(const SmallBoxes& small);
-  void fill_cells(std::span<const FloatBox> boxes, std::size_t small);
-  void pairs_in_grid();
+  void fill_cells(std::span<const FloatBox> boxes, std::size_t small, Workers& w);
+  void pairs_in_grid(Workers& w);
+  void pairs_of_entries(std::uint32_t from, std::uint32_t to, std::vector<PairKey>& out) const;
   struct RunTest;
-  void pairs_in_run(const RunTest& test, const Entry* entry, std::uint32_t a, std::uint32_t b, std::uint32_t e);
-  void emit_lanes(std::uint32_t body, const Entry* from, std::uint32_t hits);  // body with from[k], k in hits
+  void pairs_in_run(std::vector<PairKey>& out, const RunTest& test, const Entry* entry, std::uint32_t a,
+                    std::uint32_t b, std::uint32_t e) const;
+  // body with from[k], k in hits
+  void emit_lanes(std::vector<PairKey>& out, std::uint32_t body, const Entry* from, std::uint32_t hits) const;
   static constexpr std::size_t entry_padding = 4;  // entries read past the last (RunTest::lanes)
   void pairs_of_large();
-  void emit(std::uint32_t a, std::uint32_t b);
-  void sort_pairs(std::size_t n);
+  void emit(std::vector<PairKey>& out, std::uint32_t a, std::uint32_t b) const;
+  void sort_pairs(std::size_t n, Workers& w);
 
   // Geometry.
   double x0_ = 0, y0_ = 0, cell_ = 1, inv_cell_ = 1;
@@ -218,6 +233,15 @@ class UniformGrid {
   std::vector<std::int32_t> large_slot_;   // per body: position in large_, or -1
   std::vector<std::uint64_t> large_order_; // scratch: (min_x, l) keys, sorted
   std::vector<std::uint8_t> fixed_;        // per body, copied from build()
+  // Scratch of build()'s passes on a team, per range but the first (whose
+  // are the tables above): its large bodies, its counts in the counting
+  // sorts, its pairs. One member: each costs bytes in every move of a grid,
+  // which the browser's build, without a team, would carry for nothing.
+  struct RangePart {
+    std::vector<std::uint32_t> large, counts;
+    std::vector<PairKey> found;
+  };
+  std::vector<RangePart> parts_;
 
   // Bodies moved after build(), per cell (linked lists, reset at each build).
   std::vector<std::int32_t> moved_head_;

@@ -381,19 +381,13 @@ void BroadPhase::pairs_of_candidates(std::span<const EntityId> entities, std::ve
   const std::vector<PairKey>& candidates = grid_.pairs();
   out.clear();
   out.reserve(candidates.size());
-  range_pairs_.resize(static_cast<std::size_t>(w.threads()));
-  for (auto& part : range_pairs_) part.clear();
-  w.for_ranges(candidates.size(), min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
-    std::vector<Pair>& part = t == 0 ? out : range_pairs_[static_cast<std::size_t>(t)];
-    for (std::size_t c = begin; c < end; ++c) {
-      const std::uint32_t i = pair_first(candidates[c]), j = pair_second(candidates[c]);
-      if (touch(current_[i], current_[j])) part.push_back({entities[i], entities[j]});
-    }
-  });
-  for (int t = 1; t < w.threads(); ++t) {
-    const std::vector<Pair>& part = range_pairs_[static_cast<std::size_t>(t)];
-    out.insert(out.end(), part.begin(), part.end());
-  }
+  w.append_over_ranges(candidates.size(), min_parallel_items, out, [&](int t) -> auto& { return part_of(range_pairs_, t, w.threads()); },
+                       [&](int, std::size_t begin, std::size_t end, std::vector<Pair>& part) {
+                         for (std::size_t c = begin; c < end; ++c) {
+                           const std::uint32_t i = pair_first(candidates[c]), j = pair_second(candidates[c]);
+                           if (touch(current_[i], current_[j])) part.push_back({entities[i], entities[j]});
+                         }
+                       });
 }
 
 // The pairs when every body's box lies in its fat box and in the box the
@@ -491,7 +485,7 @@ void BroadPhase::fat_rebuild(const Components& k, std::span<const EntityId> enti
       fixed_[i] = !std::isfinite(k.mass[entities[i]]);
     }
   });
-  grid_.build(boxes_, fixed_);
+  grid_.build(boxes_, fixed_, &w);
   entities_.assign(entities.begin(), entities.end());
   if (keeps_unchanged) {  // (pairs_near_last() and find_again(), not in the browser's build)
     index_of_.resize(k.size());

@@ -22,6 +22,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 namespace physics {
 
@@ -88,6 +89,26 @@ class Workers {
     for (const std::uint8_t b : bits) all |= b;
     return all;
   }
+  // for_ranges, where body(t, begin, end, list) appends its range's items
+  // to `list`: they reach `out` in range order (the first range's appended
+  // there, the others' in lists of their own, then appended), the list one
+  // range would have made. part(t) (for t >= 1, asked on the calling thread
+  // before the ranges run, only when [0, n) is split) is range t's list, a
+  // std::vector<T>& the caller keeps for its memory.
+  template <class T, class Part, class Body>
+  void append_over_ranges(std::size_t n, std::size_t min_items, std::vector<T>& out, Part&& part, Body&& body) {
+    if constexpr (has_threads) {
+      if (splits(n, min_items)) {
+        std::array<std::vector<T>*, max_threads> list{&out};
+        for (int t = 1; t < threads(); ++t) list[static_cast<std::size_t>(t)] = &part(t), list[static_cast<std::size_t>(t)]->clear();
+        run([&](int t) { body(t, range_start(n, t), range_start(n, t + 1), *list[static_cast<std::size_t>(t)]); });
+        for (int t = 1; t < threads(); ++t)
+          out.insert(out.end(), list[static_cast<std::size_t>(t)]->begin(), list[static_cast<std::size_t>(t)]->end());
+        return;
+      }
+    }
+    body(0, std::size_t{0}, n, out);
+  }
   // Whether for_ranges(n, min_items) splits [0, n) over the team.
   bool splits(std::size_t n, std::size_t min_items) const { return threads() > 1 && n >= min_items; }
   // Where range t of for_ranges(n) starts (range threads() starts at n).
@@ -102,6 +123,16 @@ class Workers {
   int threads_ = 1;
   std::unique_ptr<Team> team_;
 };
+
+// parts[t] of a caller's per-range scratch (append_over_ranges' part(t)),
+// with `parts` grown to a team of `threads` first: every range's element
+// then stays where it is while the others are asked for. Not from the
+// ranges' tasks.
+template <class T>
+T& part_of(std::vector<T>& parts, int t, int threads) {
+  if (parts.size() < static_cast<std::size_t>(threads)) parts.resize(static_cast<std::size_t>(threads));
+  return parts[static_cast<std::size_t>(t)];
+}
 
 // *w, or a team of one when there is none.
 inline Workers& workers_or_one(Workers* w) {
