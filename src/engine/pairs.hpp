@@ -146,7 +146,7 @@ class BroadPhase {
   bool row_refresh(const Components& k, std::uint32_t i);
   // find().
   void fat_rebuild(const Components& k, std::span<const EntityId> entities, double h, Workers& w);
-  bool same_bodies(std::span<const EntityId> entities) const;  // the grid's, fat_built_
+  bool same_bodies(std::span<const EntityId> entities, Workers& w) const;  // the grid's, fat_built_
   void clear_unheld(const Workers& w);
   template <class Index>
   std::uint8_t renew(const Components& k, std::size_t count, Index index, double h, double reach,
@@ -154,7 +154,7 @@ class BroadPhase {
   void finish(const Components& k, std::span<const EntityId> entities, double h, double reach, std::vector<Pair>& out,
               PairRule rule, Workers& w, std::uint8_t flags, bool known);
   void pairs_of_candidates(std::span<const EntityId> entities, std::vector<Pair>& out, Workers& w);
-  void pairs_near_last(std::vector<Pair>& out);
+  void pairs_near_last(std::vector<Pair>& out, Workers& w);
   // Past one body in this many of a range whose box left its last one, the
   // candidates are tested instead (a grid query costs tens of candidate tests).
   static constexpr std::size_t unheld_share = 32;

@@ -154,7 +154,10 @@ void World::before_forces() {
     const std::vector<double>& mu = components.friction;
     const bool ccd = params.ccd || params.solver == Solver::automatic;
     // (The browser's build, short of room, always copies them.)
-    const bool friction = !keeps_unchanged || std::any_of(mu.begin(), mu.end(), [](double f) { return f != 0.0; });
+    const bool friction = !keeps_unchanged || workers.or_over_ranges(mu.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+      return static_cast<std::uint8_t>(std::any_of(mu.begin() + static_cast<std::ptrdiff_t>(begin), mu.begin() + static_cast<std::ptrdiff_t>(end),
+                                                   [](double f) { return f != 0.0; }));
+    }) != 0;
     slide_.start(components, ccd || friction);
   }
 }
