@@ -32,6 +32,29 @@ std::vector<PairKey> brute_pairs(const std::vector<FloatBox>& boxes, const std::
 
 using physics::test::same_bits;
 
+// Random boxes for the grid's tests: n boxes with corners in [lo, world)²
+// and sides in [0.5, side), a share `walls` of them `world` wide and
+// wall_height high (the large list), and about one in a hundred each with a
+// NaN bound, an infinite one, or an earlier box's bounds; a fifth fixed.
+struct BoxMix {
+  double lo, world, side, walls, wall_height;
+};
+void random_boxes(Random& rng, int n, const BoxMix& mix, std::vector<FloatBox>& boxes, std::vector<std::uint8_t>& fixed) {
+  for (int i = 0; i < n; ++i) {
+    const double kind = rng.uniform(0, 1);
+    double w = rng.uniform(0.5, mix.side), h = rng.uniform(0.5, mix.side);
+    if (kind < mix.walls) w = mix.world, h = mix.wall_height;
+    const Vector p{rng.uniform(mix.lo, mix.world), rng.uniform(mix.lo, mix.world)};
+    FloatBox b{static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.x + w), static_cast<float>(p.y + h)};
+    if (kind > 0.99) b.min_x = std::numeric_limits<float>::quiet_NaN();
+    if (kind > 0.98 && kind <= 0.99) b.max_x = std::numeric_limits<float>::infinity();
+    if (kind > 0.97 && kind <= 0.98 && !boxes.empty()) b = boxes[static_cast<std::size_t>(rng.uniform_int(0, i - 1))];
+    boxes.push_back(b);
+    fixed.push_back(rng.uniform(0, 1) < 0.2);
+  }
+}
+
+
 // A random scene of `bodies` blocks in a walled region; `spread` < 1 packs
 // them into the top-left part of it so they start overlapping.
 struct Spec {
@@ -171,19 +194,7 @@ BOOST_AUTO_TEST_CASE(the_grid_finds_exactly_the_overlapping_pairs_in_loop_order)
     const double world = rng.uniform(50, 3000);
     std::vector<FloatBox> boxes;
     std::vector<std::uint8_t> fixed;
-    for (int i = 0; i < n; ++i) {
-      const double kind = rng.uniform(0, 1);
-      double w = rng.uniform(0.5, 30), h = rng.uniform(0.5, 30);
-      if (kind < 0.03) w = world, h = 20;  // walls and floors: kept out of the grid
-      const Vector p{rng.uniform(-world / 2, world), rng.uniform(-world / 2, world)};
-      FloatBox b{static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.x + w),
-             static_cast<float>(p.y + h)};
-      if (kind > 0.99) b.min_x = std::numeric_limits<float>::quiet_NaN();
-      if (kind > 0.98 && kind <= 0.99) b.max_x = std::numeric_limits<float>::infinity();
-      if (kind > 0.97 && kind <= 0.98 && !boxes.empty()) b = boxes[static_cast<std::size_t>(rng.uniform_int(0, i - 1))];
-      boxes.push_back(b);
-      fixed.push_back(rng.uniform(0, 1) < 0.2);
-    }
+    random_boxes(rng, n, {-world / 2, world, 30, 0.03, 20}, boxes, fixed);
     UniformGrid grid;
     grid.build(boxes, fixed);
     const auto expected = brute_pairs(boxes, fixed);
@@ -245,29 +256,20 @@ BOOST_AUTO_TEST_CASE(large_boxes_on_both_sides_of_zero_find_the_same_pairs_as_al
 }
 
 // The grid's passes on a team (more boxes than min_parallel_items, so that
-// each pass splits into ranges): the same pairs in the same order as on one
-// thread and as testing every pair, the same large bodies and cells, and the
-// same answers to queries after moves. Crowded boxes with walls (the pairs'
-// counting sort) and sparse small ones (their comparison sort); each grid
-// built twice (the second time on the ranges' scratch of the first).
+// each pass splits into ranges, of unequal lengths): the same pairs in the
+// same order as on one thread and as testing every pair, the same large
+// bodies and cells, and the same answers to queries after moves, one of them
+// over the whole world (every cell's bodies, in their order). Crowded boxes
+// with walls (the pairs' counting sort) and sparse small ones (their
+// comparison sort); each grid built twice (the second time on the ranges'
+// scratch of the first).
 BOOST_AUTO_TEST_CASE(the_grid_on_a_team_finds_the_pairs_of_one_thread) {
   for (const bool crowded : {true, false}) {
     Random rng(crowded ? 3 : 4);
     const double world = crowded ? 600 : 4000;
     std::vector<FloatBox> boxes;
     std::vector<std::uint8_t> fixed;
-    for (int i = 0; i < 6000; ++i) {
-      const double kind = rng.uniform(0, 1);
-      double w = crowded ? rng.uniform(0.5, 20) : rng.uniform(0.5, 3), h = crowded ? rng.uniform(0.5, 20) : rng.uniform(0.5, 3);
-      if (crowded && kind < 0.03) w = world, h = 10;  // walls: the large list
-      const Vector p{rng.uniform(0, world), rng.uniform(0, world)};
-      FloatBox b{static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.x + w), static_cast<float>(p.y + h)};
-      if (kind > 0.99) b.min_x = std::numeric_limits<float>::quiet_NaN();
-      if (kind > 0.98 && kind <= 0.99) b.max_y = std::numeric_limits<float>::infinity();
-      if (kind > 0.97 && kind <= 0.98 && !boxes.empty()) b = boxes[static_cast<std::size_t>(rng.uniform_int(0, i - 1))];
-      boxes.push_back(b);
-      fixed.push_back(rng.uniform(0, 1) < 0.2);
-    }
+    random_boxes(rng, 6007, {0, world, crowded ? 20.0 : 3.0, crowded ? 0.03 : 0.0, 10}, boxes, fixed);
     UniformGrid one;
     one.build(boxes, fixed);
     const auto expected = brute_pairs(boxes, fixed);
@@ -292,9 +294,10 @@ BOOST_AUTO_TEST_CASE(the_grid_on_a_team_finds_the_pairs_of_one_thread) {
         const FloatBox b{x, y, x + 2.0f, y + 2.0f};
         moved.move(i, b), grid.move(i, b);
       }
-      for (int q = 0; q < 200; ++q) {
+      for (int q = 0; q <= 200; ++q) {
         const auto x = static_cast<float>(rng.uniform(0, world)), y = static_cast<float>(rng.uniform(0, world));
-        const FloatBox box{x, y, x + 40.0f, y + 40.0f};
+        const auto whole = static_cast<float>(world);
+        const FloatBox box = q == 200 ? FloatBox{0.0f, 0.0f, whole, whole} : FloatBox{x, y, x + 40.0f, y + 40.0f};
         std::vector<std::uint32_t> a, b;
         moved.query(box, [&](std::uint32_t j) { a.push_back(j); });
         grid.query(box, [&](std::uint32_t j) { b.push_back(j); });

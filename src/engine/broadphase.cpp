@@ -87,8 +87,8 @@ constexpr std::uint32_t no_bucket = std::numeric_limits<std::uint32_t>::max();
 // whose counters fit in the second-level cache: there the asking cost 60 %
 // more instructions than it saved.)
 template <class More, class Target>
-void counting_sort(Workers& w, std::size_t n, std::size_t buckets, std::vector<std::uint32_t>& start, More&& more_tables,
-                   Target to) {
+void counting_sort(Workers& w, std::size_t n, std::size_t buckets, std::vector<std::uint32_t>& start,
+                   More&& more_tables, Target to) {
   constexpr std::size_t ahead = 16;
   constexpr bool scattered = Target::scattered();
   // (Each key read once into a local: the counters' stores may alias it.)
@@ -260,7 +260,7 @@ UniformGrid::SmallBoxes UniformGrid::classify(std::span<const FloatBox> boxes, W
     split = w.splits(n, min_parallel_items);
     if (split) {
       std::array<RangeBoxes, max_threads> parts{};
-      w.append_over_ranges(n, min_parallel_items, large_, [&](int t) -> auto& { return part_of(parts_, t, w.threads()).large; },
+      w.append_over_ranges(n, min_parallel_items, large_, [&](int t) -> auto& { return part(t, w).large; },
                            [&](int t, std::size_t begin, std::size_t end, std::vector<std::uint32_t>& large) {
                              parts[static_cast<std::size_t>(t)] = classify_range(boxes, begin, end, threshold, large);
                            });
@@ -306,8 +306,9 @@ UniformGrid::RangeBoxes UniformGrid::classify_range(std::span<const FloatBox> bo
   return {lo_x, lo_y, hi_x, hi_y, max_extent, count};
 }
 
-// Bounds, widest box and counts are the same in any order (no NaN among
-// small boxes).
+// Merged in range order, with the comparisons of classify_range(): the
+// bounds one range would have found (-0 and +0 included; no small box has a
+// NaN bound), its widest box and its count.
 void UniformGrid::RangeBoxes::add(const RangeBoxes& o) {
   lo_x = o.lo_x < lo_x ? o.lo_x : lo_x, lo_y = o.lo_y < lo_y ? o.lo_y : lo_y;
   hi_x = o.hi_x > hi_x ? o.hi_x : hi_x, hi_y = o.hi_y > hi_y ? o.hi_y : hi_y;
@@ -338,7 +339,7 @@ void UniformGrid::fill_cells(std::span<const FloatBox> boxes, std::size_t small,
       entry[slot] = Entry{boxes[i], static_cast<std::uint32_t>(i), c};
     }
   };
-  counting_sort(w, n, cells, cell_start_, [&](int t) -> auto& { return part_of(parts_, t, w.threads()).counts; },
+  counting_sort(w, n, cells, cell_start_, [&](int t) -> auto& { return part(t, w).counts; },
                 ToEntries{boxes, cell, entries_.data()});
   // No moved bodies yet: clear the lists the last pass left.
   for (const std::uint32_t c : moved_cells_)
@@ -352,7 +353,7 @@ void UniformGrid::fill_cells(std::span<const FloatBox> boxes, std::size_t small,
 void UniformGrid::pairs_in_grid(Workers& w) {
   const std::uint32_t count = cell_start_[table_size()];
   w.append_over_ranges(count, min_parallel_items, found_,
-                       [&](int t) -> auto& { return part_of(parts_, t, w.threads()).found; },
+                       [&](int t) -> auto& { return part(t, w).found; },
                        [&](int, std::size_t begin, std::size_t end, std::vector<PairKey>& out) {
                          pairs_of_entries(static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(end), out);
                        });
@@ -406,7 +407,8 @@ void UniformGrid::pairs_of_entries(std::uint32_t from, std::uint32_t to, std::ve
   } while (b < e);
 }
 
-void UniformGrid::emit_lanes(std::vector<PairKey>& out, std::uint32_t body, const Entry* from, std::uint32_t hits) const {
+void UniformGrid::emit_lanes(std::vector<PairKey>& out, std::uint32_t body, const Entry* from,
+                             std::uint32_t hits) const {
   for (; hits; hits &= hits - 1) emit(out, body, from[std::countr_zero(hits)].index);
 }
 #else
@@ -451,7 +453,7 @@ void UniformGrid::sort_pairs(std::size_t n, Workers& w) {
   // the counting sort's pass over every body. Both give the same order
   // (each pair is found once).
   if (!sorts_by_counting || found_.size() * 32 < n) {
-    pairs_.swap(found_);  // (found_ is cleared by the next build)
+    pairs_.swap(found_);  // (found_ is read by build() alone, which clears it first, as index() does)
     std::sort(pairs_.begin(), pairs_.end());
     return;
   }
@@ -470,7 +472,7 @@ void UniformGrid::sort_pairs(std::size_t n, Workers& w) {
     void ahead(std::uint32_t) const {}
     void put(std::size_t k, std::uint32_t, std::uint32_t slot) const { pairs[slot] = found[k]; }
   };
-  counting_sort(w, found_.size(), n, first_count_, [&](int t) -> auto& { return part_of(parts_, t, w.threads()).counts; },
+  counting_sort(w, found_.size(), n, first_count_, [&](int t) -> auto& { return part(t, w).counts; },
                 ToPairs{found_.data(), pairs_.data()});
   // first_count_[i] is now where the pairs of first index i begin.
   w.for_ranges(n, min_parallel_items, [&](int, std::size_t begin, std::size_t end) {

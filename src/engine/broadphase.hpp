@@ -162,7 +162,7 @@ class UniformGrid {
   struct Entry {
     FloatBox box;
     std::uint32_t index;
-    std::uint32_t cell;  // its cell (pairs_in_grid walks the entries, not the cells)
+    std::uint32_t cell;  // its cell (pairs_of_entries walks the entries, not the cells)
   };
   struct Moved {
     Entry entry;
@@ -242,6 +242,7 @@ class UniformGrid {
     std::vector<PairKey> found;
   };
   std::vector<RangePart> parts_;
+  RangePart& part(int t, const Workers& w) { return part_of(parts_, t, w.threads()); }  // (not from a range's task)
 
   // Bodies moved after build(), per cell (linked lists, reset at each build).
   std::vector<std::int32_t> moved_head_;

@@ -295,10 +295,10 @@ void BroadPhase::find_again(const Components& k, std::span<const EntityId> entit
   const auto listed = [&](EntityId e) {
     return e < index_of_.size() && index_of_[e] < entities_.size() && entities_[index_of_[e]] == e;
   };
-  const bool known = keeps_unchanged && found_valid_ && !k.any_rules() && h == last_h_ && reach == last_reach_ &&
-                     same_bodies(entities, workers_or_one(workers)) && std::all_of(changed.begin(), changed.end(), listed);
-  if (!known) return find(k, entities, h, reach, out, rule, workers);
   Workers& w = workers_or_one(workers);
+  const bool known = keeps_unchanged && found_valid_ && !k.any_rules() && h == last_h_ && reach == last_reach_ &&
+                     same_bodies(entities, w) && std::all_of(changed.begin(), changed.end(), listed);
+  if (!known) return find(k, entities, h, reach, out, rule, workers);
   ++finds_;
   clear_unheld(w);
   const std::size_t few = entities.size() / unheld_share / static_cast<std::size_t>(w.threads());
@@ -387,7 +387,8 @@ void BroadPhase::pairs_of_candidates(std::span<const EntityId> entities, std::ve
   const std::vector<PairKey>& candidates = grid_.pairs();
   out.clear();
   out.reserve(candidates.size());
-  w.append_over_ranges(candidates.size(), min_parallel_items, out, [&](int t) -> auto& { return part_of(range_pairs_, t, w.threads()); },
+  const auto part = [&](int t) -> auto& { return part_of(range_pairs_, t, w.threads()); };
+  w.append_over_ranges(candidates.size(), min_parallel_items, out, part,
                        [&](int, std::size_t begin, std::size_t end, std::vector<Pair>& part) {
                          for (std::size_t c = begin; c < end; ++c) {
                            const std::uint32_t i = pair_first(candidates[c]), j = pair_second(candidates[c]);

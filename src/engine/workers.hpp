@@ -94,13 +94,16 @@ class Workers {
   // there, the others' in lists of their own, then appended), the list one
   // range would have made. part(t) (for t >= 1, asked on the calling thread
   // before the ranges run, only when [0, n) is split) is range t's list, a
-  // std::vector<T>& the caller keeps for its memory.
+  // std::vector<T>& the caller keeps for its memory; it is cleared first.
   template <class T, class Part, class Body>
   void append_over_ranges(std::size_t n, std::size_t min_items, std::vector<T>& out, Part&& part, Body&& body) {
     if constexpr (has_threads) {
       if (splits(n, min_items)) {
         std::array<std::vector<T>*, max_threads> list{&out};
-        for (int t = 1; t < threads(); ++t) list[static_cast<std::size_t>(t)] = &part(t), list[static_cast<std::size_t>(t)]->clear();
+        for (int t = 1; t < threads(); ++t) {
+          list[static_cast<std::size_t>(t)] = &part(t);
+          list[static_cast<std::size_t>(t)]->clear();
+        }
         run([&](int t) { body(t, range_start(n, t), range_start(n, t + 1), *list[static_cast<std::size_t>(t)]); });
         for (int t = 1; t < threads(); ++t)
           out.insert(out.end(), list[static_cast<std::size_t>(t)]->begin(), list[static_cast<std::size_t>(t)]->end());
