@@ -235,8 +235,8 @@ BoxSize size_of(const FloatBox& b) {
 // gathered in the same pass (one read of the boxes fewer: at a million
 // bodies the grid's passes are bound by memory). The mean size is summed on
 // one thread (a sum in another order would round otherwise); the rest is
-// per range: bounds and counts whatever their order, the large bodies'
-// lists joined in range order.
+// per range, merged in range order (RangeBoxes::add), the large bodies'
+// lists joined in that order.
 UniformGrid::SmallBoxes UniformGrid::classify(std::span<const FloatBox> boxes, Workers& w) {
   const std::size_t n = boxes.size();
   // large_slot_ is -1 but for the large bodies: reset those of the last pass.
@@ -264,7 +264,7 @@ UniformGrid::SmallBoxes UniformGrid::classify(std::span<const FloatBox> boxes, W
                            [&](int t, std::size_t begin, std::size_t end, std::vector<std::uint32_t>& large) {
                              parts[static_cast<std::size_t>(t)] = classify_range(boxes, begin, end, threshold, large);
                            });
-      for (const RangeBoxes& part : parts) all.add(part);  // (the ranges not run: none)
+      for (const RangeBoxes& range : parts) all.add(range);  // (the ranges not run: none)
     }
   }
   if (!split) all = classify_range(boxes, 0, n, threshold, large_);

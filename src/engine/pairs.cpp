@@ -387,8 +387,7 @@ void BroadPhase::pairs_of_candidates(std::span<const EntityId> entities, std::ve
   const std::vector<PairKey>& candidates = grid_.pairs();
   out.clear();
   out.reserve(candidates.size());
-  const auto part = [&](int t) -> auto& { return part_of(range_pairs_, t, w.threads()); };
-  w.append_over_ranges(candidates.size(), min_parallel_items, out, part,
+  w.append_over_ranges(candidates.size(), min_parallel_items, out, [&](int t) -> auto& { return range_list(t, w); },
                        [&](int, std::size_t begin, std::size_t end, std::vector<Pair>& part) {
                          for (std::size_t c = begin; c < end; ++c) {
                            const std::uint32_t i = pair_first(candidates[c]), j = pair_second(candidates[c]);
@@ -409,7 +408,7 @@ void BroadPhase::pairs_of_candidates(std::span<const EntityId> entities, std::ve
 void BroadPhase::pairs_near_last(std::vector<Pair>& out, Workers& w) {
   out.clear();
   w.append_over_ranges(last_found_.size(), min_parallel_items, out,
-                       [&](int t) -> auto& { return part_of(range_pairs_, t, w.threads()); },
+                       [&](int t) -> auto& { return range_list(t, w); },
                        [&](int, std::size_t begin, std::size_t end, std::vector<Pair>& part) {
                          for (std::size_t k = begin; k < end; ++k) {
                            const Pair p = last_found_[k];

@@ -189,6 +189,7 @@ class BroadPhase {
   std::uint64_t finds_ = 0;      // calls of find()
   std::vector<Bounds> scan_;     // find_selected()'s swept boxes
   std::vector<std::vector<Pair>> range_pairs_;  // find() with threads: each range's pairs, joined in order
+  std::vector<Pair>& range_list(int t, const Workers& w) { return part_of(range_pairs_, t, w.threads()); }
   // The last call's pairs: a resting pile's bodies sweep the same boxes
   // call after call, and testing the grid's candidates again would list the
   // same pairs (the pyramids: 7 % of a step); bodies that move within their

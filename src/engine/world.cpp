@@ -155,12 +155,14 @@ void World::before_forces() {
     const bool ccd = params.ccd || params.solver == Solver::automatic;
     // (The browser's build, short of room, always copies them.)
     const auto any_in = [&](int, std::size_t begin, std::size_t end) {
-      const auto from = mu.begin() + static_cast<std::ptrdiff_t>(begin), to = mu.begin() + static_cast<std::ptrdiff_t>(end);
+      const auto from = mu.begin() + static_cast<std::ptrdiff_t>(begin);
+      const auto to = mu.begin() + static_cast<std::ptrdiff_t>(end);
       return static_cast<std::uint8_t>(std::any_of(from, to, [](double f) { return f != 0.0; }));
     };
-    const bool friction =
-        !keeps_unchanged || workers.or_over_ranges(mu.size(), min_parallel_items, any_in) != 0;
-    slide_.start(components, ccd || friction);
+    // (CCD reads them anyway: then no scan.)
+    const bool needed =
+        ccd || !keeps_unchanged || workers.or_over_ranges(mu.size(), min_parallel_items, any_in) != 0;
+    slide_.start(components, needed);
   }
 }
 
