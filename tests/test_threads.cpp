@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "helpers.hpp"
+#include "api/registry.hpp"
 #include "engine/workers.hpp"
 #include "physics/physics.hpp"
 
@@ -70,7 +71,8 @@ BOOST_AUTO_TEST_CASE(a_bad_number_of_threads_is_refused) {
 // min_parallel_items) and squares raining onto it (impacts, bounces, apart
 // pairs), under `solver`, with friction on every other body (or none:
 // then each sweep's x rows and y rows run at once on two threads).
-std::vector<double> run_rain(int threads, SolverKind solver, int steps, bool friction = true) {
+// `then_threads` (when not 0): the world's team changes to that size after half the steps.
+std::vector<double> run_rain(int threads, SolverKind solver, int steps, bool friction = true, int then_threads = 0) {
   WorldDef def = default_world_def();
   def.gravity = {0.0, 0.001};
   def.solver = solver;
@@ -103,7 +105,10 @@ std::vector<double> run_rain(int threads, SolverKind solver, int steps, bool fri
       b.friction = friction && n % 2 ? 0.5 : 0.0;
       create_body(w, b);
     }
-  for (int s = 0; s < steps; ++s) step(w);
+  for (int s = 0; s < steps; ++s) {
+    if (then_threads != 0 && s == steps / 2) api::world(w).world->workers = Workers(then_threads);
+    step(w);
+  }
   std::vector<double> state;
   for (const BodyId id : bodies(w))
     for (const Vec2 v : {position(id), velocity(id)}) state.push_back(v.x), state.push_back(v.y);
@@ -132,6 +137,15 @@ BOOST_AUTO_TEST_CASE(without_friction_the_x_and_y_sweeps_side_by_side_give_the_s
   BOOST_TEST(one == bits(run_rain(2, SolverKind::stable, 60, false)));
   BOOST_TEST(one == bits(run_rain(3, SolverKind::stable, 60, false)));
   BOOST_TEST(one != bits(run_rain(1, SolverKind::stable, 60)));  // (friction changes the run)
+}
+
+// The bottom-up passes are split for the team they were made on
+// (split_pass()); on a team of another size, one thread does them level by
+// level, with the same bits.
+BOOST_AUTO_TEST_CASE(a_team_of_another_size_gives_the_same_bits) {
+  const auto one = bits(run_rain(1, SolverKind::stable, 60));
+  BOOST_TEST(one == bits(run_rain(2, SolverKind::stable, 60, true, 3)));
+  BOOST_TEST(one == bits(run_rain(3, SolverKind::stable, 60, true, 1)));
 }
 
 BOOST_AUTO_TEST_CASE(the_auto_mode_gives_the_same_bits_on_any_number_of_threads) {

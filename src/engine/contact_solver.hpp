@@ -157,6 +157,7 @@ struct ShockRow {
   std::uint32_t index;
   std::uint8_t axis;
   bool c_upper;
+  bool waits;  // on a team: the lower body is another thread's (split_pass())
 };
 
 // One bottom-up pass of shock propagation: the direction taken as down (the
@@ -165,9 +166,19 @@ struct ShockRow {
 // move are listed (the others would change nothing), each with what the
 // pass reads of it: a pile's pass reads this list in order and the
 // velocities and targets, not the solver's 64-byte contacts at random.
+//
+// On a team (split_pass()), each thread has the rows of the upper bodies it
+// owns, level by level (a level: the rows whose lower bodies have one depth
+// in the support graph): thread t's rows of level l are [parts[t * (levels
+// + 1) + l], parts[t * (levels + 1) + l + 1]). `parts` empty: one thread.
+// (A build without threads has neither.)
 struct ShockPass {
   Vector down;
   std::vector<ShockRow> rows;
+#if PHYSICS_HAS_THREADS
+  std::vector<std::uint32_t> parts{};
+  int threads = 1;
+#endif
 };
 
 // On x86-64, functions built for AVX2 beside the rest (friction_four:

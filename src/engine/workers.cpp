@@ -24,25 +24,29 @@ inline void pause() {}
 // How long a thread spins on a value before it sleeps on it: the stages of a
 // substep follow each other within microseconds, a futex wake takes tens.
 constexpr auto spin_time = std::chrono::microseconds(2000);
+constexpr unsigned pauses = 256;
+
+// What a spinning thread does after its i-th look (from 1): a pause, and
+// after `pauses` looks it gives its core away instead (with more threads
+// than free cores, the thread it waits for may need this one's: 2 000 runs
+// of a team of 3 on 2 cores took 8 s with pauses alone).
+inline void back_off(unsigned i) {
+  if (i < pauses) return pause();
+#if PHYSICS_HAS_THREADS
+  std::this_thread::yield();
+#endif
+}
 
 // Waits until `a` holds something other than `old`, and returns it. Spins
-// with pauses, then gives its core away between looks (with more threads
-// than free cores, the thread it waits for may need this one's: 2 000 runs
-// of a team of 3 on 2 cores took 8 s with pauses alone), then sleeps.
+// (back_off()), then sleeps.
 template <class T>
 T wait_change(const std::atomic<T>& a, T old) {
   const auto until = std::chrono::steady_clock::now() + spin_time;
   for (unsigned i = 1;; ++i) {
     const T now = a.load(std::memory_order_acquire);
     if (now != old) return now;
-    if (i < 256) {
-      pause();
-      continue;
-    }
-#if PHYSICS_HAS_THREADS
-    std::this_thread::yield();
-#endif
-    if (i % 16 == 0 && std::chrono::steady_clock::now() > until) break;
+    back_off(i);
+    if (i >= pauses && i % 16 == 0 && std::chrono::steady_clock::now() > until) break;
   }
   for (;;) {
     a.wait(old, std::memory_order_acquire);
@@ -122,6 +126,15 @@ void Workers::start(void (*task)(void*, int), void* context) {
   team.generation.notify_all();
   task(context, 0);
   for (int left = threads_ - 1; left != 0;) left = wait_change(team.pending, left);
+}
+
+// Spins only (back_off()): the threads go through the steps side by side,
+// so the waits are short, and nobody would wake a sleeper.
+void TeamProgress::wait_for_others(int t, int threads, std::uint64_t step) const {
+  for (int u = 0; u < threads; ++u) {
+    const std::atomic<std::uint64_t>& theirs = slots_[static_cast<std::size_t>(u)].step;
+    for (unsigned i = 1; u != t && theirs.load(std::memory_order_acquire) < step; ++i) back_off(i);
+  }
 }
 
 }  // namespace physics

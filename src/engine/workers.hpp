@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -125,6 +126,31 @@ class Workers {
   void start(void (*task)(void*, int), void* context);
   int threads_ = 1;
   std::unique_ptr<Team> team_;
+};
+
+// How far each thread of one task of the team (Workers::run) has gone
+// through numbered steps, for threads that wait for some of each other's
+// results (the bottom-up passes: a row whose lower body another thread
+// moves waits until that thread is done with the levels below the row's).
+// Each thread writes its own count, on a cache line of its own, and reads
+// the others' only when it waits. Threads that wait only for steps they
+// have reached themselves never wait for each other at once: each would
+// have reached more steps than the other.
+class TeamProgress {
+ public:
+  // Thread t has done every step before `step`.
+  void reach(int t, std::uint64_t step) {
+    slots_[static_cast<std::size_t>(t)].step.store(step, std::memory_order_release);
+  }
+  // Returns once each other thread of the team (of `threads`) has reached
+  // `step`, which thread t must have reached.
+  void wait_for_others(int t, int threads, std::uint64_t step) const;
+
+ private:
+  struct alignas(64) Slot {
+    std::atomic<std::uint64_t> step{0};
+  };
+  std::array<Slot, max_threads> slots_{};
 };
 
 // parts[t] of a caller's per-range scratch (append_over_ranges' part(t)),
