@@ -191,7 +191,10 @@ std::size_t renumber(std::span<Support> supports, std::vector<std::uint32_t>& id
 void split_pass(ShockPass& pass, const Components& k, std::span<const std::size_t> levels_start, int threads) {
   const auto team = static_cast<std::size_t>(threads);
   const Vector across{-pass.down.y, pass.down.x};
-  const auto key = [&](EntityId e) { return Vector::dot(k.position[e], across); };
+  const auto key = [&](EntityId e) {  // (a NaN as 0: the sort needs an order, and any cut gives the same bits)
+    const double d = Vector::dot(k.position[e], across);
+    return d == d ? d : 0.0;
+  };
   const auto upper = [](const ShockRow& r) { return r.c_upper ? r.c : r.b; };
   std::vector<double> keys;
   keys.reserve(pass.rows.size());
