@@ -3,6 +3,9 @@
 // big enough for every parallel loop to split (min_parallel_items).
 #include <bit>
 #include <cstdint>
+#include <new>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "helpers.hpp"
@@ -53,6 +56,30 @@ BOOST_AUTO_TEST_CASE(every_thread_runs_each_task_once) {
   BOOST_TEST(copy.threads() == 3);
   copy.run([&](int t) { ++runs[static_cast<std::size_t>(t)]; });
   BOOST_TEST(runs == std::vector<int>(3, 2001), boost::test_tools::per_element());
+}
+
+// What a task throws on any thread reaches run()'s caller once every thread
+// is done (the lowest thread's when several throw), and the team runs the
+// next task as before.
+BOOST_AUTO_TEST_CASE(a_task_that_throws_throws_from_run) {
+  Workers w(3);
+  BOOST_CHECK_THROW(w.run([](int t) {
+    if (t == 2) throw std::bad_alloc();
+  }), std::bad_alloc);
+  std::vector<int> done(3, 0);
+  try {
+    w.for_ranges(10000, 1, [&](int t, std::size_t, std::size_t) {
+      done[static_cast<std::size_t>(t)] = 1;
+      if (t >= 1) throw std::runtime_error(std::to_string(t));
+    });
+    BOOST_FAIL("for_ranges did not throw");
+  } catch (const std::runtime_error& e) {
+    BOOST_TEST(std::string(e.what()) == "1");
+  }
+  BOOST_TEST(done == std::vector<int>(3, 1), boost::test_tools::per_element());
+  std::vector<int> runs(3, 0);
+  for (int r = 0; r < 100; ++r) w.run([&](int t) { ++runs[static_cast<std::size_t>(t)]; });
+  BOOST_TEST(runs == std::vector<int>(3, 100), boost::test_tools::per_element());
 }
 
 BOOST_AUTO_TEST_CASE(a_bad_number_of_threads_is_refused) {

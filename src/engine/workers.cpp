@@ -1,7 +1,9 @@
 #include "engine/workers.hpp"
 
 #include <atomic>
+#include <algorithm>
 #include <chrono>
+#include <exception>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -65,13 +67,23 @@ struct Workers::Team {
   void* context = nullptr;
 #if PHYSICS_HAS_THREADS
   std::vector<std::thread> helpers;
+  std::vector<std::exception_ptr> errors;  // by thread: what its part of the task threw
+
+  // Thread t's part of the task; what it throws is kept for start() to throw.
+  void run_part(int t) {
+    try {
+      task(context, t);
+    } catch (...) {
+      errors[static_cast<std::size_t>(t)] = std::current_exception();
+    }
+  }
 
   void serve(int index) {
     std::uint32_t seen = 0;
     for (;;) {
       seen = wait_change(generation, seen);
       if (stop.load(std::memory_order_acquire)) return;
-      task(context, index);
+      run_part(index);
       if (pending.fetch_sub(1, std::memory_order_acq_rel) == 1) pending.notify_one();
     }
   }
@@ -86,6 +98,7 @@ Workers::Workers(int threads) : threads_(threads) {
 #if PHYSICS_HAS_THREADS
   if (threads == 1) return;
   team_ = std::make_unique<Team>();
+  team_->errors.resize(static_cast<std::size_t>(threads));
   for (int t = 1; t < threads; ++t) team_->helpers.emplace_back([team = team_.get(), t] { team->serve(t); });
 #endif
 }
@@ -119,13 +132,23 @@ Workers::~Workers() {
 }
 
 void Workers::start(void (*task)(void*, int), void* context) {
+#if PHYSICS_HAS_THREADS
   Team& team = *team_;
   team.task = task, team.context = context;
   team.pending.store(threads_ - 1, std::memory_order_relaxed);
   team.generation.fetch_add(1, std::memory_order_acq_rel);
   team.generation.notify_all();
-  task(context, 0);
+  team.run_part(0);
   for (int left = threads_ - 1; left != 0;) left = wait_change(team.pending, left);
+  // (The first thread's exception that there is; the others' dropped, for the next task.)
+  const auto thrown = std::find_if(team.errors.begin(), team.errors.end(), [](const std::exception_ptr& e) { return e != nullptr; });
+  if (thrown == team.errors.end()) return;
+  const std::exception_ptr first = *thrown;
+  std::fill(team.errors.begin(), team.errors.end(), nullptr);
+  std::rethrow_exception(first);
+#else
+  task(context, 0);
+#endif
 }
 
 // Spins only (back_off()): the threads go through the steps side by side,

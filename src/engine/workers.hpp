@@ -56,7 +56,11 @@ class Workers {
   int threads() const { return has_threads ? threads_ : 1; }
 
   // Runs task(t) for every t in [0, threads()) at once, t = 0 on the calling
-  // thread, and returns when every one has returned. The task must not throw.
+  // thread, and returns when every one has returned. If the task throws on
+  // some threads (an allocation that fails in a range), run() throws the
+  // lowest t's exception once every thread has returned, and the team stays
+  // usable. (A task whose threads wait for each other, TeamProgress, must
+  // not throw: the others would wait on.)
   template <class Task>
   void run(Task&& task) {
     if constexpr (has_threads) {
