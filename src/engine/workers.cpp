@@ -1,10 +1,10 @@
 #include "engine/workers.hpp"
 
-#include <atomic>
 #include <algorithm>
+#include <atomic>
 #include <chrono>
-#include <exception>
 #include <cstdint>
+#include <exception>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -141,7 +141,8 @@ void Workers::start(void (*task)(void*, int), void* context) {
   team.run_part(0);
   for (int left = threads_ - 1; left != 0;) left = wait_change(team.pending, left);
   // (The first thread's exception that there is; the others' dropped, for the next task.)
-  const auto thrown = std::find_if(team.errors.begin(), team.errors.end(), [](const std::exception_ptr& e) { return e != nullptr; });
+  const auto thrown =
+      std::find_if(team.errors.begin(), team.errors.end(), [](const std::exception_ptr& e) { return e != nullptr; });
   if (thrown == team.errors.end()) return;
   const std::exception_ptr first = *thrown;
   std::fill(team.errors.begin(), team.errors.end(), nullptr);
