@@ -310,8 +310,9 @@ void run_pass(const ShockPass& pass, [[maybe_unused]] Workers* workers, Row&& ro
         const auto starts = part(static_cast<std::size_t>(t));
         for (std::size_t l = 0; l < levels; ++l) {
           progress.reach(t, l);
+          bool waited = false;  // (once the others are through the levels below, they stay so)
           for (std::uint32_t i = starts[l]; i < starts[l + 1]; ++i) {
-            if (rows[i].waits) progress.wait_for_others(t, pass.threads, l);
+            if (rows[i].waits && !waited) progress.wait_for_others(t, pass.threads, l), waited = true;
             row(rows[i]);
           }
         }
