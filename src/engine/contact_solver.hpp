@@ -393,8 +393,12 @@ class ContactSolver {
   std::vector<SolverBody> solver_bodies_;  // by slot (with friction)
   std::array<std::vector<AxisBody>, 2> axis_bodies_;  // by slot, x then y (without friction)
   std::vector<std::uint32_t> order_;       // contacts in the iterations' order
-  std::vector<std::uint32_t> by_axis_;     // order_'s x rows, then its y rows (row_order())
+  std::vector<std::uint32_t> by_axis_;     // order_'s x rows, then its y rows (row_order(), order_by_axis())
   std::size_t x_rows_ = 0;                 // how many of by_axis_ are x rows
+  std::size_t x_left_ = 0, x_right_ = 0;   // of those, how many below the cut, how many above (order_by_axis())
+  // How many x rows a world needs for them to be cut (order_by_axis()).
+  static constexpr std::size_t cut_x_rows = min_parallel_items;
+  void order_by_axis();
   std::vector<std::uint8_t> paired_;       // by row of by_axis_: it and the next may be solved together
   std::vector<std::uint8_t> friction_paired_;  // the same by row of order_ (with SSE2: group_friction_rows)
   // By row of order_, with friction: how many rows from it the friction sweep
