@@ -31,7 +31,7 @@ class Ours final : public Engine {
       d.color = {200, 200, 200, 255};
       d.mass = b.fixed ? physics::fixed_mass : 1.0;
       d.restitution = s.restitution;
-      d.velocity = {b.vx * px_per_m / 1000.0, -b.vy * px_per_m / 1000.0};
+      d.velocity = {b.vx * px_per_m / 1000.0, (0.0 - b.vy) * px_per_m / 1000.0};  // (not -vy: a wall at rest has +0, as in a game)
       d.friction = s.friction;
       ids_.push_back(physics::create_body(world_, d));
     }
