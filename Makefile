@@ -638,6 +638,12 @@ $(WEB)/%: web/%
 	@mkdir -p $(@D)
 	cp $< $@
 
+# The page's JavaScript as it loads it: the sources without their whole-line
+# comments (1.7 KB of the budget below; the sources keep them).
+$(WEB)/%.js: web/%.js
+	@mkdir -p $(@D)
+	sed -E '/^[[:space:]]*\/\//d' $< > $@
+
 # The scene files the page offers (and a game's next levels) and the
 # replays, copied beside it, and their list, which the page loads.
 $(WEB)/files.json: $(wildcard scenes/*.json) $(wildcard scenes/maps/*.tmj scenes/maps/*.tsj scenes/maps/*.ldtk) \

@@ -954,33 +954,36 @@ void ContactSolver::schedule(const Components& k, Vector g, bool kept_all) {
 // not cut (a cut would change their bits for nothing): the world's size
 // alone decides, not the team.
 void ContactSolver::order_by_axis() {
-  by_axis_.clear();
-  for (const std::uint32_t i : order_)
-    if (contacts_[i].axis < 2) by_axis_.push_back(i);
-  x_rows_ = by_axis_.size();
+  constexpr int all_x = 3, y = 4;  // what append() takes besides a side of the cut
+  std::uint32_t cut = 0;
+  const auto side = [&](std::uint32_t i) {  // 0 below the cut, 1 not, 2 across
+    const bool c = slot_of_[contacts_[i].c] < cut, b = slot_of_[contacts_[i].b] < cut;
+    return c != b ? 2 : c ? 0 : 1;
+  };
+  std::size_t n = 0;
+  by_axis_.resize(order_.size());
+  const auto append = [&](int rows) {
+    for (const std::uint32_t i : order_)
+      if (rows == y ? contacts_[i].axis >= 2 : contacts_[i].axis < 2 && (rows == all_x || side(i) == rows))
+        by_axis_[n++] = i;
+  };
+  append(all_x);
+  x_rows_ = n, x_left_ = 0, x_right_ = n;
   const std::size_t y_rows = order_.size() - x_rows_;
-  x_left_ = 0, x_right_ = x_rows_;
   if (x_rows_ >= cut_x_rows && x_rows_ > y_rows) {
-    std::vector<std::uint32_t>& scratch = level_count_;  // (schedule()'s, done with)
-    const auto higher = [&](std::uint32_t i) { return std::max(slot_of_[contacts_[i].c], slot_of_[contacts_[i].b]); };
-    scratch.resize(x_rows_);
-    std::transform(by_axis_.begin(), by_axis_.end(), scratch.begin(), higher);
-    const auto nth = scratch.begin() + static_cast<std::ptrdiff_t>((x_rows_ - y_rows) / 2);
-    std::nth_element(scratch.begin(), nth, scratch.end());
-    const std::uint32_t cut = *nth;
-    const auto side = [&](std::uint32_t i) {  // 0 below the cut, 1 not, 2 across
-      const bool c = slot_of_[contacts_[i].c] < cut, b = slot_of_[contacts_[i].b] < cut;
-      return c != b ? 2 : c ? 0 : 1;
-    };
-    std::array<std::size_t, 3> next{};
-    for (const std::uint32_t i : by_axis_) ++next[static_cast<std::size_t>(side(i))];
-    x_left_ = next[0], x_right_ = next[1];
-    next = {0, x_left_, x_left_ + x_right_};
-    for (const std::uint32_t i : by_axis_) scratch[next[static_cast<std::size_t>(side(i))]++] = i;
-    std::copy(scratch.begin(), scratch.end(), by_axis_.begin());
+    // The lowest slot below which the rows' higher slots leave as many rows as wanted (a count a slot).
+    std::vector<std::uint32_t>& rows_at = last_level_;  // (schedule()'s, all 0 again: done with)
+    for (std::size_t r = 0; r < x_rows_; ++r)
+      ++rows_at[std::max(slot_of_[contacts_[by_axis_[r]].c], slot_of_[contacts_[by_axis_[r]].b])];
+    for (std::size_t below = 0; below + rows_at[cut] <= (x_rows_ - y_rows) / 2;) below += rows_at[cut++];
+    n = 0;
+    append(0);
+    x_left_ = n;
+    append(1);
+    x_right_ = n - x_left_;
+    append(2);
   }
-  for (const std::uint32_t i : order_)
-    if (contacts_[i].axis >= 2) by_axis_.push_back(i);
+  append(y);
 }
 
 // The rows' order: without friction, a row reads and changes one velocity
@@ -1169,7 +1172,10 @@ void ContactSolver::iterate(const SolverSettings& s) {
       std::array<bool, 3> changed{};
       if (together) {
         w.run([&](int t) {  // (order_by_axis: the stretches each thread sweeps)
-          if (t == 0) changed[0] = sweep(0, 0, left) | sweep(1, x_rows_, y_rows);
+          if (t == 0) {
+            const bool first = sweep(0, 0, left);
+            changed[0] = sweep(1, x_rows_, y_rows) || first;
+          }
           if (t == 1) changed[1] = sweep(0, left, right);
         });
         changed[2] = sweep(0, left + right, across);
