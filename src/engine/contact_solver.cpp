@@ -921,7 +921,7 @@ void ContactSolver::schedule(const Components& k, Vector g, bool kept_all) {
   const auto same_level = [&](std::uint32_t a, std::uint32_t b) {
     return a / chunk == b / chunk && level_[a] == level_[b];
   };
-  const std::array<std::size_t, 3> ends{x_left_, x_left_ + x_right_, x_rows_};
+  const std::array<std::size_t, 3> ends{x_below_, x_below_ + x_above_, x_rows_};
   for (std::size_t i = 0; i + 1 < by_axis_.size(); ++i)
     paired_[i] = std::find(ends.begin(), ends.end(), i + 1) == ends.end() && same_level(by_axis_[i], by_axis_[i + 1]);
   if (!paired_.empty()) paired_.back() = 0;
@@ -968,7 +968,7 @@ void ContactSolver::order_by_axis() {
         by_axis_[n++] = i;
   };
   append(all_x);
-  x_rows_ = n, x_left_ = 0, x_right_ = n;
+  x_rows_ = n, x_below_ = 0, x_above_ = n;
   const std::size_t y_rows = order_.size() - x_rows_;
   if (x_rows_ >= cut_x_rows && x_rows_ > y_rows) {
     // The lowest slot below which the rows' higher slots leave as many rows as wanted (a count a slot).
@@ -978,9 +978,9 @@ void ContactSolver::order_by_axis() {
     for (std::size_t below = 0; below + rows_at[cut] <= (x_rows_ - y_rows) / 2;) below += rows_at[cut++];
     n = 0;
     append(0);
-    x_left_ = n;
+    x_below_ = n;
     append(1);
-    x_right_ = n - x_left_;
+    x_above_ = n - x_below_;
     append(2);
   }
   append(y);
@@ -1164,7 +1164,7 @@ void ContactSolver::iterate(const SolverSettings& s) {
       return sweep_axis(rows.subspan(from, count), lambdas.subspan(from, count), paired.subspan(from, count),
                         axis_bodies_[static_cast<std::size_t>(axis)]);
     };
-    const std::size_t left = x_left_, right = x_right_, across = x_rows_ - left - right;
+    const std::size_t below = x_below_, above = x_above_, across = x_rows_ - below - above;
     const std::size_t y_rows = rows.size() - x_rows_;
     Workers& w = workers_or_one(workers_);
     const bool together = has_threads && w.splits(rows.size(), min_parallel_items);
@@ -1173,12 +1173,12 @@ void ContactSolver::iterate(const SolverSettings& s) {
       if (together) {
         w.run([&](int t) {  // (order_by_axis: the stretches each thread sweeps)
           if (t == 0) {
-            const bool first = sweep(0, 0, left);
+            const bool first = sweep(0, 0, below);
             changed[0] = sweep(1, x_rows_, y_rows) || first;
           }
-          if (t == 1) changed[1] = sweep(0, left, right);
+          if (t == 1) changed[1] = sweep(0, below, above);
         });
-        changed[2] = sweep(0, left + right, across);
+        changed[2] = sweep(0, below + above, across);
       } else {
         changed = {sweep(0, 0, x_rows_), sweep(1, x_rows_, y_rows), false};
       }

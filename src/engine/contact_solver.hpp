@@ -395,7 +395,7 @@ class ContactSolver {
   std::vector<std::uint32_t> order_;       // contacts in the iterations' order
   std::vector<std::uint32_t> by_axis_;     // order_'s x rows, then its y rows (row_order(), order_by_axis())
   std::size_t x_rows_ = 0;                 // how many of by_axis_ are x rows
-  std::size_t x_left_ = 0, x_right_ = 0;   // of those, how many below the cut, how many above (order_by_axis())
+  std::size_t x_below_ = 0, x_above_ = 0;  // of those, how many below the cut, how many above (order_by_axis())
   // How many x rows a world needs for them to be cut (order_by_axis()).
   static constexpr std::size_t cut_x_rows = min_parallel_items;
   void order_by_axis();
