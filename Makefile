@@ -640,7 +640,7 @@ $(WEB)/%: web/%
 
 # The page's JavaScript as it loads it: the sources without their whole-line
 # comments (1.7 KB of the budget below; the sources keep them).
-$(WEB)/%.js: web/%.js
+$(WEB)/%.js: web/%.js Makefile
 	@mkdir -p $(@D)
 	sed -E '/^[[:space:]]*\/\//d' $< > $@
 

@@ -972,7 +972,7 @@ void ContactSolver::order_by_axis() {
   const std::size_t y_rows = order_.size() - x_rows_;
   if (x_rows_ >= cut_x_rows && x_rows_ > y_rows) {
     // The lowest slot below which the rows' higher slots leave as many rows as wanted (a count a slot).
-    std::vector<std::uint32_t>& rows_at = last_level_;  // (schedule()'s, all 0 again: done with)
+    std::vector<std::uint32_t>& rows_at = last_level_;  // (schedule()'s, all 0 again; it assigns it before each use)
     for (std::size_t r = 0; r < x_rows_; ++r)
       ++rows_at[std::max(slot_of_[contacts_[by_axis_[r]].c], slot_of_[contacts_[by_axis_[r]].b])];
     for (std::size_t below = 0; below + rows_at[cut] <= (x_rows_ - y_rows) / 2;) below += rows_at[cut++];
@@ -989,7 +989,7 @@ void ContactSolver::order_by_axis() {
 // The rows' order: without friction, a row reads and changes one velocity
 // component of each body (its normal's axis), so the x rows and the y rows
 // touch disjoint values and each group may run on its own (iterate<false>),
-// each in order_: the same bits.
+// each in order_ (a large world's x rows in stretches: order_by_axis).
 std::span<const std::uint32_t> ContactSolver::row_order() const { return friction_.empty() ? by_axis_ : order_; }
 
 // The hot copies for a relaxation: the bodies' velocities and inverse

@@ -214,6 +214,13 @@ class ContactSolver {
   std::vector<WarmImpulse> warm_impulses() const;
   void restore(std::span<const WarmImpulse> impulses);
 
+  // How the frictionless x rows of the last order were cut (order_by_axis()):
+  // all above and none across where they were not. For the tests.
+  struct XRowCut {
+    std::size_t below, above, across;
+  };
+  XRowCut x_row_cut() const { return {x_below_, x_above_, x_rows_ - x_below_ - x_above_}; }
+
   // Whether the friction sweep solves four rows at once with AVX2, where the
   // processor has it (else two with SSE2): the same bits either way. For the
   // tests, which compare the two; false where there is no such path.
@@ -378,7 +385,8 @@ class ContactSolver {
   PHYSICS_AVX2 static bool friction_four(const SolverRow* r, double* lambda, FrictionHot* f, SolverBody* bodies);
   // Without friction, one velocity component and the inverse mass: the x
   // rows and the y rows each read their own (axis_bodies_), so that two
-  // threads sweep them at once without sharing a cache line.
+  // threads sweep them at once without sharing a cache line (but where the
+  // x rows' two stretches meet, order_by_axis(): a line at most, no value).
   struct AxisBody {
     double v, w;
   };
