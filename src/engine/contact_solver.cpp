@@ -921,10 +921,9 @@ void ContactSolver::schedule(const Components& k, Vector g, bool kept_all) {
   const auto same_level = [&](std::uint32_t a, std::uint32_t b) {
     return a / chunk == b / chunk && level_[a] == level_[b];
   };
-  const std::array<std::size_t, 3> ends{x_below_, x_below_ + x_above_, x_rows_};
-  for (std::size_t i = 0; i + 1 < by_axis_.size(); ++i)
-    paired_[i] = std::find(ends.begin(), ends.end(), i + 1) == ends.end() && same_level(by_axis_[i], by_axis_[i + 1]);
-  if (!paired_.empty()) paired_.back() = 0;
+  for (std::size_t i = 0; i + 1 < by_axis_.size(); ++i) paired_[i] = same_level(by_axis_[i], by_axis_[i + 1]);
+  for (const std::size_t end : {x_below_, x_below_ + x_above_, x_rows_, by_axis_.size()})
+    if (end != 0) paired_[end - 1] = 0;
   // The same in order_ for the friction sweep: rows i and i + 1 of one chunk
   // and level with normals along the same component (schedule's sort puts a
   // level's x rows before its y rows).
