@@ -364,14 +364,14 @@ BOOST_AUTO_TEST_CASE(rows_without_friction_give_the_friction_loops_bits) {
 // (ContactSolver::friction_four), else two with SSE2 (friction_two): the same
 // bits. A pyramid with rain falling on it, both ways.
 BOOST_AUTO_TEST_CASE(four_friction_rows_side_by_side_give_the_bits_of_two) {
-  BOOST_TEST_MESSAGE("four rows with AVX2 on this processor: " << (ContactSolver::wide_rows ? "yes" : "no"));
+  BOOST_TEST_MESSAGE("four rows with AVX2 on this processor: " << (ContactSolver::has_wide_rows() ? "yes" : "no"));
   const auto run = [](bool wide) {
-    const bool was = ContactSolver::wide_rows;
-    ContactSolver::wide_rows = wide && was;
     Params p;
     p.solver = Solver::stable;
     p.gravity = {0, 0.001};
     World w = test::physics_world(p);
+    BOOST_TEST(w.contact_solver.wide_rows == ContactSolver::has_wide_rows());
+    w.contact_solver.wide_rows = wide && ContactSolver::has_wide_rows();
     const std::vector<EntityId> ids = pyramid_under_rain(w, 14, 16);
     for (EntityId e = 0; e < w.components.size(); ++e) w.components.friction[e] = 0.3 + 0.1 * (e % 4);
     std::vector<std::uint64_t> out;
@@ -382,7 +382,6 @@ BOOST_AUTO_TEST_CASE(four_friction_rows_side_by_side_give_the_bits_of_two) {
                                w.components.velocity[e].y})
           out.push_back(std::bit_cast<std::uint64_t>(x));
     }
-    ContactSolver::wide_rows = was;
     return out;
   };
   const auto two = run(false);

@@ -158,6 +158,14 @@ std::vector<std::size_t> bottom_up(std::size_t bodies, std::span<const Support> 
   return sorted;
 }
 
+// Body e's number in the order bodies are first met: ids[e] (by entity id,
+// `none` until met), `met` the bodies met so far, in that order. The slots
+// of schedule() and the support graph's numbers of renumber().
+inline std::uint32_t number_as_met(EntityId e, std::vector<std::uint32_t>& ids, std::vector<EntityId>& met) {
+  if (ids[e] == none) ids[e] = static_cast<std::uint32_t>(met.size()), met.push_back(e);
+  return ids[e];
+}
+
 // The supports' bodies renumbered 0, 1, ... as first met, so that the
 // support graph's tables are as long as the bodies in contacts, not as the
 // world (a falling rain of 100 000 whose lowest rows land: 1.6 MB set to
@@ -168,11 +176,8 @@ std::size_t renumber(std::span<Support> supports, std::vector<std::uint32_t>& id
                      std::size_t entities) {
   ids.resize(entities, none);
   met.clear();
-  const auto id = [&](EntityId e) {
-    if (ids[e] == none) ids[e] = static_cast<std::uint32_t>(met.size()), met.push_back(e);
-    return ids[e];
-  };
-  for (Support& ct : supports) ct.lower = id(ct.lower), ct.upper = id(ct.upper);
+  for (Support& ct : supports)
+    ct.lower = number_as_met(ct.lower, ids, met), ct.upper = number_as_met(ct.upper, ids, met);
   for (const EntityId e : met) ids[e] = none;
   return met.size();
 }
@@ -880,8 +885,7 @@ void ContactSolver::schedule(const Components& k, Vector g, bool kept_all) {
   slot_of_.resize(k.size(), none);
   slot_body_.clear();
   for (const ContactConstraint& ct : contacts_)
-    for (const EntityId e : {ct.c, ct.b})
-      if (slot_of_[e] == none) slot_of_[e] = static_cast<std::uint32_t>(slot_body_.size()), slot_body_.push_back(e);
+    number_as_met(ct.c, slot_of_, slot_body_), number_as_met(ct.b, slot_of_, slot_body_);
   constexpr std::size_t chunk = 4096;
   const std::size_t n = contacts_.size();
   last_level_.assign(slot_body_.size(), 0);  // per slot: the level after its last contact's, in this chunk
@@ -1263,11 +1267,15 @@ bool ContactSolver::sweep_friction() {
   return PHYSICS_WIDE_ROWS && wide_rows ? sweep_friction_rows<true>() : sweep_friction_rows<false>();
 }
 
+// Asked of the processor once per process.
+bool ContactSolver::has_wide_rows() {
 #if PHYSICS_WIDE_ROWS
-bool ContactSolver::wide_rows = __builtin_cpu_supports("avx2");
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  return avx2;
 #else
-bool ContactSolver::wide_rows = false;
+  return false;
 #endif
+}
 
 template <bool wide>
 bool ContactSolver::sweep_friction_rows() {
@@ -1955,18 +1963,21 @@ inline double ContactSolver::gap(const Components& k, const PositionContact& ct)
 // Non-linear Gauss-Seidel on positions, shared in proportion to inverse
 // masses, then the same bottom-up pass as the velocities'.
 void ContactSolver::project(Components& k, Vector g, const SolverSettings& s) {
-  position_keys_next_.clear();
-  for (PositionContact& ct : positions_) {
-    const Rect rc = k.box[ct.c], rb = k.box[ct.b];
-    const bool x = ct.axis < 2;
-    ct.size_c = x ? rc.width : rc.height;
-    ct.sizes = x ? rb.width + rc.width : rb.height + rc.height;
-    const double wc = inverse_mass(k.mass[ct.c]), wb = inverse_mass(k.mass[ct.b]);
-    const double w = wc + wb;
-    ct.share_c = wc / w, ct.share_b = wb / w;
-    const auto flags = static_cast<std::uint32_t>(ct.axis) | (wc == 0.0) << 2 | (wb == 0.0) << 3;
-    position_keys_next_.push_back({ct.c, ct.b, flags});
-  }
+  position_keys_next_.resize(positions_.size());
+  workers_or_one(s.workers).for_ranges(positions_.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      PositionContact& ct = positions_[i];
+      const Rect rc = k.box[ct.c], rb = k.box[ct.b];
+      const bool x = ct.axis < 2;
+      ct.size_c = x ? rc.width : rc.height;
+      ct.sizes = x ? rb.width + rc.width : rb.height + rc.height;
+      const double wc = inverse_mass(k.mass[ct.c]), wb = inverse_mass(k.mass[ct.b]);
+      const double w = wc + wb;
+      ct.share_c = wc / w, ct.share_b = wb / w;
+      const auto flags = static_cast<std::uint32_t>(ct.axis) | (wc == 0.0) << 2 | (wb == 0.0) << 3;
+      position_keys_next_[i] = {ct.c, ct.b, flags};
+    }
+  });
   for (int it = 0; it < s.iterations; ++it) {
     for (const PositionContact& ct : positions_) {
       const double depth = -gap(k, ct) - s.slop;

@@ -222,9 +222,11 @@ class ContactSolver {
   XRowCut x_row_cut() const { return {x_below_, x_above_, x_rows_ - x_below_ - x_above_}; }
 
   // Whether the friction sweep solves four rows at once with AVX2, where the
-  // processor has it (else two with SSE2): the same bits either way. For the
-  // tests, which compare the two; false where there is no such path.
-  static bool wide_rows;
+  // processor has it (else two with SSE2): the same bits either way. This
+  // solver's own (the tests turn it off to compare the two); false where
+  // there is no such path.
+  bool wide_rows = has_wide_rows();
+  static bool has_wide_rows();
 
  private:
   // The stages of solve_velocities, in order.
