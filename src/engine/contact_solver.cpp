@@ -201,9 +201,14 @@ void split_pass(ShockPass& pass, const Components& k, std::span<const std::size_
     return d == d ? d : 0.0;
   };
   const auto upper = [](const ShockRow& r) { return r.c_upper ? r.c : r.b; };
+  const auto lower = [](const ShockRow& r) { return r.c_upper ? r.b : r.c; };
+  // The cuts at quantiles of a sample of the rows' keys (every `stride`-th
+  // row: any cut gives the same bits, and the sample's quantiles are near
+  // the rows').
+  constexpr std::size_t stride = 8;
   std::vector<double> keys;
-  keys.reserve(pass.rows.size());
-  for (const ShockRow& r : pass.rows) keys.push_back(key(upper(r)));
+  keys.reserve(pass.rows.size() / stride + 1);
+  for (std::size_t i = 0; i < pass.rows.size(); i += stride) keys.push_back(key(upper(pass.rows[i])));
   std::vector<double> cuts(team - 1);
   for (std::size_t t = 1; t < team; ++t) {
     const auto nth = keys.begin() + static_cast<std::ptrdiff_t>(keys.size() * t / team);
@@ -211,8 +216,16 @@ void split_pass(ShockPass& pass, const Components& k, std::span<const std::size_
     cuts[t - 1] = *nth;
   }
   const auto owner = [&](EntityId e) {
-    return static_cast<std::size_t>(std::upper_bound(cuts.begin(), cuts.end(), key(e)) - cuts.begin());
+    return static_cast<std::uint8_t>(std::upper_bound(cuts.begin(), cuts.end(), key(e)) - cuts.begin());
   };
+  // Each row's thread (its upper body's), and whether it waits (a moving
+  // lower body of another thread's), worked out once.
+  std::vector<std::uint8_t> owners(pass.rows.size());
+  for (std::size_t i = 0; i < pass.rows.size(); ++i) {
+    ShockRow& r = pass.rows[i];
+    owners[i] = owner(upper(r));
+    r.waits = std::isfinite(k.mass[lower(r)]) && owner(lower(r)) != owners[i];
+  }
   const std::size_t levels = levels_start.size() - 1;
   std::vector<ShockRow> rows;
   rows.reserve(pass.rows.size());
@@ -220,13 +233,8 @@ void split_pass(ShockPass& pass, const Components& k, std::span<const std::size_
   for (std::size_t t = 0; t < team; ++t) {
     for (std::size_t l = 0; l < levels; ++l) {
       pass.parts.push_back(static_cast<std::uint32_t>(rows.size()));
-      for (std::size_t i = levels_start[l]; i < levels_start[l + 1]; ++i) {
-        ShockRow r = pass.rows[i];
-        if (owner(upper(r)) != t) continue;
-        const EntityId lower = r.c_upper ? r.b : r.c;
-        r.waits = std::isfinite(k.mass[lower]) && owner(lower) != t;
-        rows.push_back(r);
-      }
+      for (std::size_t i = levels_start[l]; i < levels_start[l + 1]; ++i)
+        if (owners[i] == t) rows.push_back(pass.rows[i]);
     }
     pass.parts.push_back(static_cast<std::uint32_t>(rows.size()));  // (thread t's end)
   }
@@ -253,10 +261,17 @@ std::vector<ShockPass> shock_passes(const Components& k, const Contacts& contact
   if (!Vector::is_zero(g)) downs.push_back(g);
   if (g.x == 0.0) downs.push_back({-1, 0}), downs.push_back({1, 0});
   if (g.y == 0.0) downs.push_back({0, -1}), downs.push_back({0, 1});
-  // Which ends are fixed, read once per contact.
+  // Which ends are fixed, read once per contact; and along which axes a
+  // contact has a fixed end: a direction along no such axis has nothing
+  // resting on a fixed body (bottom_up() would find no anchor), and its
+  // supports are not listed (a pile's side contacts, most of its contacts,
+  // when no wall holds it).
   std::vector<std::uint8_t> fixed(contacts.size());
-  for (std::size_t i = 0; i < contacts.size(); ++i)
+  std::array<bool, 2> anchored{};  // by component: x, y
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
     fixed[i] = static_cast<std::uint8_t>((std::isfinite(k.mass[contacts[i].c]) ? 0 : 1) | (std::isfinite(k.mass[contacts[i].b]) ? 0 : 2));
+    if (fixed[i]) anchored[contacts[i].axis >= 2] = true;
+  }
   std::vector<ShockPass> out;
   std::vector<Support> supports;
   supports.reserve(contacts.size());
@@ -267,6 +282,8 @@ std::vector<ShockPass> shock_passes(const Components& k, const Contacts& contact
   std::vector<std::size_t>* const levels = nullptr;  // (the browser's build, short of room, has no team)
 #endif
   for (const Vector down : downs) {
+    // (A direction along both axes, a skewed gravity's, takes either's anchors.)
+    if (!(down.x != 0.0 && anchored[0]) && !(down.y != 0.0 && anchored[1])) continue;
     supports.clear();
     for (std::size_t i = 0; i < contacts.size(); ++i) {
       const int sign = support_sign(contacts[i].axis, down);
