@@ -903,35 +903,18 @@ void ContactSolver::schedule(const Components& k, Vector g, bool kept_all) {
   slot_body_.clear();
   for (const ContactConstraint& ct : contacts_)
     number_as_met(ct.c, slot_of_, slot_body_), number_as_met(ct.b, slot_of_, slot_body_);
-  constexpr std::size_t chunk = 4096;
-  const std::size_t n = contacts_.size();
-  last_level_.assign(slot_body_.size(), 0);  // per slot: the level after its last contact's, in this chunk
+  const std::size_t n = contacts_.size(), chunks = (n + schedule_chunk - 1) / schedule_chunk;
   level_.resize(n);
   order_.resize(n);
-  for (std::size_t start = 0; start < n; start += chunk) {
-    const std::size_t end = std::min(n, start + chunk);
-    std::uint32_t levels = 0;
-    for (std::size_t i = start; i < end; ++i) {
-      const ContactConstraint& ct = contacts_[i];
-      const bool lc = topology_[i].flags >> 4 & 1, lb = topology_[i].flags >> 5 & 1;
-      std::uint32_t& nc = last_level_[slot_of_[ct.c]];
-      std::uint32_t& nb = last_level_[slot_of_[ct.b]];
-      const std::uint32_t level = std::max(lc ? nc : 0, lb ? nb : 0);
-      if (lc) nc = level + 1;
-      if (lb) nb = level + 1;
-      level_[i] = level, levels = std::max(levels, level + 1);
-    }
-    // Stable counting sort of the chunk by level and, within a level, x rows
-    // before y rows (any order of a level gives the same bits: the friction
-    // loop then meets the axes in runs, sweep_friction); then the chunk's
-    // bodies start again at 0.
-    const auto key = [&](std::size_t i) { return 2 * level_[i] + (contacts_[i].axis >= 2); };
-    level_count_.assign(2 * levels + 1, 0);
-    for (std::size_t i = start; i < end; ++i) ++level_count_[key(i) + 1];
-    for (std::size_t l = 1; l <= 2 * levels; ++l) level_count_[l] += level_count_[l - 1];
-    for (std::size_t i = start; i < end; ++i) order_[start + level_count_[key(i)]++] = static_cast<std::uint32_t>(i);
-    for (std::size_t i = start; i < end; ++i) last_level_[slot_of_[contacts_[i].c]] = last_level_[slot_of_[contacts_[i].b]] = 0;
-  }
+  // The chunks apart from each other: on a team, each thread orders a range of them.
+  Workers& w = workers_or_one(workers_);
+  level_scratch_.resize(static_cast<std::size_t>(w.threads()));
+  w.for_ranges(chunks, 2, [&](int t, std::size_t begin, std::size_t end) {
+    LevelScratch& scratch = level_scratch_[static_cast<std::size_t>(t)];
+    scratch.last_level.assign(slot_body_.size(), 0);
+    for (std::size_t c = begin; c < end; ++c)
+      order_chunk(c * schedule_chunk, std::min(n, (c + 1) * schedule_chunk), scratch);
+  });
   order_by_axis();
   // Rows i and i + 1 of by_axis_ share no linking body when they come from
   // the same chunk and level: sweep_axis may solve them side by side (with
@@ -940,21 +923,52 @@ void ContactSolver::schedule(const Components& k, Vector g, bool kept_all) {
   paired_.resize(by_axis_.size());
 #if defined(__SSE2__)
   const auto same_level = [&](std::uint32_t a, std::uint32_t b) {
-    return a / chunk == b / chunk && level_[a] == level_[b];
+    return a / schedule_chunk == b / schedule_chunk && level_[a] == level_[b];
   };
-  for (std::size_t i = 0; i + 1 < by_axis_.size(); ++i) paired_[i] = same_level(by_axis_[i], by_axis_[i + 1]);
-  for (const std::size_t end : {x_below_, x_below_ + x_above_, x_rows_, by_axis_.size()})
-    if (end != 0) paired_[end - 1] = 0;
   // The same in order_ for the friction sweep: rows i and i + 1 of one chunk
   // and level with normals along the same component (schedule's sort puts a
   // level's x rows before its y rows).
   friction_paired_.resize(order_.size());
-  for (std::size_t i = 0; i + 1 < order_.size(); ++i) {
-    const std::uint32_t a = order_[i], b = order_[i + 1];
-    friction_paired_[i] = same_level(a, b) && (contacts_[a].axis >= 2) == (contacts_[b].axis >= 2);
-  }
+  w.for_ranges(n, min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < std::min(end, n - 1); ++i) {
+      paired_[i] = same_level(by_axis_[i], by_axis_[i + 1]);
+      const std::uint32_t a = order_[i], b = order_[i + 1];
+      friction_paired_[i] = same_level(a, b) && (contacts_[a].axis >= 2) == (contacts_[b].axis >= 2);
+    }
+  });
+  for (const std::size_t end : {x_below_, x_below_ + x_above_, x_rows_, by_axis_.size()})
+    if (end != 0) paired_[end - 1] = 0;
   if (!friction_paired_.empty()) friction_paired_.back() = 0;
 #endif
+}
+
+// Contacts [start, end) of one chunk, by level (order_, level_): a
+// contact's level is one more than the highest level of the earlier
+// contacts of its linking bodies in the chunk (schedule()).
+void ContactSolver::order_chunk(std::size_t start, std::size_t end, LevelScratch& scratch) {
+  std::vector<std::uint32_t>& last_level = scratch.last_level;
+  std::uint32_t levels = 0;
+  for (std::size_t i = start; i < end; ++i) {
+    const ContactConstraint& ct = contacts_[i];
+    const bool lc = topology_[i].flags >> 4 & 1, lb = topology_[i].flags >> 5 & 1;
+    std::uint32_t& nc = last_level[slot_of_[ct.c]];
+    std::uint32_t& nb = last_level[slot_of_[ct.b]];
+    const std::uint32_t level = std::max(lc ? nc : 0, lb ? nb : 0);
+    if (lc) nc = level + 1;
+    if (lb) nb = level + 1;
+    level_[i] = level, levels = std::max(levels, level + 1);
+  }
+  // Stable counting sort of the chunk by level and, within a level, x rows
+  // before y rows (any order of a level gives the same bits: the friction
+  // loop then meets the axes in runs, sweep_friction); then the chunk's
+  // bodies start again at 0.
+  const auto key = [&](std::size_t i) { return 2 * level_[i] + (contacts_[i].axis >= 2); };
+  std::vector<std::uint32_t>& count = scratch.count;
+  count.assign(2 * levels + 1, 0);
+  for (std::size_t i = start; i < end; ++i) ++count[key(i) + 1];
+  for (std::size_t l = 1; l <= 2 * levels; ++l) count[l] += count[l - 1];
+  for (std::size_t i = start; i < end; ++i) order_[start + count[key(i)]++] = static_cast<std::uint32_t>(i);
+  for (std::size_t i = start; i < end; ++i) last_level[slot_of_[contacts_[i].c]] = last_level[slot_of_[contacts_[i].b]] = 0;
 }
 
 // The frictionless rows' order (by_axis_, row_order()): order_'s x rows,
@@ -992,7 +1006,7 @@ void ContactSolver::order_by_axis() {
   const std::size_t y_rows = order_.size() - x_rows_;
   if (x_rows_ >= cut_x_rows && x_rows_ > y_rows) {
     // The lowest slot below which the rows' higher slots leave as many rows as wanted (a count a slot).
-    std::vector<std::uint32_t>& rows_at = last_level_;  // (schedule()'s, all 0 again; it assigns it before each use)
+    std::vector<std::uint32_t>& rows_at = level_scratch_[0].last_level;  // (schedule()'s, all 0 again; it assigns it before each use)
     for (std::size_t r = 0; r < x_rows_; ++r)
       ++rows_at[std::max(slot_of_[contacts_[by_axis_[r]].c], slot_of_[contacts_[by_axis_[r]].b])];
     for (std::size_t below = 0; below + rows_at[cut] <= (x_rows_ - y_rows) / 2;) below += rows_at[cut++];
@@ -1877,9 +1891,15 @@ bool ContactSolver::prepare_positions(const Components& k, const SolverSettings&
   if (!any_overlap(k, s.slop)) return false;
   classified_ = false;  // (axes_ now holds the pairs' axes after Move)
   contact_axes(k, s);
-  for (std::size_t i = 0; i < pairs_.size(); ++i)
-    if (!(axes_[i].separation > s.margin))
-      positions_.push_back({pairs_[i].c, pairs_[i].b, axes_[i].axis, 0.0, 0.0, 0.0, 0.0});
+  Workers& w = workers_or_one(s.workers);
+  position_parts_.resize(static_cast<std::size_t>(w.threads()));
+  w.append_over_ranges(pairs_.size(), min_parallel_items, positions_,
+                       [&](int t) -> auto& { return position_parts_[static_cast<std::size_t>(t)]; },
+                       [&](int, std::size_t begin, std::size_t end, std::vector<PositionContact>& part) {
+                         for (std::size_t i = begin; i < end; ++i)
+                           if (!(axes_[i].separation > s.margin))
+                             part.push_back({pairs_[i].c, pairs_[i].b, axes_[i].axis, 0.0, 0.0, 0.0, 0.0});
+                       });
   return true;
 }
 

@@ -342,6 +342,7 @@ class ContactSolver {
   };
   static double gap(const Components& k, const PositionContact& ct);
   std::vector<PositionContact> positions_;
+  std::vector<std::vector<PositionContact>> position_parts_;  // prepare_positions()' lists of a team's threads
 
   std::vector<Pair> pairs_;
   std::vector<ContactConstraint> contacts_;
@@ -418,7 +419,16 @@ class ContactSolver {
   std::vector<SolverRow> rows_;            // contacts_[row_order()[i]], hot fields
   std::vector<double> row_lambda_;         // by row: its accumulator (SolverRow)
   std::vector<FrictionHot> friction_rows_; // friction_[order_[i]], hot fields
-  std::vector<std::uint32_t> last_level_, level_, level_count_;  // schedule()'s scratch
+  // schedule()'s: each contact's level in its chunk; per thread of the team,
+  // each slot's level after its last contact in the chunk (all 0 between
+  // chunks; order_by_axis counts in the first) and a count per level.
+  struct LevelScratch {
+    std::vector<std::uint32_t> last_level, count;
+  };
+  static constexpr std::size_t schedule_chunk = 4096;  // contacts
+  void order_chunk(std::size_t start, std::size_t end, LevelScratch& scratch);
+  std::vector<std::uint32_t> level_;
+  std::vector<LevelScratch> level_scratch_;
   // What order_, the slots and support_order_ were made for (schedule()):
   // each contact's bodies, axis, fixed ends (bits 2, 3) and links (bits 4, 5).
   struct TopologyKey {
