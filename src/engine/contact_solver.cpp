@@ -765,15 +765,20 @@ bool ContactSolver::swept_further(const Components& k, double h, double reach) c
 void ContactSolver::keep_round() {
   earlier_jn_.resize(pairs_.size(), 0.0);
   earlier_jt_.resize(pairs_.size(), 0.0);
-  for (std::size_t i = 0; i < contacts_.size(); ++i) {
-    const ContactConstraint& ct = contacts_[i];
-    earlier_.push_back(ct);
-    earlier_impulses_.push_back(impulses_[i]);
-    earlier_friction_.push_back(friction_.empty() ? FrictionRow{} : friction_[i]);
-    if (!ct.resting) continue;
-    earlier_jn_[pair_of_[i]] += impulses_[i].lambda + impulses_[i].lambda2;
-    if (!friction_.empty()) earlier_jt_[pair_of_[i]] += friction_[i].lambda + friction_[i].lambda2;
-  }
+  earlier_.insert(earlier_.end(), contacts_.begin(), contacts_.end());
+  earlier_impulses_.insert(earlier_impulses_.end(), impulses_.begin(), impulses_.end());
+  if (friction_.empty())
+    earlier_friction_.resize(earlier_friction_.size() + contacts_.size(), FrictionRow{});
+  else
+    earlier_friction_.insert(earlier_friction_.end(), friction_.begin(), friction_.end());
+  // (A round has one contact a pair at most: each range adds to its own pairs'.)
+  workers_or_one(workers_).for_ranges(contacts_.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      if (!contacts_[i].resting) continue;
+      earlier_jn_[pair_of_[i]] += impulses_[i].lambda + impulses_[i].lambda2;
+      if (!friction_.empty()) earlier_jt_[pair_of_[i]] += friction_[i].lambda + friction_[i].lambda2;
+    }
+  });
 }
 
 // A resting contact that was there last substep starts with the impulse it
