@@ -186,7 +186,7 @@ std::size_t renumber(std::span<Support> supports, std::vector<std::uint32_t>& id
 // body is one thread's, which does the rows that move it (those whose upper
 // body it is), in their order. The bodies are cut across the pass's
 // direction (a pile's columns for the pass up along gravity, its layers
-// for those along x) at quantiles of their rows, so that few rows read a
+// for those along x) at quantiles of (a sample of) their rows, so that few rows read a
 // lower body of another thread's: those wait until that thread is done with
 // the levels below theirs (run_pass()), after which nothing writes that body
 // (its rows' levels are below its depth, the row's level). A fixed lower
@@ -215,6 +215,7 @@ void split_pass(ShockPass& pass, const Components& k, std::span<const std::size_
     std::nth_element(keys.begin(), nth, keys.end());
     cuts[t - 1] = *nth;
   }
+  static_assert(max_threads <= 256, "a row's thread is kept in a byte");
   const auto owner = [&](EntityId e) {
     return static_cast<std::uint8_t>(std::upper_bound(cuts.begin(), cuts.end(), key(e)) - cuts.begin());
   };
@@ -328,7 +329,9 @@ void run_pass(const ShockPass& pass, [[maybe_unused]] Workers* workers, Row&& ro
     const auto part = [&](std::size_t t) { return std::span(pass.parts).subspan(t * (levels + 1), levels + 1); };
     if (pass.threads == w.threads()) {
       TeamProgress progress;
-      w.run([&](int t) {
+      // (noexcept: the threads wait for each other's levels, so a throw would
+      // leave the others waiting; it ends the program instead.)
+      w.run([&](int t) noexcept {
         const auto starts = part(static_cast<std::size_t>(t));
         for (std::size_t l = 0; l < levels; ++l) {
           progress.reach(t, l);
@@ -772,7 +775,7 @@ void ContactSolver::keep_round() {
   std::copy(contacts_.begin(), contacts_.end(), earlier_.begin() + static_cast<std::ptrdiff_t>(at));
   std::copy(impulses_.begin(), impulses_.end(), earlier_impulses_.begin() + static_cast<std::ptrdiff_t>(at));
   std::copy(friction_.begin(), friction_.end(), earlier_friction_.begin() + static_cast<std::ptrdiff_t>(at));
-  // (A round has one contact a pair at most: each range adds to its own pairs'.)
+  // (A round has one contact a pair at most, make_contacts(): each range adds to its own pairs'.)
   workers_or_one(workers_).for_ranges(n, min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
       if (!contacts_[i].resting) continue;
@@ -901,7 +904,7 @@ void ContactSolver::schedule(const Components& k, Vector g, bool kept_all) {
   if (!kept_all) topology_.swap(topology_next_);
   same_topology_ = kept_all || topology_ == topology_next_;
   if (scheduled_ && g == topology_g_ && same_topology_) return;
-  scheduled_ = true, have_order_ = false;
+  have_order_ = false;
   topology_g_ = g;
   for (const EntityId e : slot_body_)
     if (e < slot_of_.size()) slot_of_[e] = none;
@@ -916,6 +919,7 @@ void ContactSolver::schedule(const Components& k, Vector g, bool kept_all) {
   Workers& w = workers_or_one(workers_);
   level_scratch_.resize(static_cast<std::size_t>(w.threads()));
   w.for_ranges(chunks, 2, [&](int t, std::size_t begin, std::size_t end) {
+    if (begin == end && t != 0) return;  // (the first's table, all 0, is order_by_axis' count)
     LevelScratch& scratch = level_scratch_[static_cast<std::size_t>(t)];
     scratch.last_level.assign(slot_body_.size(), 0);
     for (std::size_t c = begin; c < end; ++c)
@@ -946,6 +950,7 @@ void ContactSolver::schedule(const Components& k, Vector g, bool kept_all) {
     if (end != 0) paired_[end - 1] = 0;
   if (!friction_paired_.empty()) friction_paired_.back() = 0;
 #endif
+  scheduled_ = true;  // (last: an allocation that throws above leaves no order taken for made)
 }
 
 // Contacts [start, end) of one chunk, by level (order_, level_): a
@@ -1898,9 +1903,8 @@ bool ContactSolver::prepare_positions(const Components& k, const SolverSettings&
   classified_ = false;  // (axes_ now holds the pairs' axes after Move)
   contact_axes(k, s);
   Workers& w = workers_or_one(s.workers);
-  position_parts_.resize(static_cast<std::size_t>(w.threads()));
   w.append_over_ranges(pairs_.size(), min_parallel_items, positions_,
-                       [&](int t) -> auto& { return position_parts_[static_cast<std::size_t>(t)]; },
+                       [&](int t) -> auto& { return part_of(position_parts_, t, w.threads()); },
                        [&](int, std::size_t begin, std::size_t end, std::vector<PositionContact>& part) {
                          for (std::size_t i = begin; i < end; ++i)
                            if (!(axes_[i].separation > s.margin))

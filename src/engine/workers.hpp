@@ -60,7 +60,7 @@ class Workers {
   // some threads (an allocation that fails in a range), run() throws the
   // lowest t's exception once every thread has returned, and the team stays
   // usable. (A task whose threads wait for each other, TeamProgress, must
-  // not throw: the others would wait on.)
+  // not throw: the others would wait on. run_pass' is noexcept.)
   template <class Task>
   void run(Task&& task) {
     if constexpr (has_threads) {
