@@ -639,7 +639,7 @@ $(WEB)/%: web/%
 	cp $< $@
 
 # The page's JavaScript as it loads it: the sources without their whole-line
-# comments and their lines' indentation (2.5 KB of the budget below; the
+# comments and their lines' indentation (2.3 KB of the budget below; the
 # sources keep them; no string of theirs spans lines).
 $(WEB)/%.js: web/%.js Makefile
 	@mkdir -p $(@D)
