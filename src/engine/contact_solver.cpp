@@ -283,8 +283,9 @@ std::vector<ShockPass> shock_passes(const Components& k, const Contacts& contact
   std::vector<std::size_t>* const levels = nullptr;  // (the browser's build, short of room, has no team)
 #endif
   for (const Vector down : downs) {
-    // (A direction along both axes, a skewed gravity's, takes either's anchors.)
-    if (!(down.x != 0.0 && anchored[0]) && !(down.y != 0.0 && anchored[1])) continue;
+    // (support_sign's rule: a skewed gravity's direction takes either axis' anchors.)
+    const auto anchors = [&](int axis) { return anchored[axis >= 2] && support_sign(axis, down) != 0; };
+    if (!anchors(0) && !anchors(2)) continue;
     supports.clear();
     for (std::size_t i = 0; i < contacts.size(); ++i) {
       const int sign = support_sign(contacts[i].axis, down);
