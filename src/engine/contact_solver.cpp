@@ -947,8 +947,9 @@ void ContactSolver::schedule(const Components& k, Vector g, bool kept_all) {
       friction_paired_[i] = same_level(a, b) && (contacts_[a].axis >= 2) == (contacts_[b].axis >= 2);
     }
   });
-  for (const std::size_t end : {x_below_, x_below_ + x_above_, x_rows_, by_axis_.size()})
-    if (end != 0) paired_[end - 1] = 0;
+  for (const auto& [from, cut] : {std::pair{std::size_t{0}, cut_[0]}, std::pair{x_rows_, cut_[1]}})
+    for (const std::size_t end : {from + cut.below, from + cut.below + cut.above, from + cut.below + cut.above + cut.across})
+      if (end != 0) paired_[end - 1] = 0;
   if (!friction_paired_.empty()) friction_paired_.back() = 0;
 #endif
   scheduled_ = true;  // (last: an allocation that throws above leaves no order taken for made)
@@ -985,51 +986,58 @@ void ContactSolver::order_chunk(std::size_t start, std::size_t end, LevelScratch
 
 // The frictionless rows' order (by_axis_, row_order()): order_'s x rows,
 // then its y rows, which touch other values (each body's x and y apart).
-// With many x rows they are cut in three stretches at a slot: the rows
-// whose two bodies' slots are below it, those whose two are not, then the
-// rest (the rows across), each in order_. The slots follow the contacts,
-// which follow the bodies' order in space (the grid's), so a pile is cut
-// between two of its layers and few rows are across (a settled rain of
-// 100 000: 1 888 of 298 576). The first two stretches share no body, fixed
-// ones included, so two threads sweep them at once (iterate<false>: the
-// first with the y rows, the second on the other thread), then the rows
-// across: every body's rows keep their order in the sweep whatever the
-// team, so the same bits for any number of threads. The cut gives both
-// threads as many rows; there is none where the y rows are as many as the
-// x rows (one thread has the y rows, the other the x rows). Few rows are
-// not cut (a cut would change their bits for nothing): the world's size
-// alone decides, not the team.
+// An axis with many rows has them cut in three stretches at a slot: the
+// rows whose two bodies' slots are below it, those whose two are not, then
+// the rest (the rows across), each in order_. The slots follow the
+// contacts, which follow the bodies' order in space (the grid's), so a pile
+// is cut between two of its layers and few rows are across (a settled rain
+// of 100 000: 1 888 of its 298 576 x rows). The first two stretches share
+// no body, fixed ones included, so two threads sweep them at once
+// (iterate<false>: each axis' first stretch on one, its second on the
+// other), then the rows across: every body's rows keep their order in the
+// sweep whatever the team, so the same bits for any number of threads, and
+// the browser build (no threads) runs the same order. Each axis is cut on
+// its own (a pile's x rows stop after a sweep or two, its y rows take them
+// all: iterate<false>). Few rows are not cut (a cut would change their bits
+// for nothing): the world's size alone decides, not the team. Uncut, the
+// x rows are one thread's second stretch and the y rows the other's first.
 void ContactSolver::order_by_axis() {
-  constexpr int all_x = 3, y = 4;  // what append() takes besides a side of the cut
+  by_axis_.resize(order_.size());
+  std::size_t n = 0;
+  for (const bool y : {false, true}) {
+    const std::size_t from = n;
+    for (const std::uint32_t i : order_)
+      if ((contacts_[i].axis >= 2) == y) by_axis_[n++] = i;
+    const std::size_t rows = n - from;
+    cut_[y] = rows >= cut_rows ? cut_axis(from, n) : y ? RowCut{rows, 0, 0} : RowCut{0, rows, 0};
+    if (!y) x_rows_ = n;
+  }
+}
+
+// by_axis_[from, to) (one axis' rows, in order_) in its three stretches: the
+// cut is the lowest slot below which the rows' higher slots leave half the
+// rows or fewer (a count a slot, no sort).
+ContactSolver::RowCut ContactSolver::cut_axis(std::size_t from, std::size_t to) {
+  const std::span<std::uint32_t> rows(by_axis_.begin() + static_cast<std::ptrdiff_t>(from),
+                                      by_axis_.begin() + static_cast<std::ptrdiff_t>(to));
+  const auto high = [&](std::uint32_t i) { return std::max(slot_of_[contacts_[i].c], slot_of_[contacts_[i].b]); };
+  // (schedule()'s table, all 0 between its uses, sized a slot each, and left so.)
+  std::vector<std::uint32_t>& rows_at = level_scratch_[0].last_level;
+  for (const std::uint32_t i : rows) ++rows_at[high(i)];
   std::uint32_t cut = 0;
+  for (std::size_t below = 0; below + rows_at[cut] <= rows.size() / 2;) below += rows_at[cut++];
+  for (const std::uint32_t i : rows) rows_at[high(i)] = 0;
   const auto side = [&](std::uint32_t i) {  // 0 below the cut, 1 not, 2 across
     const bool c = slot_of_[contacts_[i].c] < cut, b = slot_of_[contacts_[i].b] < cut;
     return c != b ? 2 : c ? 0 : 1;
   };
+  cut_rows_.assign(rows.begin(), rows.end());
+  std::array<std::size_t, 3> count{};
   std::size_t n = 0;
-  by_axis_.resize(order_.size());
-  const auto append = [&](int rows) {
-    for (const std::uint32_t i : order_)
-      if (rows == y ? contacts_[i].axis >= 2 : contacts_[i].axis < 2 && (rows == all_x || side(i) == rows))
-        by_axis_[n++] = i;
-  };
-  append(all_x);
-  x_rows_ = n, x_below_ = 0, x_above_ = n;
-  const std::size_t y_rows = order_.size() - x_rows_;
-  if (x_rows_ >= cut_x_rows && x_rows_ > y_rows) {
-    // The lowest slot below which the rows' higher slots leave as many rows as wanted (a count a slot).
-    std::vector<std::uint32_t>& rows_at = level_scratch_[0].last_level;  // (schedule()'s, all 0 again; it assigns it before each use)
-    for (std::size_t r = 0; r < x_rows_; ++r)
-      ++rows_at[std::max(slot_of_[contacts_[by_axis_[r]].c], slot_of_[contacts_[by_axis_[r]].b])];
-    for (std::size_t below = 0; below + rows_at[cut] <= (x_rows_ - y_rows) / 2;) below += rows_at[cut++];
-    n = 0;
-    append(0);
-    x_below_ = n;
-    append(1);
-    x_above_ = n - x_below_;
-    append(2);
-  }
-  append(y);
+  for (int stretch = 0; stretch < 3; ++stretch)
+    for (const std::uint32_t i : cut_rows_)
+      if (side(i) == stretch) rows[n++] = i, ++count[static_cast<std::size_t>(stretch)];
+  return {count[0], count[1], count[2]};
 }
 
 // The rows' order: without friction, a row reads and changes one velocity
@@ -1221,27 +1229,32 @@ void ContactSolver::iterate(const SolverSettings& s) {
       return sweep_axis(rows.subspan(from, count), lambdas.subspan(from, count), paired.subspan(from, count),
                         axis_bodies_[static_cast<std::size_t>(axis)]);
     };
-    const std::size_t below = x_below_, above = x_above_, across = x_rows_ - below - above;
-    const std::size_t y_rows = rows.size() - x_rows_;
+    const std::array<std::size_t, 2> start{0, x_rows_};
+    // Stretch k (0 below, 1 above, 2 across: order_by_axis) of an axis' rows, swept.
+    const auto stretch = [&](int axis, int k) {
+      const RowCut& c = cut_[static_cast<std::size_t>(axis)];
+      const std::size_t at = start[static_cast<std::size_t>(axis)] + (k > 0 ? c.below : 0) + (k > 1 ? c.above : 0);
+      return sweep(axis, at, k == 0 ? c.below : k == 1 ? c.above : c.across);
+    };
     Workers& w = workers_or_one(workers_);
     const bool together = has_threads && w.splits(rows.size(), min_parallel_items);
-    bool x_live = true, y_live = true;
-    for (int it = 0; it < s.iterations && (x_live || y_live); ++it) {
-      if (together && x_live) {
-        std::array<bool, 3> x{};
-        w.run([&](int t) {  // (order_by_axis: the stretches each thread sweeps)
-          if (t == 0) {
-            x[0] = sweep(0, 0, below);
-            if (y_live) y_live = sweep(1, x_rows_, y_rows);
-          }
-          if (t == 1) x[1] = sweep(0, below, above);
+    std::array<bool, 2> live{true, true};  // by axis: its last sweep changed something
+    for (int it = 0; it < s.iterations && (live[0] || live[1]); ++it) {
+      std::array<bool, 6> changed{};  // by axis, then stretch
+      const auto run = [&](int axis, int k) {
+        changed[static_cast<std::size_t>(3 * axis + k)] = live[static_cast<std::size_t>(axis)] && stretch(axis, k);
+      };
+      if (together) {
+        w.run([&](int t) {  // the first stretches on one thread, the second on the other
+          if (t < 2) run(0, t), run(1, t);
         });
-        x[2] = sweep(0, below + above, across);
-        x_live = x[0] || x[1] || x[2];
+        run(0, 2), run(1, 2);
       } else {
-        if (x_live) x_live = sweep(0, 0, x_rows_);
-        if (y_live) y_live = sweep(1, x_rows_, y_rows);
+        changed[0] = live[0] && sweep(0, 0, x_rows_);
+        changed[3] = live[1] && sweep(1, x_rows_, rows.size() - x_rows_);
       }
+      for (std::size_t axis = 0; axis < 2; ++axis)
+        live[axis] = changed[3 * axis] || changed[3 * axis + 1] || changed[3 * axis + 2];
     }
   } else {
     for (int it = 0; it < s.iterations; ++it)
