@@ -1031,7 +1031,8 @@ ContactSolver::RowCut ContactSolver::cut_axis(std::size_t from, std::size_t to) 
     const bool c = slot_of_[contacts_[i].c] < cut, b = slot_of_[contacts_[i].b] < cut;
     return c != b ? 2 : c ? 0 : 1;
   };
-  cut_rows_.assign(rows.begin(), rows.end());
+  cut_rows_.resize(rows.size());
+  std::copy(rows.begin(), rows.end(), cut_rows_.begin());
   std::array<std::size_t, 3> count{};
   std::size_t n = 0;
   for (int stretch = 0; stretch < 3; ++stretch)
