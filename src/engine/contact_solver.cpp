@@ -863,14 +863,20 @@ void ContactSolver::relax(Components& k, Vector g, const SolverSettings& s, bool
   else
     iterate<true>(s);
   store_rows(k, after_bounce);
-  if (!after_bounce && Vector::is_zero(g)) islands_solve_.solve(k, contacts_, impulses_, friction_);
+  if (!after_bounce && Vector::is_zero(g)) {
+    islands_solve_.solve(k, contacts_, impulses_, friction_);
+    axis_at_targets_ = {};  // (the velocities are the islands' now)
+  }
   if (!s.shock_propagation) return;
   const int threads = workers_ ? workers_->threads() : 1;
   if (!have_order_)
     support_order_ = shock_passes(k, contacts_, g, support_ids_, support_met_, threads), have_order_ = true;
   const std::span<Vector> velocity(k.velocity);
   const std::span<const double> targets(targets_);
-  for (const ShockPass& pass : support_order_)
+  bool tame = false;  // (skips_pass(): asked once until a pass runs)
+  for (const ShockPass& pass : support_order_) {
+    if (skips_pass(k, pass.down, tame)) continue;
+    tame = false;
     run_pass(pass, workers_, [&](const ShockRow& r) {
       const Vector n = axis_normal[r.axis];
       const double target = targets[r.index];  // this relaxation's (load_rows)
@@ -882,6 +888,37 @@ void ContactSolver::relax(Components& k, Vector g, const SolverSettings& s, bool
       else
         velocity[r.b] = velocity[r.b] - (target - vn) * n;
     });
+  }
+}
+
+// Whether the bottom-up pass along `down` would change nothing: every row
+// it lists is along an axis whose relaxation ended with its rows at or above
+// their targets (axis_at_targets_), so each row finds vn >= target and
+// leaves its bodies as they are. The pass reads vn as a dot product, the
+// sweep as a difference of one component: the same value (but a zero's
+// sign) as long as the other component's difference times 0 is 0, not NaN:
+// every body's velocity within ±1e300 (`tame`, looked at once for passes in
+// a row that skip: a pass that runs may change them; the pass before an x
+// pass is the y one). A settled pile's x rows hold nothing: its two
+// sideways passes, three quarters of the passes' rows, are not run (the
+// settled rain of 100 000 on one thread: 8.9 -> 8.0 ms a step).
+bool ContactSolver::skips_pass(const Components& k, Vector down, bool& tame) {
+  if (!keeps_unchanged) return false;  // (the browser's build, short of room, runs them: the same bits)
+  const bool x = support_sign(0, down) != 0, y = support_sign(2, down) != 0;
+  if ((x && !axis_at_targets_[0]) || (y && !axis_at_targets_[1])) return false;
+  if (!tame) {
+    const std::span<const Vector> velocity(k.velocity);
+    const std::span<const EntityId> bodies(slot_body_);
+    constexpr double most = 1e300;  // (a difference of two stays finite)
+    tame = workers_or_one(workers_).or_over_ranges(bodies.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) {
+        const Vector v = velocity[bodies[i]];
+        if (!(std::abs(v.x) <= most && std::abs(v.y) <= most)) return std::uint8_t{1};
+      }
+      return std::uint8_t{0};
+    }) == 0;
+  }
+  return tame;
 }
 
 // The iterations' order (order_) and the bodies' slots. Each contact reads
@@ -1239,11 +1276,13 @@ void ContactSolver::iterate(const SolverSettings& s) {
     };
     Workers& w = workers_or_one(workers_);
     const bool together = has_threads && w.splits(rows.size(), min_parallel_items);
-    std::array<bool, 2> live{true, true};  // by axis: its last sweep changed something
-    for (int it = 0; it < s.iterations && (live[0] || live[1]); ++it) {
-      std::array<bool, 6> changed{};  // by axis, then stretch
+    std::array<std::uint8_t, 2> last{changed, changed};  // by axis: what its last sweep found
+    const auto live = [&](std::size_t axis) { return (last[axis] & changed) != 0; };
+    for (int it = 0; it < s.iterations && (live(0) || live(1)); ++it) {
+      std::array<std::uint8_t, 6> found{};  // by axis, then stretch
       const auto run = [&](int axis, int k) {
-        changed[static_cast<std::size_t>(3 * axis + k)] = live[static_cast<std::size_t>(axis)] && stretch(axis, k);
+        const auto a = static_cast<std::size_t>(axis);
+        found[3 * a + static_cast<std::size_t>(k)] = live(a) ? stretch(axis, k) : last[a];
       };
       if (together) {
         w.run([&](int t) {  // the first stretches on one thread, the second on the other
@@ -1251,13 +1290,14 @@ void ContactSolver::iterate(const SolverSettings& s) {
         });
         run(0, 2), run(1, 2);
       } else {
-        changed[0] = live[0] && sweep(0, 0, x_rows_);
-        changed[3] = live[1] && sweep(1, x_rows_, rows.size() - x_rows_);
+        found[0] = live(0) ? sweep(0, 0, x_rows_) : last[0];
+        found[3] = live(1) ? sweep(1, x_rows_, rows.size() - x_rows_) : last[1];
       }
-      for (std::size_t axis = 0; axis < 2; ++axis)
-        live[axis] = changed[3 * axis] || changed[3 * axis + 1] || changed[3 * axis + 2];
+      for (std::size_t axis = 0; axis < 2; ++axis) last[axis] = found[3 * axis] | found[3 * axis + 1] | found[3 * axis + 2];
     }
+    for (std::size_t axis = 0; axis < 2; ++axis) axis_at_targets_[axis] = last[axis] == 0;
   } else {
+    axis_at_targets_ = {};
     for (int it = 0; it < s.iterations; ++it)
       if (!sweep_friction()) return;
   }
@@ -1508,13 +1548,13 @@ inline bool ContactSolver::friction_two(std::span<const SolverRow, 2> r, double*
 // accumulated one is never -0: it starts at +0 or a positive warm start,
 // and max(x, 0) is -0 only for x = -0, which only -0 minus a zero gives).
 // Then v_c + (w_c j)(-1) is v_c - w_c j, bit for bit.
-bool ContactSolver::sweep_axis(std::span<const SolverRow> rows, std::span<double> lambdas,
-                               [[maybe_unused]] std::span<const std::uint8_t> paired, std::span<AxisBody> bodies) {
-  bool changed = false;
+std::uint8_t ContactSolver::sweep_axis(std::span<const SolverRow> rows, std::span<double> lambdas,
+                                       [[maybe_unused]] std::span<const std::uint8_t> paired, std::span<AxisBody> bodies) {
+  std::uint8_t found = 0;
   for (std::size_t i = 0; i < rows.size();) {
 #if defined(__SSE2__)
     if (paired[i]) {  // (never the last row of the span: schedule())
-      changed |= sweep_two(rows[i], rows[i + 1], &lambdas[i], bodies);
+      found |= sweep_two(rows[i], rows[i + 1], &lambdas[i], bodies);
       i += 2;
       continue;
     }
@@ -1526,10 +1566,11 @@ bool ContactSolver::sweep_axis(std::span<const SolverRow> rows, std::span<double
     const double vn = bc.v - bb.v;
     const double lambda = std::max(old - (vn - r.target) * r.inv_w, 0.0);
     apply_axis_impulse(bc.v, bb.v, 1.0, lambda - old, bc.w, bb.w);
-    changed |= std::bit_cast<std::uint64_t>(lambda) != std::bit_cast<std::uint64_t>(old);
+    found |= (std::bit_cast<std::uint64_t>(lambda) != std::bit_cast<std::uint64_t>(old) ? changed : 0) |
+             (!keeps_unchanged || vn >= r.target ? 0 : short_of_target);  // (skips_pass(): not in the browser's build)
     old = lambda;
   }
-  return changed;
+  return found;
 }
 
 #if defined(__SSE2__)
@@ -1538,8 +1579,8 @@ bool ContactSolver::sweep_axis(std::span<const SolverRow> rows, std::span<double
 // operations in the same order as one row, so the same bits: each lane
 // rounds as the scalar instruction does, and max(0, x) is (0 > x ? 0 : x),
 // std::max(x, 0.0)'s choice for a NaN and for -0 too.
-inline bool ContactSolver::sweep_two(const SolverRow& r0, const SolverRow& r1, double* lambdas,
-                                     std::span<AxisBody> bodies) {
+inline std::uint8_t ContactSolver::sweep_two(const SolverRow& r0, const SolverRow& r1, double* lambdas,
+                                             std::span<AxisBody> bodies) {
   AxisBody& c0 = bodies[r0.c];
   AxisBody& b0 = bodies[r0.b];
   AxisBody& c1 = bodies[r1.c];
@@ -1547,7 +1588,8 @@ inline bool ContactSolver::sweep_two(const SolverRow& r0, const SolverRow& r1, d
   const __m128d vc = _mm_setr_pd(c0.v, c1.v), vb = _mm_setr_pd(b0.v, b1.v);
   const __m128d old = _mm_loadu_pd(lambdas);
   const __m128d vn = _mm_sub_pd(vc, vb);
-  const __m128d push = _mm_mul_pd(_mm_sub_pd(vn, _mm_setr_pd(r0.target, r1.target)), _mm_setr_pd(r0.inv_w, r1.inv_w));
+  const __m128d target = _mm_setr_pd(r0.target, r1.target);
+  const __m128d push = _mm_mul_pd(_mm_sub_pd(vn, target), _mm_setr_pd(r0.inv_w, r1.inv_w));
   const __m128d lambda = _mm_max_pd(_mm_setzero_pd(), _mm_sub_pd(old, push));
   const __m128d j = _mm_sub_pd(lambda, old);
   const __m128d vc2 = _mm_add_pd(vc, _mm_mul_pd(_mm_setr_pd(c0.w, c1.w), j));
@@ -1556,7 +1598,8 @@ inline bool ContactSolver::sweep_two(const SolverRow& r0, const SolverRow& r1, d
   _mm_storel_pd(&b0.v, vb2), _mm_storeh_pd(&b1.v, vb2);
   _mm_storeu_pd(lambdas, lambda);
   // Bits, not values, as the scalar row compares them (a 32-bit compare: SSE2 has no 64-bit one).
-  return _mm_movemask_epi8(_mm_cmpeq_epi32(_mm_castpd_si128(lambda), _mm_castpd_si128(old))) != 0xFFFF;
+  return (_mm_movemask_epi8(_mm_cmpeq_epi32(_mm_castpd_si128(lambda), _mm_castpd_si128(old))) != 0xFFFF ? changed : 0) |
+         (_mm_movemask_pd(_mm_cmpnge_pd(vn, target)) != 0 ? short_of_target : 0);
 }
 #endif
 

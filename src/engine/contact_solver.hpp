@@ -393,10 +393,19 @@ class ContactSolver {
   struct AxisBody {
     double v, w;
   };
-  static bool sweep_axis(std::span<const SolverRow> rows, std::span<double> lambda, std::span<const std::uint8_t> paired,
-                         std::span<AxisBody> bodies);
-  [[gnu::always_inline]] static bool sweep_two(const SolverRow& r0, const SolverRow& r1, double* lambda,
-                                               std::span<AxisBody> bodies);
+  // A sweep's findings (sweep_axis): bit `changed`, some accumulator
+  // changed; bit `short_of_target`, some row's relative speed was below its
+  // target (or NaN) when it was solved.
+  static constexpr std::uint8_t changed = 1, short_of_target = 2;
+  static std::uint8_t sweep_axis(std::span<const SolverRow> rows, std::span<double> lambda,
+                                 std::span<const std::uint8_t> paired, std::span<AxisBody> bodies);
+  [[gnu::always_inline]] static std::uint8_t sweep_two(const SolverRow& r0, const SolverRow& r1, double* lambda,
+                                                       std::span<AxisBody> bodies);
+  // By axis (x, y): the last frictionless relaxation stopped on a sweep of
+  // that axis that changed nothing and found every row at or above its
+  // target (iterate<false>), so its rows still are there (relax()).
+  std::array<bool, 2> axis_at_targets_{};
+  bool skips_pass(const Components& k, Vector down, bool& tame);
   std::span<const std::uint32_t> row_order() const;
   std::uint64_t velocity_finds_ = ~std::uint64_t{0};  // the broad phase's finds() after solve_velocities
   std::vector<std::uint32_t> slot_of_;     // by entity id: slot, or none when not in a contact
