@@ -419,7 +419,7 @@ class ContactSolver {
   // How many rows of an axis a world needs for them to be cut (order_by_axis()).
   static constexpr std::size_t cut_rows = min_parallel_items;
   void order_by_axis();
-  RowCut cut_axis(std::size_t from, std::size_t to);
+  RowCut cut_axis(std::size_t from, std::size_t to, std::size_t wanted);
   std::vector<std::uint32_t> cut_rows_;  // cut_axis()'s copy of the rows it reorders
   std::vector<std::uint8_t> paired_;       // by row of by_axis_: it and the next may be solved together
   std::vector<std::uint8_t> friction_paired_;  // the same by row of order_ (with SSE2: group_friction_rows)
