@@ -102,9 +102,12 @@ BOOST_AUTO_TEST_CASE(a_bad_number_of_threads_is_refused) {
 // cut in two: ContactSolver::iterate and order_by_axis).
 // `then_threads` (when not 0): the world's team changes to that size after half the steps.
 // `cut` (when given): how the first step's order cut the frictionless rows, x then y.
+// `layers`: the pile's rows of squares; `pipelined` (when given): how many
+// relaxations ran their y rows' last sweeps on two threads.
 std::vector<double> run_rain(int threads, SolverKind solver, int steps, bool friction = true, int then_threads = 0,
                              Vec2 gravity = {0.0, 0.001},
-                             std::array<ContactSolver::RowCut, 2>* cut = nullptr) {
+                             std::array<ContactSolver::RowCut, 2>* cut = nullptr, int layers = 42,
+                             std::int64_t* pipelined = nullptr) {
   WorldDef def = default_world_def();
   def.gravity = gravity;
   def.solver = solver;
@@ -124,7 +127,7 @@ std::vector<double> run_rain(int threads, SolverKind solver, int steps, bool fri
   int n = 0;
   // 4 200 squares at rest, wall to wall (about 12 600 pairs), and 300 falling: more bodies than
   // min_parallel_items, so that the loops over the bodies split too (Forces, Move, the broad phase's).
-  for (int row = 0; row < 42; ++row)
+  for (int row = 0; row < layers; ++row)
     for (int col = 0; col < 100; ++col, ++n) {
       b.position = {col * 10.0, 590.0 - row * 10.0};
       b.friction = friction && n % 2 ? 0.5 : 0.0;
@@ -144,6 +147,7 @@ std::vector<double> run_rain(int threads, SolverKind solver, int steps, bool fri
       for (int axis = 0; axis < 2; ++axis)
         (*cut)[static_cast<std::size_t>(axis)] = api::world(w).world->contact_solver.row_cut(axis);
   }
+  if (pipelined) *pipelined = api::world(w).world->contact_solver.stats.pipelined;
   std::vector<double> state;
   for (const BodyId id : bodies(w))
     for (const Vec2 v : {position(id), velocity(id)}) state.push_back(v.x), state.push_back(v.y);
@@ -195,6 +199,21 @@ BOOST_AUTO_TEST_CASE(the_x_rows_cut_in_two_give_the_same_bits_on_any_number_of_t
   BOOST_TEST(one == bits(run_rain(2, SolverKind::stable, 40, false, 0, sideways)));
   BOOST_TEST(one == bits(run_rain(3, SolverKind::stable, 40, false, 0, sideways)));
   BOOST_TEST(one != bits(run_rain(1, SolverKind::stable, 40, false)));  // (the sideways pull changes the run)
+}
+
+// Without friction, once a pile's x rows stop, its y rows' sweeps left run
+// on two threads, one sweep a few blocks behind the other
+// (ContactSolver::pipelined_sweeps): a pile of 4 800 squares has enough y
+// rows for it. The same bits on any number of threads.
+BOOST_AUTO_TEST_CASE(the_y_rows_sweeps_on_two_threads_give_the_same_bits) {
+  const Vec2 down{0.0, 0.001};
+  std::int64_t pipelined = 0;
+  const auto one = bits(run_rain(1, SolverKind::stable, 30, false, 0, down, nullptr, 48, &pipelined));
+  BOOST_TEST(pipelined == 0);
+  BOOST_TEST(one == bits(run_rain(2, SolverKind::stable, 30, false, 0, down, nullptr, 48, &pipelined)));
+  BOOST_TEST(pipelined > 0);
+  BOOST_TEST(one == bits(run_rain(3, SolverKind::stable, 30, false, 0, down, nullptr, 48)));
+  BOOST_TEST(one == bits(run_rain(2, SolverKind::stable, 30, false, 1, down, nullptr, 48)));
 }
 
 // The bottom-up passes are split for the team they were made on

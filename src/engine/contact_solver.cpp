@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <cstddef>
@@ -943,6 +944,9 @@ void ContactSolver::schedule(const Components& k, Vector g, bool kept_all) {
   same_topology_ = kept_all || topology_ == topology_next_;
   if (scheduled_ && g == topology_g_ && same_topology_) return;
   have_order_ = false;
+#if PHYSICS_HAS_THREADS
+  pipeline_.made = false;
+#endif
   topology_g_ = g;
   for (const EntityId e : slot_body_)
     if (e < slot_of_.size()) slot_of_[e] = none;
@@ -1291,6 +1295,15 @@ void ContactSolver::iterate(const SolverSettings& s) {
         const auto a = static_cast<std::size_t>(axis);
         found[3 * a + static_cast<std::size_t>(k)] = live(a) ? stretch(axis, k) : last[a];
       };
+#if PHYSICS_HAS_THREADS
+      // The x rows done (a pile's, after a sweep or two): the y rows' sweeps left on both threads.
+      if (together && !live(0) && rows.size() - x_rows_ >= pipeline_rows) {
+        const std::size_t y = rows.size() - x_rows_;
+        last[1] = pipelined_sweeps(w, rows.subspan(x_rows_, y), lambdas.subspan(x_rows_, y), paired.subspan(x_rows_, y),
+                                   s.iterations - it);
+        break;
+      }
+#endif
       if (together) {
         w.run([&](int t) {  // the first stretches on one thread, the second on the other
           if (t < 2) run(0, t), run(1, t);
@@ -1309,6 +1322,80 @@ void ContactSolver::iterate(const SolverSettings& s) {
       if (!sweep_friction()) return;
   }
 }
+
+#if PHYSICS_HAS_THREADS
+// The y rows in blocks of about pipeline_block rows (a pair of rows solved
+// together stays in one block), and for each block the last block whose
+// rows share a body with its rows, fixed ones included (so that two
+// threads never write one body's values at once).
+void ContactSolver::plan_pipeline(std::span<const SolverRow> rows, std::span<const std::uint8_t> paired) {
+  Pipeline& p = pipeline_;
+  p.start.clear();
+  for (std::size_t at = 0; at < rows.size();) {
+    p.start.push_back(static_cast<std::uint32_t>(at));
+    at = std::min(rows.size(), at + pipeline_block);
+    while (at < rows.size() && paired[at - 1]) ++at;
+  }
+  const std::size_t blocks = p.start.size();
+  p.start.push_back(static_cast<std::uint32_t>(rows.size()));
+  last_block_.assign(slot_body_.size(), 0);
+  for (std::uint32_t b = 0; b < blocks; ++b)
+    for (std::size_t r = p.start[b]; r < p.start[b + 1]; ++r) last_block_[rows[r].c] = last_block_[rows[r].b] = b;
+  p.reach.resize(blocks);
+  for (std::uint32_t b = 0; b < blocks; ++b) {
+    std::uint32_t reach = b;
+    for (std::size_t r = p.start[b]; r < p.start[b + 1]; ++r)
+      reach = std::max({reach, last_block_[rows[r].c], last_block_[rows[r].b]});
+    p.reach[b] = reach;
+  }
+  p.made = true;
+}
+
+// `sweeps` sweeps of the y rows, or up to the first that changes nothing,
+// on two threads: thread t takes the sweeps t, t + 2..., block by block,
+// and starts a block once the sweep before its own (the other thread's) is
+// past every block sharing a body with it. Every body then meets its rows
+// in the order of the sweeps one after the other: the same bits as one
+// thread. Each thread's progress is one count, its blocks done over its
+// sweeps; a sweep that changes nothing ends both (the sweeps after it
+// change nothing either: iterate<false>). Returns what the last sweep
+// that counts found (sweep_axis).
+std::uint8_t ContactSolver::pipelined_sweeps(Workers& w, std::span<const SolverRow> rows, std::span<double> lambdas,
+                                             std::span<const std::uint8_t> paired, int sweeps) {
+  if (!pipeline_.made) plan_pipeline(rows, paired);
+  ++stats.pipelined;
+  const Pipeline& p = pipeline_;
+  const std::uint64_t blocks = p.reach.size();
+  const std::span<AxisBody> bodies(axis_bodies_[1]);
+  std::vector<std::uint8_t> found(static_cast<std::size_t>(sweeps), 0);
+  std::atomic<int> stop{sweeps};  // the first sweep that changed nothing, once one has
+  TeamProgress progress;          // thread t has done blocks [0, step) of sweep after sweep (its sweeps' blocks in a row)
+  constexpr std::uint64_t done = ~std::uint64_t{0};
+  w.run([&](int t) noexcept {
+    const int other = 1 - t;
+    for (int sweep = t; t < 2 && sweep < sweeps && sweep <= stop.load(std::memory_order_acquire); sweep += 2) {
+      const std::uint64_t before = static_cast<std::uint64_t>(sweep / 2) * blocks;  // its blocks of its earlier sweeps
+      std::uint8_t bits = 0;
+      for (std::uint64_t b = 0; b < blocks; ++b) {
+        // The other thread's sweep (sweep - 1) past block reach[b]: its count, over its earlier sweeps too.
+        if (sweep > 0) progress.wait_for(other, static_cast<std::uint64_t>((sweep - 1) / 2) * blocks + p.reach[b] + 1);
+        if (stop.load(std::memory_order_acquire) < sweep) break;
+        const std::size_t from = p.start[b], count = p.start[b + 1] - from;
+        bits |= sweep_axis(rows.subspan(from, count), lambdas.subspan(from, count), paired.subspan(from, count), bodies);
+        progress.reach(t, before + b + 1);
+      }
+      if (stop.load(std::memory_order_acquire) < sweep) break;
+      found[static_cast<std::size_t>(sweep)] = bits;
+      if (!(bits & changed)) {
+        for (int was = stop.load(); sweep < was && !stop.compare_exchange_weak(was, sweep);) {}
+        break;
+      }
+    }
+    progress.reach(t, done);  // (what the other waits for comes no more)
+  });
+  return found[static_cast<std::size_t>(std::min(stop.load(), sweeps - 1))];
+}
+#endif
 
 #if defined(__SSE2__)
 // friction_row with friction, the row's two components side by side in

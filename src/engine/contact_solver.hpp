@@ -114,6 +114,7 @@ struct WarmImpulse {
 struct SolverStats {
   std::int64_t contacts = 0;       // contacts solved, summed over substeps
   std::int64_t energy_clamps = 0;  // body velocities the energy guard scaled back
+  std::int64_t pipelined = 0;      // relaxations whose y rows' last sweeps ran on two threads (pipelined_sweeps)
 };
 
 // One contact as the solver's iterations read it: the pair, its axis and
@@ -405,6 +406,23 @@ class ContactSolver {
   // that axis that changed nothing and found every row at or above its
   // target (iterate<false>), so its rows still are there (relax()).
   std::array<bool, 2> axis_at_targets_{};
+#if PHYSICS_HAS_THREADS  // (not in the browser's build: no threads, and each member costs bytes)
+  // The y rows' sweeps on two threads, one sweep behind the other
+  // (pipelined_sweeps()): the rows in blocks, and for each block the last
+  // block that shares a body with it. Made again after schedule().
+  struct Pipeline {
+    std::vector<std::uint32_t> start;  // block b: rows [start[b], start[b + 1]) of the y rows
+    std::vector<std::uint32_t> reach;  // block b: the last block sharing a body with it
+    bool made = false;
+  };
+  Pipeline pipeline_;
+  static constexpr std::size_t pipeline_block = 1024;                // rows
+  static constexpr std::size_t pipeline_rows = min_parallel_items;  // the fewest y rows pipelined
+  std::vector<std::uint32_t> last_block_;  // by slot (plan_pipeline())
+  void plan_pipeline(std::span<const SolverRow> rows, std::span<const std::uint8_t> paired);
+  std::uint8_t pipelined_sweeps(Workers& w, std::span<const SolverRow> rows, std::span<double> lambdas,
+                                std::span<const std::uint8_t> paired, int sweeps);
+#endif
   bool skips_pass(const Components& k, Vector down, bool& tame);
   std::span<const std::uint32_t> row_order() const;
   std::uint64_t velocity_finds_ = ~std::uint64_t{0};  // the broad phase's finds() after solve_velocities

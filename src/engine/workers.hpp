@@ -149,6 +149,8 @@ class TeamProgress {
   // Returns once each other thread of the team (of `threads`) has reached
   // `step`, which thread t must have reached.
   void wait_for_others(int t, int threads, std::uint64_t step) const;
+  // Returns once thread u has reached `step`.
+  void wait_for(int u, std::uint64_t step) const;
 
  private:
   struct alignas(64) Slot {
