@@ -899,8 +899,8 @@ void ContactSolver::relax(Components& k, Vector g, const SolverSettings& s, bool
 // sweep as a difference of one component: the same value (but a zero's
 // sign) as long as the other component's difference times 0 is 0, not NaN:
 // every body's velocity within ±1e300 (`tame`, looked at once for passes in
-// a row that skip: a pass that runs may change them; the pass before an x
-// pass is the y one). A settled pile's x rows hold nothing: its two
+// a row that skip: a pass that runs may change them). A settled pile's x
+// rows hold nothing: its two
 // sideways passes, three quarters of the passes' rows, are not run (the
 // settled rain of 100 000 on one thread: 8.9 -> 8.0 ms a step).
 bool ContactSolver::skips_pass(const Components& k, Vector down, bool& tame) {
@@ -1263,7 +1263,10 @@ void ContactSolver::store_rows(Components& k, bool after_bounce) {
 // lambda - lambda; adding it leaves a velocity as it is but a -0, which
 // turns +0, and that sweep made each velocity it could so already. The
 // next sweep's rows then read the same values but zeros' signs, which move
-// no accumulator: they are never -0, and old - (±0) is old.) A settled
+// no accumulator: they are never -0, and old - (±0) is old. An infinite
+// or NaN lambda counts as a change, sweep_axis: its impulse inf - inf is
+// NaN. A blown-up world with one sweeps all its sweeps now, where it
+// stopped once every accumulator kept its bits.) A settled
 // pile's x rows hold nothing and are done after a sweep or two, where the
 // y rows take every sweep: the rain of 100 000 settled ran 8 sweeps of its
 // 298 576 x rows a relaxation for nothing (one thread, 13.2 -> 8.9 ms a
@@ -1304,7 +1307,7 @@ void ContactSolver::iterate(const SolverSettings& s) {
         break;
       }
 #endif
-      if (together) {
+      if (together && live(0)) {
         w.run([&](int t) {  // the first stretches on one thread, the second on the other
           if (t < 2) run(0, t), run(1, t);
         });
@@ -1660,7 +1663,8 @@ std::uint8_t ContactSolver::sweep_axis(std::span<const SolverRow> rows, std::spa
     const double vn = bc.v - bb.v;
     const double lambda = std::max(old - (vn - r.target) * r.inv_w, 0.0);
     apply_axis_impulse(bc.v, bb.v, 1.0, lambda - old, bc.w, bb.w);
-    found |= (std::bit_cast<std::uint64_t>(lambda) != std::bit_cast<std::uint64_t>(old) ? changed : 0) |
+    // (An infinite or NaN accumulator counts as changing: its next impulse, inf - inf, would not be 0.)
+    found |= (std::bit_cast<std::uint64_t>(lambda) != std::bit_cast<std::uint64_t>(old) || !(lambda < infinity) ? changed : 0) |
              (!keeps_unchanged || vn >= r.target ? 0 : short_of_target);  // (skips_pass(): not in the browser's build)
     old = lambda;
   }
@@ -1692,7 +1696,9 @@ inline std::uint8_t ContactSolver::sweep_two(const SolverRow& r0, const SolverRo
   _mm_storel_pd(&b0.v, vb2), _mm_storeh_pd(&b1.v, vb2);
   _mm_storeu_pd(lambdas, lambda);
   // Bits, not values, as the scalar row compares them (a 32-bit compare: SSE2 has no 64-bit one).
-  return (_mm_movemask_epi8(_mm_cmpeq_epi32(_mm_castpd_si128(lambda), _mm_castpd_si128(old))) != 0xFFFF ? changed : 0) |
+  const bool same = _mm_movemask_epi8(_mm_cmpeq_epi32(_mm_castpd_si128(lambda), _mm_castpd_si128(old))) == 0xFFFF &&
+                    _mm_movemask_pd(_mm_cmpnlt_pd(lambda, _mm_set1_pd(infinity))) == 0;  // (as sweep_axis: finite)
+  return (same ? 0 : changed) |
          (_mm_movemask_pd(_mm_cmpnge_pd(vn, target)) != 0 ? short_of_target : 0);
 }
 #endif
