@@ -1,7 +1,6 @@
 // The engine's threads (engine/workers.hpp, WorldDef::threads, --threads):
 // the team's ranges, and the same bits for any number of threads on worlds
 // big enough for every parallel loop to split (min_parallel_items).
-#include <array>
 #include <bit>
 #include <cstdint>
 #include <new>
@@ -101,12 +100,12 @@ BOOST_AUTO_TEST_CASE(a_bad_number_of_threads_is_refused) {
 // then each sweep's rows run at once on two threads, its 12 000-odd x rows
 // cut in two: ContactSolver::iterate and order_by_axis).
 // `then_threads` (when not 0): the world's team changes to that size after half the steps.
-// `cut` (when given): how the first step's order cut the frictionless rows, x then y.
+// `cut` (when given): how the first step's order cut the frictionless x rows.
 // `layers`: the pile's rows of squares; `pipelined` (when given): how many
 // relaxations ran their y rows' last sweeps on two threads.
 std::vector<double> run_rain(int threads, SolverKind solver, int steps, bool friction = true, int then_threads = 0,
                              Vec2 gravity = {0.0, 0.001},
-                             std::array<ContactSolver::RowCut, 2>* cut = nullptr, int layers = 42,
+                             ContactSolver::XRowCut* cut = nullptr, int layers = 42,
                              std::int64_t* pipelined = nullptr) {
   WorldDef def = default_world_def();
   def.gravity = gravity;
@@ -143,9 +142,7 @@ std::vector<double> run_rain(int threads, SolverKind solver, int steps, bool fri
   for (int s = 0; s < steps; ++s) {
     if (then_threads != 0 && s == steps / 2) api::world(w).world->workers = Workers(then_threads);
     step(w);
-    if (cut && s == 0)
-      for (int axis = 0; axis < 2; ++axis)
-        (*cut)[static_cast<std::size_t>(axis)] = api::world(w).world->contact_solver.row_cut(axis);
+    if (cut && s == 0) *cut = api::world(w).world->contact_solver.x_row_cut();
   }
   if (pipelined) *pipelined = api::world(w).world->contact_solver.stats.pipelined;
   std::vector<double> state;
@@ -190,12 +187,11 @@ BOOST_AUTO_TEST_CASE(without_friction_the_x_and_y_sweeps_side_by_side_give_the_s
 // the pile, those across the cut among them, so their order shows.
 BOOST_AUTO_TEST_CASE(the_x_rows_cut_in_two_give_the_same_bits_on_any_number_of_threads) {
   const Vec2 sideways{0.0005, 0.001};
-  std::array<ContactSolver::RowCut, 2> cut{};
+  ContactSolver::XRowCut cut{};
   const auto one = bits(run_rain(1, SolverKind::stable, 40, false, 0, sideways, &cut));
-  BOOST_TEST(cut[0].below > 0u);  // (the pile's x rows were cut, and some are across)
-  BOOST_TEST(cut[0].above > 0u);
-  BOOST_TEST(cut[0].across > 0u);
-  BOOST_TEST(cut[1].across == 0u);  // (its y rows were not)
+  BOOST_TEST(cut.below > 0u);  // (the pile's x rows were cut, and some are across)
+  BOOST_TEST(cut.above > 0u);
+  BOOST_TEST(cut.across > 0u);
   BOOST_TEST(one == bits(run_rain(2, SolverKind::stable, 40, false, 0, sideways)));
   BOOST_TEST(one == bits(run_rain(3, SolverKind::stable, 40, false, 0, sideways)));
   BOOST_TEST(one != bits(run_rain(1, SolverKind::stable, 40, false)));  // (the sideways pull changes the run)

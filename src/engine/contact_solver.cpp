@@ -900,9 +900,9 @@ void ContactSolver::relax(Components& k, Vector g, const SolverSettings& s, bool
 // sign) as long as the other component's difference times 0 is 0, not NaN:
 // every body's velocity within ±1e300 (`tame`, looked at once for passes in
 // a row that skip: a pass that runs may change them). A settled pile's x
-// rows hold nothing: its two
-// sideways passes, three quarters of the passes' rows, are not run (the
-// settled rain of 100 000 on one thread: 8.9 -> 8.0 ms a step).
+// rows hold nothing: its two sideways passes, three quarters of the passes'
+// rows, are not run (the settled rain of 100 000 on one thread: 8.9 -> 8.0
+// ms a step).
 bool ContactSolver::skips_pass(const Components& k, Vector down, bool& tame) {
   if (!keeps_unchanged) return false;  // (the browser's build, short of room, runs them: the same bits)
   const bool x = support_sign(0, down) != 0, y = support_sign(2, down) != 0;
@@ -988,9 +988,8 @@ void ContactSolver::schedule(const Components& k, Vector g, bool kept_all) {
       friction_paired_[i] = same_level(a, b) && (contacts_[a].axis >= 2) == (contacts_[b].axis >= 2);
     }
   });
-  for (const auto& [from, cut] : {std::pair{std::size_t{0}, cut_[0]}, std::pair{x_rows_, cut_[1]}})
-    for (const std::size_t end : {from + cut.below, from + cut.below + cut.above, from + cut.below + cut.above + cut.across})
-      if (end != 0) paired_[end - 1] = 0;
+  for (const std::size_t end : {x_below_, x_below_ + x_above_, x_rows_, by_axis_.size()})
+    if (end != 0) paired_[end - 1] = 0;
   if (!friction_paired_.empty()) friction_paired_.back() = 0;
 #endif
   scheduled_ = true;  // (last: an allocation that throws above leaves no order taken for made)
@@ -1048,45 +1047,36 @@ void ContactSolver::order_chunk(std::size_t start, std::size_t end, LevelScratch
 // back a sweep at the cut (the landing rain of 100 000, rain_phase: 9.6 ->
 // 25.7 ms a step, its piles sinking into each other and projected apart).
 void ContactSolver::order_by_axis() {
-  by_axis_.resize(order_.size());
-  std::size_t n = 0;
-  for (const bool y : {false, true}) {
-    const std::size_t from = n;
-    for (const std::uint32_t i : order_)
-      if ((contacts_[i].axis >= 2) == y) by_axis_[n++] = i;
-    const std::size_t rows = n - from;
-    if (!y) x_rows_ = n;
-    cut_[y] = y ? RowCut{rows, 0, 0} : RowCut{0, rows, 0};  // (uncut: the x rows on one thread, the y rows on the other)
-  }
-  const std::size_t y_rows = order_.size() - x_rows_;
-  if (x_rows_ >= cut_rows && x_rows_ > y_rows) cut_[0] = cut_axis(0, x_rows_, (x_rows_ - y_rows) / 2);
-}
-
-// by_axis_[from, to) (one axis' rows, in order_) in its three stretches: the
-// cut is the lowest slot below which the rows' higher slots leave `wanted`
-// rows or fewer (a count a slot, no sort).
-ContactSolver::RowCut ContactSolver::cut_axis(std::size_t from, std::size_t to, std::size_t wanted) {
-  const std::span<std::uint32_t> rows(by_axis_.begin() + static_cast<std::ptrdiff_t>(from),
-                                      by_axis_.begin() + static_cast<std::ptrdiff_t>(to));
-  const auto high = [&](std::uint32_t i) { return std::max(slot_of_[contacts_[i].c], slot_of_[contacts_[i].b]); };
-  // (schedule()'s table, all 0 between its uses, sized a slot each, and left so.)
-  std::vector<std::uint32_t>& rows_at = level_scratch_[0].last_level;
-  for (const std::uint32_t i : rows) ++rows_at[high(i)];
+  constexpr int all_x = 3, y = 4;  // what append() takes besides a side of the cut
   std::uint32_t cut = 0;
-  for (std::size_t below = 0; below + rows_at[cut] <= wanted;) below += rows_at[cut++];
-  for (const std::uint32_t i : rows) rows_at[high(i)] = 0;
   const auto side = [&](std::uint32_t i) {  // 0 below the cut, 1 not, 2 across
     const bool c = slot_of_[contacts_[i].c] < cut, b = slot_of_[contacts_[i].b] < cut;
     return c != b ? 2 : c ? 0 : 1;
   };
-  cut_rows_.resize(rows.size());
-  std::copy(rows.begin(), rows.end(), cut_rows_.begin());
-  std::array<std::size_t, 3> count{};
   std::size_t n = 0;
-  for (int stretch = 0; stretch < 3; ++stretch)
-    for (const std::uint32_t i : cut_rows_)
-      if (side(i) == stretch) rows[n++] = i, ++count[static_cast<std::size_t>(stretch)];
-  return {count[0], count[1], count[2]};
+  by_axis_.resize(order_.size());
+  const auto append = [&](int rows) {
+    for (const std::uint32_t i : order_)
+      if (rows == y ? contacts_[i].axis >= 2 : contacts_[i].axis < 2 && (rows == all_x || side(i) == rows))
+        by_axis_[n++] = i;
+  };
+  append(all_x);
+  x_rows_ = n, x_below_ = 0, x_above_ = n;
+  const std::size_t y_rows = order_.size() - x_rows_;
+  if (x_rows_ >= cut_x_rows && x_rows_ > y_rows) {
+    // The lowest slot below which the rows' higher slots leave as many rows as wanted (a count a slot).
+    std::vector<std::uint32_t>& rows_at = level_scratch_[0].last_level;  // (schedule()'s, all 0 again; it assigns it before each use)
+    for (std::size_t r = 0; r < x_rows_; ++r)
+      ++rows_at[std::max(slot_of_[contacts_[by_axis_[r]].c], slot_of_[contacts_[by_axis_[r]].b])];
+    for (std::size_t below = 0; below + rows_at[cut] <= (x_rows_ - y_rows) / 2;) below += rows_at[cut++];
+    n = 0;
+    append(0);
+    x_below_ = n;
+    append(1);
+    x_above_ = n - x_below_;
+    append(2);
+  }
+  append(y);
 }
 
 // The rows' order: without friction, a row reads and changes one velocity
@@ -1281,42 +1271,37 @@ void ContactSolver::iterate(const SolverSettings& s) {
       return sweep_axis(rows.subspan(from, count), lambdas.subspan(from, count), paired.subspan(from, count),
                         axis_bodies_[static_cast<std::size_t>(axis)]);
     };
-    const std::array<std::size_t, 2> start{0, x_rows_};
-    // Stretch k (0 below, 1 above, 2 across: order_by_axis) of an axis' rows, swept.
-    const auto stretch = [&](int axis, int k) {
-      const RowCut& c = cut_[static_cast<std::size_t>(axis)];
-      const std::size_t at = start[static_cast<std::size_t>(axis)] + (k > 0 ? c.below : 0) + (k > 1 ? c.above : 0);
-      return sweep(axis, at, k == 0 ? c.below : k == 1 ? c.above : c.across);
-    };
+    const std::size_t below = x_below_, above = x_above_, across = x_rows_ - below - above;
+    const std::size_t y_rows = rows.size() - x_rows_;
     Workers& w = workers_or_one(workers_);
     const bool together = has_threads && w.splits(rows.size(), min_parallel_items);
     std::array<std::uint8_t, 2> last{changed, changed};  // by axis: what its last sweep found
     const auto live = [&](std::size_t axis) { return (last[axis] & changed) != 0; };
     for (int it = 0; it < s.iterations && (live(0) || live(1)); ++it) {
-      std::array<std::uint8_t, 6> found{};  // by axis, then stretch
-      const auto run = [&](int axis, int k) {
-        const auto a = static_cast<std::size_t>(axis);
-        found[3 * a + static_cast<std::size_t>(k)] = live(a) ? stretch(axis, k) : last[a];
-      };
 #if PHYSICS_HAS_THREADS
       // The x rows done (a pile's, after a sweep or two): the y rows' sweeps left on both threads.
-      if (together && !live(0) && rows.size() - x_rows_ >= pipeline_rows) {
-        const std::size_t y = rows.size() - x_rows_;
-        last[1] = pipelined_sweeps(w, rows.subspan(x_rows_, y), lambdas.subspan(x_rows_, y), paired.subspan(x_rows_, y),
+      if (together && !live(0) && y_rows >= pipeline_rows) {
+        last[1] = pipelined_sweeps(w, rows.subspan(x_rows_), lambdas.subspan(x_rows_), paired.subspan(x_rows_),
                                    s.iterations - it);
         break;
       }
 #endif
       if (together && live(0)) {
-        w.run([&](int t) {  // the first stretches on one thread, the second on the other
-          if (t < 2) run(0, t), run(1, t);
+        std::array<std::uint8_t, 3> x{};
+        std::uint8_t y = last[1];
+        w.run([&](int t) {  // (order_by_axis: the stretches each thread sweeps)
+          if (t == 0) {
+            x[0] = sweep(0, 0, below);
+            if (live(1)) y = sweep(1, x_rows_, y_rows);
+          }
+          if (t == 1) x[1] = sweep(0, below, above);
         });
-        run(0, 2), run(1, 2);
+        x[2] = sweep(0, below + above, across);
+        last = {static_cast<std::uint8_t>(x[0] | x[1] | x[2]), y};
       } else {
-        found[0] = live(0) ? sweep(0, 0, x_rows_) : last[0];
-        found[3] = live(1) ? sweep(1, x_rows_, rows.size() - x_rows_) : last[1];
+        if (live(0)) last[0] = sweep(0, 0, x_rows_);
+        if (live(1)) last[1] = sweep(1, x_rows_, y_rows);
       }
-      for (std::size_t axis = 0; axis < 2; ++axis) last[axis] = found[3 * axis] | found[3 * axis + 1] | found[3 * axis + 2];
     }
     for (std::size_t axis = 0; axis < 2; ++axis) axis_at_targets_[axis] = last[axis] == 0;
   } else {

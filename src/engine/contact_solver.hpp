@@ -215,12 +215,12 @@ class ContactSolver {
   std::vector<WarmImpulse> warm_impulses() const;
   void restore(std::span<const WarmImpulse> impulses);
 
-  // How the last order cut the frictionless rows of an axis (0: x, 1: y;
-  // order_by_axis()): none across where they were not cut. For the tests.
-  struct RowCut {
+  // How the frictionless x rows of the last order were cut (order_by_axis()):
+  // all above and none across where they were not. For the tests.
+  struct XRowCut {
     std::size_t below, above, across;
   };
-  RowCut row_cut(int axis) const { return cut_[static_cast<std::size_t>(axis)]; }
+  XRowCut x_row_cut() const { return {x_below_, x_above_, x_rows_ - x_below_ - x_above_}; }
 
   // Whether the friction sweep solves four rows at once with AVX2, where the
   // processor has it (else two with SSE2): the same bits either way. This
@@ -433,12 +433,10 @@ class ContactSolver {
   std::vector<std::uint32_t> order_;       // contacts in the iterations' order
   std::vector<std::uint32_t> by_axis_;     // order_'s x rows, then its y rows (row_order(), order_by_axis())
   std::size_t x_rows_ = 0;                 // how many of by_axis_ are x rows
-  std::array<RowCut, 2> cut_{};            // by axis: its rows' stretches, in by_axis_'s order (order_by_axis())
-  // How many rows of an axis a world needs for them to be cut (order_by_axis()).
-  static constexpr std::size_t cut_rows = min_parallel_items;
+  std::size_t x_below_ = 0, x_above_ = 0;  // of those, how many below the cut, how many above (order_by_axis())
+  // How many x rows a world needs for them to be cut (order_by_axis()).
+  static constexpr std::size_t cut_x_rows = min_parallel_items;
   void order_by_axis();
-  RowCut cut_axis(std::size_t from, std::size_t to, std::size_t wanted);
-  std::vector<std::uint32_t> cut_rows_;  // cut_axis()'s copy of the rows it reorders
   std::vector<std::uint8_t> paired_;       // by row of by_axis_: it and the next may be solved together
   std::vector<std::uint8_t> friction_paired_;  // the same by row of order_ (with SSE2: group_friction_rows)
   // By row of order_, with friction: how many rows from it the friction sweep
