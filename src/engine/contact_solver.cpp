@@ -13,6 +13,7 @@
 #include <bit>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <limits>
 #include <tuple>
 #include <type_traits>
@@ -859,19 +860,27 @@ void ContactSolver::warm_start_one(Components& k, std::size_t i, double jn, doub
 // contacts, not on velocities: both relaxations share it.
 void ContactSolver::relax(Components& k, Vector g, const SolverSettings& s, bool after_bounce) {
   load_rows(k, after_bounce);
-  if (friction_.empty())
-    iterate<false>(s);
+  const int threads = workers_ ? workers_->threads() : 1;
+  const auto sweeps = [&] {
+    if (friction_.empty())
+      iterate<false>(s);
+    else
+      iterate<true>(s);
+  };
+  const auto order = [&] {
+    support_order_ = shock_passes(k, contacts_, g, support_ids_, support_met_, threads), have_order_ = true;
+  };
+  if (has_threads && s.shock_propagation && !have_order_ && aside(contacts_.size()))
+    sweeps_beside(sweeps, order);
   else
-    iterate<true>(s);
+    sweeps();
   store_rows(k, after_bounce);
   if (!after_bounce && Vector::is_zero(g)) {
     islands_solve_.solve(k, contacts_, impulses_, friction_);
     axis_at_targets_ = {};  // (the velocities are the islands' now)
   }
   if (!s.shock_propagation) return;
-  const int threads = workers_ ? workers_->threads() : 1;
-  if (!have_order_)
-    support_order_ = shock_passes(k, contacts_, g, support_ids_, support_met_, threads), have_order_ = true;
+  if (!have_order_) order();
   const std::span<Vector> velocity(k.velocity);
   const std::span<const double> targets(targets_);
   bool tame = false;  // (skips_pass(): asked once until a pass runs)
@@ -890,6 +899,17 @@ void ContactSolver::relax(Components& k, Vector g, const SolverSettings& s, bool
         velocity[r.b] = velocity[r.b] - (target - vn) * n;
     });
   }
+}
+
+template <class Sweeps, class Order>
+void ContactSolver::sweeps_beside(Sweeps&& sweeps, Order&& order) {
+  struct Team {  // (the sweeps on this thread alone: no team for them to wake)
+    Workers*& workers;
+    Workers* const team = std::exchange(workers, nullptr);
+    ~Team() { workers = team; }
+  } team{workers_};
+  team.team->side_by_side(sweeps, order);
+  ++stats.orders_beside;
 }
 
 // Whether the bottom-up pass along `down` would change nothing: every row
@@ -1909,6 +1929,25 @@ bool ContactSolver::any_body_gained(const Components& k) const {
   return false;
 }
 
+// The bodies marked in seen_, by id, the marks cleared. Eight marks a word:
+// the contacts' bodies of a rain's landing rows (a few thousand of 100 000)
+// lie in runs of ids, and the words between are skipped whole (8 µs a call
+// where a sort of the ids took 31).
+void ContactSolver::list_marked(std::size_t n) {
+  bodies_.clear();
+  std::uint8_t* const seen = seen_.data();
+  std::size_t e = 0;
+  for (; e + 8 <= n; e += 8) {
+    std::uint64_t word;
+    std::memcpy(&word, seen + e, sizeof word);
+    if (word == 0) continue;
+    for (std::size_t i = e; i < e + 8; ++i)
+      if (seen[i]) bodies_.push_back(static_cast<EntityId>(i)), seen[i] = 0;
+  }
+  for (; e < n; ++e)
+    if (seen[e]) bodies_.push_back(static_cast<EntityId>(e)), seen[e] = 0;
+}
+
 // The islands of touching finite bodies (union-find over the contacts), and
 // per island the energies the guard needs: sums_, island_ of each body of
 // bodies_ (the finite bodies of the contacts, in increasing id order: the
@@ -1930,13 +1969,11 @@ void ContactSolver::island_energies(const Components& k) {
     if (w > 0.0 && !seen_[e]) seen_[e] = 1, bodies_.push_back(e);
   };
   for (const ContactConstraint& ct : contacts_) mark(ct.c, ct.wc), mark(ct.b, ct.wb);
-  if (keeps_unchanged && bodies_.size() * 16 < n) {  // (the browser's build, short of room, reads every mark)
+  if (keeps_unchanged && bodies_.size() * 128 < n) {  // (the browser's build, short of room, reads every mark)
     std::sort(bodies_.begin(), bodies_.end());
     for (const EntityId e : bodies_) seen_[e] = 0;
   } else {
-    bodies_.clear();
-    for (EntityId e = 0; e < n; ++e)
-      if (seen_[e]) bodies_.push_back(e), seen_[e] = 0;
+    list_marked(n);
   }
   // One IslandEnergy per island, numbered as their roots are first met.
   island_.resize(n);
@@ -2181,24 +2218,34 @@ void ContactSolver::project(Components& k, Vector g, const SolverSettings& s) {
       position_keys_next_[i] = {ct.c, ct.b, flags};
     }
   });
-  for (int it = 0; it < s.iterations; ++it) {
-    for (const PositionContact& ct : positions_) {
-      const double depth = -gap(k, ct) - s.slop;
-      if (!(depth > 0.0)) continue;
-      const Vector n = axis_normal[ct.axis];
-      const double push = s.projection * depth;
-      k.position[ct.c] = k.position[ct.c] + (push * ct.share_c) * n;
-      k.position[ct.b] = k.position[ct.b] - (push * ct.share_b) * n;
+  const auto sweeps = [&] {
+    for (int it = 0; it < s.iterations; ++it) {
+      for (const PositionContact& ct : positions_) {
+        const double depth = -gap(k, ct) - s.slop;
+        if (!(depth > 0.0)) continue;
+        const Vector n = axis_normal[ct.axis];
+        const double push = s.projection * depth;
+        k.position[ct.c] = k.position[ct.c] + (push * ct.share_c) * n;
+        k.position[ct.b] = k.position[ct.b] - (push * ct.share_b) * n;
+      }
     }
-  }
-  if (!s.shock_propagation) return;
+  };
+  if (!s.shock_propagation) return sweeps();
   // The order depends only on the contacts' bodies, axes and fixed ends, and
   // on gravity: a resting pile keeps it from substep to substep.
   position_keys_.swap(position_keys_next_);
   const int threads = s.workers ? s.workers->threads() : 1;
-  if (!have_position_order_ || g != position_g_ || position_keys_ != position_keys_next_)
+  const bool new_order = !have_position_order_ || g != position_g_ || position_keys_ != position_keys_next_;
+  const auto order = [&] {
     position_order_ = shock_passes(k, positions_, g, support_ids_, support_met_, threads), position_g_ = g,
     have_position_order_ = true;
+  };
+  if (has_threads && new_order && aside(positions_.size())) {
+    sweeps_beside(sweeps, order);
+  } else {
+    sweeps();
+    if (new_order) order();
+  }
   for (const ShockPass& pass : position_order_)
     run_pass(pass, s.workers, [&](const ShockRow& r) {
       const PositionContact& ct = positions_[r.index];

@@ -69,6 +69,17 @@ class Workers {
     task(0);
   }
 
+  // Runs a() on the calling thread and b() on a helper at once, then
+  // returns (one after the other on a team of one). Two pieces of a stage
+  // that do not touch each other's data; neither may use the team.
+  template <class A, class B>
+  void side_by_side(A&& a, B&& b) {
+    if constexpr (has_threads) {
+      if (threads_ > 1) return run([&](int t) { t == 0 ? a() : t == 1 ? b() : void(); });
+    }
+    a(), b();
+  }
+
   // Splits [0, n) into threads() contiguous ranges, in order, and runs
   // body(t, begin, end) on each at once; one range [0, n) on the calling
   // thread when n < min_items (a few microseconds of work is not worth
