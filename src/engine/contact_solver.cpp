@@ -584,20 +584,54 @@ void ContactSolver::changed_since_classified(const Components& k) {
     changed[e] = e >= known || differ != 0;
     if (changed[e]) was = {p, v, box, m, r, f};
   };
+  Workers& w = workers_or_one(workers_);
   // A pile has several pairs a body: then every body, in ranges, without the marks.
   if (pairs_.size() < n) {
-    bool any = false;
-    for (const Pair& p : pairs_)
-      for (const EntityId e : {p.c, p.b})
-        if (visited[e] != visit_) visited[e] = visit_, look(e), any = any || changed[e];
-    any_changed_ = any;
+    // On a team, each thread looks at the bodies of a range of ids, going
+    // over every pair: a body is looked at once, by one thread (a forming
+    // pile of 100 000: 0.9 ms a call on one thread, 1.7 calls a step).
+    const std::span<const Pair> pairs(pairs_);
+    const std::array<EntityId, max_threads + 1> cut = id_cuts(w, pairs);
+    any_changed_ = w.or_over_ranges(cut_count(w, pairs), 2, [&](int, std::size_t begin, std::size_t end) {
+      std::uint8_t any = 0;
+      for (std::size_t t = begin; t < end; ++t)
+        for (const Pair& p : pairs)
+          for (const EntityId e : {p.c, p.b})
+            if (e >= cut[t] && e < cut[t + 1] && visited[e] != visit_) visited[e] = visit_, look(e), any |= changed[e];
+      return any;
+    }) != 0;
     return;
   }
-  any_changed_ = workers_or_one(workers_).or_over_ranges(n, min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
+  any_changed_ = w.or_over_ranges(n, min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
     std::uint8_t any = 0;
     for (std::size_t e = begin; e < end; ++e) look(e), any |= changed[e];
     return any;
   });
+}
+
+// How many ranges of ids changed_since_classified() looks at `pairs`'
+// bodies in: one per thread of the team when they are enough to wake it.
+std::size_t ContactSolver::cut_count(const Workers& w, std::span<const Pair> pairs) {
+  return w.splits(pairs.size(), min_parallel_items) ? static_cast<std::size_t>(w.threads()) : 1;
+}
+
+// Where those ranges start, then the end (above every id): at quantiles of
+// (a sample of) the pairs' second bodies, so that each range has about as
+// many (their first bodies are often a floor's, all one id).
+std::array<EntityId, max_threads + 1> ContactSolver::id_cuts(const Workers& w, std::span<const Pair> pairs) {
+  const std::size_t ranges = cut_count(w, pairs);
+  std::array<EntityId, max_threads + 1> cut{};
+  constexpr std::size_t stride = 8;
+  std::vector<EntityId>& sample = cut_sample_;
+  sample.clear();
+  for (std::size_t i = 0; ranges > 1 && i < pairs.size(); i += stride) sample.push_back(pairs[i].b);
+  for (std::size_t t = 1; t < ranges; ++t) {
+    const auto nth = sample.begin() + static_cast<std::ptrdiff_t>(sample.size() * t / ranges);
+    std::nth_element(sample.begin(), nth, sample.end());
+    cut[t] = std::max(cut[t - 1], *nth);  // (in order: the ranges must not overlap)
+  }
+  cut[ranges] = std::numeric_limits<EntityId>::max();
+  return cut;
 }
 
 // What prepare() makes of pair i (its axis in axes_); keeps its normal speed.
