@@ -49,7 +49,9 @@ struct Options {
   std::vector<std::size_t> ours_only_gas{1000000};
   // Ours and Box2D v3.2 on two threads too (ours-2t right after ours,
   // box2d3-2t after box2d3) on the stable solver's scenes of at least this
-  // many bodies (0: never).
+  // many bodies (0: never). Ours and ours-2t alternate `repeats` times
+  // there: one pair of runs is one draw of the second core (a busy
+  // neighbour took it for a whole pair: the rain at 1.03 times one thread).
   std::size_t two_threads_from = 100000;
   // Runs of ours and of Box2D v3.2 on each scene of at most repeat_below
   // bodies (the tile maps but): each process runs fast or slow as the machine
@@ -324,7 +326,8 @@ const char* usage =
     "             [--map-sides 200,1000,2000 (the tiles scene's maps, cells a side)]\n"
     "             [--ours-only-gas 1000000 (gas sizes for ours alone; 0: none)] [--engines ours,box2d,chipmunk]\n"
     "             [--two-threads-from 100000 (ours-2t, ours on 2 threads, after ours on the stable solver's\n"
-    "             scenes of this many bodies and more, and box2d3-2t after box2d3; 0: never)]\n"
+    "             scenes of this many bodies and more, the two --repeats times in turns, and box2d3-2t\n"
+    "             after box2d3; 0: never)]\n"
     "             [--peers build/bench-peers (adds box2d3,chipmunk-release)] [--peer-sources TEXT]\n"
     "             [--steps 600] [--warmup 60] [--out bench/RESULTS.md]\n"
     "             [--compare 0|1] [--budget 30 (s per run)] [--phase-budget 150 (s)] [--isolate 0|1]\n"
@@ -556,10 +559,16 @@ Result run_one(const std::string& self, const std::string& engine, const Scene& 
   return o.isolate ? run_isolated(self, engine, s, o) : run(engine, s, o);
 }
 
+// Whether ours and Box2D v3.2 run on two threads too on scene s (Options::two_threads_from).
+bool two_threads(const Scene& s, const Options& o) {
+  return o.two_threads_from > 0 && s.resting && s.dynamic_count() >= o.two_threads_from;
+}
+
 // How many runs an engine gets on a scene (Options::repeats).
 int runs_of(const std::string& engine, const Scene& s, bool alone, const Options& o) {
   const bool repeated = !alone && !s.name.starts_with("tiles_") && s.dynamic_count() <= o.repeat_below;
-  return repeated && (engine == "ours" || engine == "box2d3") ? o.repeats : 1;
+  const bool paired = two_threads(s, o) && (engine == "ours" || engine == "ours-2t");
+  return (repeated && (engine == "ours" || engine == "box2d3")) || paired ? o.repeats : 1;
 }
 
 // The run of median time among an engine's runs (the lower middle of an even count).
@@ -577,7 +586,7 @@ void run_scene(const std::string& self, const Scene& s, bool alone, const Option
   for (const std::string& engine : o.engines) {
     if (alone && engine != "ours") continue;
     order.push_back(engine);
-    const bool two = o.two_threads_from > 0 && s.resting && s.dynamic_count() >= o.two_threads_from;
+    const bool two = two_threads(s, o);
     const std::string twin = engine + "-2t";  // ours-2t after ours, box2d3-2t after box2d3
     if ((engine == "ours" || engine == "box2d3") && two &&
         std::find(o.engines.begin(), o.engines.end(), twin) == o.engines.end())
@@ -643,7 +652,8 @@ void write_markdown(const Options& o, const std::string& command, const std::str
   for (const std::string& e : o.engines) md << "- " << engine_note(e, o) << ".\n";
   if (o.two_threads_from > 0 && std::find(o.engines.begin(), o.engines.end(), "ours-2t") == o.engines.end())
     md << "- " << engine_note("ours-2t", o) << ", run after `ours` on the stable solver's scenes of "
-       << o.two_threads_from << " bodies and more; its ÷ours is its time over ours on one thread.\n";
+       << o.two_threads_from << " bodies and more (the two " << o.repeats << " times there, in turns, each row "
+       << "the median run); its ÷ours is its time over ours on one thread.\n";
   if (o.two_threads_from > 0 && std::find(o.engines.begin(), o.engines.end(), "box2d3") != o.engines.end() &&
       std::find(o.engines.begin(), o.engines.end(), "box2d3-2t") == o.engines.end())
     md << "- " << engine_note("box2d3-2t", o) << ", run after `box2d3` on the same scenes; its ÷ours is its time "
