@@ -1965,8 +1965,8 @@ bool ContactSolver::any_body_gained(const Components& k) const {
 
 // The bodies marked in seen_, by id, the marks cleared. Eight marks a word:
 // the contacts' bodies of a rain's landing rows (a few thousand of 100 000)
-// lie in runs of ids, and the words between are skipped whole (8 µs a call
-// where a sort of the ids took 31).
+// lie in runs of ids, and the words between are skipped whole (the guard's
+// islands at 100 000 bodies: 70 -> 45 µs a call against sorting the ids).
 void ContactSolver::list_marked(std::size_t n) {
   bodies_.clear();
   std::uint8_t* const seen = seen_.data();
