@@ -94,6 +94,30 @@ BOOST_AUTO_TEST_CASE(a_bad_number_of_threads_is_refused) {
   destroy_world(w);
 }
 
+// Every body's position and velocity, then the world destroyed.
+std::vector<double> final_state(WorldId w) {
+  std::vector<double> state;
+  for (const BodyId id : bodies(w))
+    for (const Vec2 v : {position(id), velocity(id)}) state.push_back(v.x), state.push_back(v.y);
+  destroy_world(w);
+  return state;
+}
+
+// A stable world on `threads` under gravity down y, with a fixed floor
+// `width` px wide at y = 600.
+WorldId world_on_floor(int threads, double width) {
+  WorldDef def = default_world_def();
+  def.gravity = {0.0, 0.001};
+  def.solver = SolverKind::stable;
+  def.threads = threads;
+  const WorldId w = create_world(def);
+  BodyDef floor = default_body_def();
+  floor.mass = fixed_mass;
+  floor.position = {0, 600}, floor.size = {width, 40};
+  create_body(w, floor);
+  return w;
+}
+
 // A walled box: a settled pile of rows (contacts far beyond
 // min_parallel_items) and squares raining onto it (impacts, bounces, apart
 // pairs), under `solver`, with friction on every other body (or none:
@@ -145,11 +169,7 @@ std::vector<double> run_rain(int threads, SolverKind solver, int steps, bool fri
     if (cut && s == 0) *cut = api::world(w).world->contact_solver.x_row_cut();
   }
   if (pipelined) *pipelined = api::world(w).world->contact_solver.stats.pipelined;
-  std::vector<double> state;
-  for (const BodyId id : bodies(w))
-    for (const Vec2 v : {position(id), velocity(id)}) state.push_back(v.x), state.push_back(v.y);
-  destroy_world(w);
-  return state;
+  return final_state(w);
 }
 
 // Bit for bit (a NaN or a -0 differs too: the bits are compared).
@@ -217,15 +237,7 @@ BOOST_AUTO_TEST_CASE(the_y_rows_sweeps_on_two_threads_give_the_same_bits) {
 // is made on the helper while this thread sweeps (sweeps_beside). The same
 // bits as one thread's, which makes them after its sweeps.
 std::vector<double> run_landing(int threads, std::int64_t* beside) {
-  WorldDef def = default_world_def();
-  def.gravity = {0.0, 0.001};
-  def.solver = SolverKind::stable;
-  def.threads = threads;
-  const WorldId w = create_world(def);
-  BodyDef floor = default_body_def();
-  floor.mass = fixed_mass;
-  floor.position = {0, 600}, floor.size = {1000, 40};
-  create_body(w, floor);
+  const WorldId w = world_on_floor(threads, 1000);
   BodyDef b = default_body_def();
   b.size = {10, 10};
   b.restitution = 0.3;
@@ -238,11 +250,7 @@ std::vector<double> run_landing(int threads, std::int64_t* beside) {
     }
   for (int s = 0; s < 80; ++s) step(w);
   *beside = api::world(w).world->contact_solver.stats.orders_beside;
-  std::vector<double> state;
-  for (const BodyId id : bodies(w))
-    for (const Vec2 v : {position(id), velocity(id)}) state.push_back(v.x), state.push_back(v.y);
-  destroy_world(w);
-  return state;
+  return final_state(w);
 }
 
 BOOST_AUTO_TEST_CASE(the_bottom_up_order_made_beside_the_sweeps_gives_the_same_bits) {
@@ -259,15 +267,7 @@ BOOST_AUTO_TEST_CASE(the_bottom_up_order_made_beside_the_sweeps_gives_the_same_b
 // bodies of the pairs are looked at in ranges of ids, one a thread
 // (ContactSolver::changed_since_classified). The same bits on any team.
 std::vector<double> run_sparse(int threads) {
-  WorldDef def = default_world_def();
-  def.gravity = {0.0, 0.001};
-  def.solver = SolverKind::stable;
-  def.threads = threads;
-  const WorldId w = create_world(def);
-  BodyDef floor = default_body_def();
-  floor.mass = fixed_mass;
-  floor.position = {0, 600}, floor.size = {4000, 40};
-  create_body(w, floor);
+  const WorldId w = world_on_floor(threads, 4000);
   BodyDef b = default_body_def();
   b.size = {10, 10};
   b.restitution = 0.2;
@@ -279,11 +279,7 @@ std::vector<double> run_sparse(int threads) {
     create_body(w, b);
   }
   for (int s = 0; s < 20; ++s) step(w);
-  std::vector<double> state;
-  for (const BodyId id : bodies(w))
-    for (const Vec2 v : {position(id), velocity(id)}) state.push_back(v.x), state.push_back(v.y);
-  destroy_world(w);
-  return state;
+  return final_state(w);
 }
 
 BOOST_AUTO_TEST_CASE(the_bodies_of_fewer_pairs_than_bodies_looked_at_by_ranges_give_the_same_bits) {
