@@ -591,8 +591,10 @@ void ContactSolver::changed_since_classified(const Components& k) {
     // over every pair: a body is looked at once, by one thread (a forming
     // pile of 100 000: 0.9 ms a call on one thread, 1.7 calls a step).
     const std::span<const Pair> pairs(pairs_);
-    const std::array<EntityId, max_threads + 1> cut = id_cuts(w, pairs);
-    any_changed_ = w.or_over_ranges(cut_count(w, pairs), 2, [&](int, std::size_t begin, std::size_t end) {
+    const std::size_t ranges = w.splits(pairs.size(), min_parallel_items) ? static_cast<std::size_t>(w.threads()) : 1;
+    const std::array<EntityId, max_threads + 1> cut = id_cuts(pairs, ranges);
+    // (One item a range of ids: the team splits them from two.)
+    any_changed_ = w.or_over_ranges(ranges, 2, [&](int, std::size_t begin, std::size_t end) {
       std::uint8_t any = 0;
       for (std::size_t t = begin; t < end; ++t)
         for (const Pair& p : pairs)
@@ -609,17 +611,11 @@ void ContactSolver::changed_since_classified(const Components& k) {
   });
 }
 
-// How many ranges of ids changed_since_classified() looks at `pairs`'
-// bodies in: one per thread of the team when they are enough to wake it.
-std::size_t ContactSolver::cut_count(const Workers& w, std::span<const Pair> pairs) {
-  return w.splits(pairs.size(), min_parallel_items) ? static_cast<std::size_t>(w.threads()) : 1;
-}
-
-// Where those ranges start, then the end (above every id): at quantiles of
-// (a sample of) the pairs' second bodies, so that each range has about as
-// many (their first bodies are often a floor's, all one id).
-std::array<EntityId, max_threads + 1> ContactSolver::id_cuts(const Workers& w, std::span<const Pair> pairs) {
-  const std::size_t ranges = cut_count(w, pairs);
+// Where `ranges` ranges of ids start (changed_since_classified(), one a
+// thread), then the end (above every id): at quantiles of (a sample of) the
+// pairs' second bodies, so that each range has about as many (their first
+// bodies are often a floor's, all one id).
+std::array<EntityId, max_threads + 1> ContactSolver::id_cuts(std::span<const Pair> pairs, std::size_t ranges) {
   std::array<EntityId, max_threads + 1> cut{};
   constexpr std::size_t stride = 8;
   std::vector<EntityId>& sample = cut_sample_;
@@ -904,7 +900,7 @@ void ContactSolver::relax(Components& k, Vector g, const SolverSettings& s, bool
   const auto order = [&] {
     support_order_ = shock_passes(k, contacts_, g, support_ids_, support_met_, threads), have_order_ = true;
   };
-  if (has_threads && s.shock_propagation && !have_order_ && aside(contacts_.size()))
+  if (s.shock_propagation && !have_order_ && aside(contacts_.size()))
     sweeps_beside(sweeps, order);
   else
     sweeps();
@@ -937,12 +933,12 @@ void ContactSolver::relax(Components& k, Vector g, const SolverSettings& s, bool
 
 template <class Sweeps, class Order>
 void ContactSolver::sweeps_beside(Sweeps&& sweeps, Order&& order) {
-  struct Team {  // (the sweeps on this thread alone: no team for them to wake)
+  struct Alone {  // the sweeps on this thread alone (no team for them to wake), the team back after
     Workers*& workers;
     Workers* const team = std::exchange(workers, nullptr);
-    ~Team() { workers = team; }
-  } team{workers_};
-  team.team->side_by_side(sweeps, order);
+    ~Alone() { workers = team; }
+  } alone{workers_};
+  alone.team->side_by_side(sweeps, order);
   ++stats.orders_beside;
 }
 
@@ -2274,7 +2270,7 @@ void ContactSolver::project(Components& k, Vector g, const SolverSettings& s) {
     position_order_ = shock_passes(k, positions_, g, support_ids_, support_met_, threads), position_g_ = g,
     have_position_order_ = true;
   };
-  if (has_threads && new_order && aside(positions_.size())) {
+  if (new_order && aside(positions_.size())) {
     sweeps_beside(sweeps, order);
   } else {
     sweeps();

@@ -265,8 +265,7 @@ class ContactSolver {
   std::vector<ClassifiedBody> classified_bodies_;  // by entity id
   std::vector<std::uint8_t> changed_;              // by entity id, for the bodies of pairs_: differs from classified_bodies_
   std::vector<EntityId> cut_sample_;               // id_cuts()' scratch
-  static std::size_t cut_count(const Workers& w, std::span<const Pair> pairs);
-  std::array<EntityId, max_threads + 1> id_cuts(const Workers& w, std::span<const Pair> pairs);
+  std::array<EntityId, max_threads + 1> id_cuts(std::span<const Pair> pairs, std::size_t ranges);
   std::vector<std::uint32_t> visited_;             // by entity id: the call of changed_since_classified() that looked at it
   std::vector<std::uint8_t> moved_;                // by entity id (any_overlap()): place differs from classified_bodies_
   // any_overlap()'s: whether some classified pair's separation (axes_) is
