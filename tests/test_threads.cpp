@@ -232,6 +232,43 @@ BOOST_AUTO_TEST_CASE(the_y_rows_sweeps_on_two_threads_give_the_same_bits) {
   BOOST_TEST(one == bits(run_rain(2, SolverKind::stable, 30, false, 1, down, nullptr, 48)));
 }
 
+// A pile built from the top down, as a rain lands (its bottom row's ids
+// last), heavy rows on light ones so that it sinks into itself beyond the
+// slop, in a walled box without friction: the projection's sweeps run on two
+// threads over its 9 000-odd contacts (pipelined_projection), and so do the
+// relaxation's y rows (pipelined_sweeps), each with the floor's and walls'
+// contacts moved among their bodies' (SweepPipeline::defer_one_ended).
+std::vector<double> run_top_down_pile(int threads, SolverStats* stats) {
+  const WorldId w = world_on_floor(threads, 800);
+  BodyDef wall = default_body_def();
+  wall.mass = fixed_mass;
+  for (const double x : {-40.0, 600.0}) {
+    wall.position = {x, 0}, wall.size = {40, 600};
+    create_body(w, wall);
+  }
+  BodyDef b = default_body_def();
+  b.size = {10, 10};
+  for (int row = 79; row >= 0; --row)  // 4 800 squares, the top row's first
+    for (int col = 0; col < 60; ++col) {
+      b.position = {col * 9.96, 590.04 - row * 9.96};  // (0.04 px into each neighbour)
+      b.mass = row % 2 ? 20.0 : 1.0;
+      create_body(w, b);
+    }
+  for (int s = 0; s < 12; ++s) step(w);
+  *stats = api::world(w).world->contact_solver.stats;
+  return final_state(w);
+}
+
+BOOST_AUTO_TEST_CASE(the_projection_and_the_y_rows_on_two_threads_give_the_same_bits) {
+  SolverStats stats;
+  const auto one = bits(run_top_down_pile(1, &stats));
+  BOOST_TEST(stats.projections_pipelined == 0);
+  BOOST_TEST(one == bits(run_top_down_pile(2, &stats)));
+  BOOST_TEST(stats.projections_pipelined > 5);
+  BOOST_TEST(stats.pipelined > 5);
+  BOOST_TEST(one == bits(run_top_down_pile(3, &stats)));
+}
+
 // A rain's first landings: a few hundred contacts at a time, too few for
 // the team's sweeps, so a new bottom-up order (velocity and position stages)
 // is made on the helper while this thread sweeps (sweeps_beside). The same

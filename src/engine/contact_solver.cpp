@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <cstring>
 #include <limits>
+#include <numeric>
 #include <tuple>
 #include <type_traits>
 
@@ -995,7 +996,7 @@ void ContactSolver::schedule(const Components& k, Vector g, bool kept_all) {
   if (scheduled_ && g == topology_g_ && same_topology_) return;
   have_order_ = false;
 #if PHYSICS_HAS_THREADS
-  pipeline_.made = false;
+  pipeline_.forget();
 #endif
   topology_g_ = g;
   for (const EntityId e : slot_body_)
@@ -1127,6 +1128,14 @@ void ContactSolver::order_by_axis() {
     append(2);
   }
   append(y);
+#if PHYSICS_HAS_THREADS
+  // The y rows' sweeps may go on two threads (pipelined_sweeps): the floor's rows among their bodies'.
+  if (workers_ && workers_->threads() > 1 && y_rows >= pipeline_rows)
+    pipeline_.defer_one_ended(std::span(by_axis_).subspan(x_rows_), slot_body_.size(), [&](std::uint32_t i) {
+      const ContactConstraint& ct = contacts_[i];
+      return SweepPipeline::Ends{slot_of_[ct.c], slot_of_[ct.b], topology_[i].flags >> 4 & 3};
+    });
+#endif
 }
 
 // The rows' order: without friction, a row reads and changes one velocity
@@ -1362,76 +1371,23 @@ void ContactSolver::iterate(const SolverSettings& s) {
 }
 
 #if PHYSICS_HAS_THREADS
-// The y rows in blocks of about pipeline_block rows (a pair of rows solved
-// together stays in one block), and for each block the last block whose
-// rows share a body with its rows, fixed ones included (so that two
-// threads never write one body's values at once).
-void ContactSolver::plan_pipeline(std::span<const SolverRow> rows, std::span<const std::uint8_t> paired) {
-  Pipeline& p = pipeline_;
-  p.start.clear();
-  for (std::size_t at = 0; at < rows.size();) {
-    p.start.push_back(static_cast<std::uint32_t>(at));
-    at = std::min(rows.size(), at + pipeline_block);
-    while (at < rows.size() && paired[at - 1]) ++at;
-  }
-  const std::size_t blocks = p.start.size();
-  p.start.push_back(static_cast<std::uint32_t>(rows.size()));
-  last_block_.assign(slot_body_.size(), 0);
-  for (std::uint32_t b = 0; b < blocks; ++b)
-    for (std::size_t r = p.start[b]; r < p.start[b + 1]; ++r) last_block_[rows[r].c] = last_block_[rows[r].b] = b;
-  p.reach.resize(blocks);
-  for (std::uint32_t b = 0; b < blocks; ++b) {
-    std::uint32_t reach = b;
-    for (std::size_t r = p.start[b]; r < p.start[b + 1]; ++r)
-      reach = std::max({reach, last_block_[rows[r].c], last_block_[rows[r].b]});
-    p.reach[b] = reach;
-  }
-  p.made = true;
-}
-
-// `sweeps` sweeps of the y rows, or up to the first that changes nothing,
-// on two threads: thread t takes the sweeps t, t + 2..., block by block,
-// and starts a block once the sweep before its own (the other thread's) is
-// past every block sharing a body with it. Every body then meets its rows
-// in the order of the sweeps one after the other: the same bits as one
-// thread. Each thread's progress is one count, its blocks done over its
-// sweeps; a sweep that changes nothing ends both (the sweeps after it
-// change nothing either: iterate<false>). Returns what the last sweep
-// that counts found (sweep_axis).
+// `sweeps` sweeps of the y rows, or up to the first that changes nothing
+// (the sweeps after it change nothing either: iterate<false>), on two
+// threads (engine/sweep_pipeline.hpp). The rows in blocks of about
+// pipeline_block (a pair solved together kept in one), their bodies fixed
+// ones included (so that two threads never write one body's values at
+// once). Returns what the last sweep that counts found (sweep_axis).
 std::uint8_t ContactSolver::pipelined_sweeps(Workers& w, std::span<const SolverRow> rows, std::span<double> lambdas,
                                              std::span<const std::uint8_t> paired, int sweeps) {
-  if (!pipeline_.made) plan_pipeline(rows, paired);
+  if (!pipeline_.planned())
+    pipeline_.plan(rows.size(), slot_body_.size(), pipeline_block,
+                   [&](std::size_t r, auto&& body) { body(rows[r].c), body(rows[r].b); },
+                   [&](std::size_t r) { return paired[r] != 0; });
   ++stats.pipelined;
-  const Pipeline& p = pipeline_;
-  const std::uint64_t blocks = p.reach.size();
   const std::span<AxisBody> bodies(axis_bodies_[1]);
-  std::vector<std::uint8_t> found(static_cast<std::size_t>(sweeps), 0);
-  std::atomic<int> stop{sweeps};  // the first sweep that changed nothing, once one has
-  TeamProgress progress;          // thread t has done blocks [0, step) of sweep after sweep (its sweeps' blocks in a row)
-  constexpr std::uint64_t done = ~std::uint64_t{0};
-  w.run([&](int t) noexcept {
-    const int other = 1 - t;
-    for (int sweep = t; t < 2 && sweep < sweeps && sweep <= stop.load(std::memory_order_acquire); sweep += 2) {
-      const std::uint64_t before = static_cast<std::uint64_t>(sweep / 2) * blocks;  // its blocks of its earlier sweeps
-      std::uint8_t bits = 0;
-      for (std::uint64_t b = 0; b < blocks; ++b) {
-        // The other thread's sweep (sweep - 1) past block reach[b]: its count, over its earlier sweeps too.
-        if (sweep > 0) progress.wait_for(other, static_cast<std::uint64_t>((sweep - 1) / 2) * blocks + p.reach[b] + 1);
-        if (stop.load(std::memory_order_acquire) < sweep) break;
-        const std::size_t from = p.start[b], count = p.start[b + 1] - from;
-        bits |= sweep_axis(rows.subspan(from, count), lambdas.subspan(from, count), paired.subspan(from, count), bodies);
-        progress.reach(t, before + b + 1);
-      }
-      if (stop.load(std::memory_order_acquire) < sweep) break;
-      found[static_cast<std::size_t>(sweep)] = bits;
-      if (!(bits & changed)) {
-        for (int was = stop.load(); sweep < was && !stop.compare_exchange_weak(was, sweep);) {}
-        break;
-      }
-    }
-    progress.reach(t, done);  // (what the other waits for comes no more)
+  return pipeline_.run(w, sweeps, changed, [&](std::size_t from, std::size_t count) {
+    return sweep_axis(rows.subspan(from, count), lambdas.subspan(from, count), paired.subspan(from, count), bodies);
   });
-  return found[static_cast<std::size_t>(std::min(stop.load(), sweeps - 1))];
 }
 #endif
 
@@ -2131,7 +2087,7 @@ bool ContactSolver::prepare_positions(const Components& k, const SolverSettings&
                        [&](int, std::size_t begin, std::size_t end, std::vector<PositionContact>& part) {
                          for (std::size_t i = begin; i < end; ++i)
                            if (!(axes_[i].separation > s.margin))
-                             part.push_back({pairs_[i].c, pairs_[i].b, axes_[i].axis, 0.0, 0.0, 0.0, 0.0});
+                             part.push_back({pairs_[i].c, pairs_[i].b, axes_[i].axis, 0, 0.0, 0.0, 0.0, 0.0});
                        });
   return true;
 }
@@ -2230,8 +2186,24 @@ inline double ContactSolver::gap(const Components& k, const PositionContact& ct)
   return ct.axis & 1 ? -(d + ct.sizes) : d;
 }
 
+// One contact of the projection: its bodies pushed apart by `projection`
+// of its overlap beyond the slop, each by its share; whether it pushed. A
+// fixed end is not written (it would take (push·0)·n, which leaves it as it
+// is unless a coordinate is -0: then it moves, links()), so that threads
+// sweeping at once never write the floor that all their blocks read.
+inline bool ContactSolver::project_contact(Components& k, const PositionContact& ct, const SolverSettings& s) {
+  const double depth = -gap(k, ct) - s.slop;
+  if (!(depth > 0.0)) return false;
+  const Vector n = axis_normal[ct.axis];
+  const double push = s.projection * depth;
+  if (ct.moves & 1) k.position[ct.c] = k.position[ct.c] + (push * ct.share_c) * n;
+  if (ct.moves & 2) k.position[ct.b] = k.position[ct.b] - (push * ct.share_b) * n;
+  return true;
+}
+
 // Non-linear Gauss-Seidel on positions, shared in proportion to inverse
-// masses, then the same bottom-up pass as the velocities'.
+// masses, then the same bottom-up pass as the velocities'. A sweep that
+// pushes nothing ends the sweeps (the next would find the same overlaps).
 void ContactSolver::project(Components& k, Vector g, const SolverSettings& s) {
   position_keys_next_.resize(positions_.size());
   workers_or_one(s.workers).for_ranges(positions_.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
@@ -2244,28 +2216,37 @@ void ContactSolver::project(Components& k, Vector g, const SolverSettings& s) {
       const double wc = inverse_mass(k.mass[ct.c]), wb = inverse_mass(k.mass[ct.b]);
       const double w = wc + wb;
       ct.share_c = wc / w, ct.share_b = wb / w;
-      const auto flags = static_cast<std::uint32_t>(ct.axis) | (wc == 0.0) << 2 | (wb == 0.0) << 3;
+      ct.moves = static_cast<std::uint8_t>(links(wc, k.position[ct.c]) | links(wb, k.position[ct.b]) << 1);
+      const auto flags = static_cast<std::uint32_t>(ct.axis) | (wc == 0.0) << 2 | (wb == 0.0) << 3 | ct.moves << 4;
       position_keys_next_[i] = {ct.c, ct.b, flags};
     }
   });
+  // The order and the sweeps' plan depend only on the contacts' bodies,
+  // axes and moving ends, and (the order) on gravity: a resting pile keeps
+  // them from substep to substep.
+  position_keys_.swap(position_keys_next_);
+  const bool same_contacts = have_position_keys_ && position_keys_ == position_keys_next_;
+  have_position_keys_ = true;
+#if PHYSICS_HAS_THREADS
+  if (!same_contacts) projection_pipeline_.forget();
+#endif
   const auto sweeps = [&] {
+#if PHYSICS_HAS_THREADS
+    Workers& w = workers_or_one(workers_);  // (none beside an order: sweeps_beside)
+    if (w.splits(positions_.size(), min_parallel_items) && s.iterations > 0) return pipelined_projection(k, s, w);
+#endif
     for (int it = 0; it < s.iterations; ++it) {
-      for (const PositionContact& ct : positions_) {
-        const double depth = -gap(k, ct) - s.slop;
-        if (!(depth > 0.0)) continue;
-        const Vector n = axis_normal[ct.axis];
-        const double push = s.projection * depth;
-        k.position[ct.c] = k.position[ct.c] + (push * ct.share_c) * n;
-        k.position[ct.b] = k.position[ct.b] - (push * ct.share_b) * n;
-      }
+      bool pushed = false;
+      for (const PositionContact& ct : positions_) pushed = project_contact(k, ct, s) || pushed;
+      if (!pushed) return;
     }
   };
-  if (!s.shock_propagation) return sweeps();
-  // The order depends only on the contacts' bodies, axes and fixed ends, and
-  // on gravity: a resting pile keeps it from substep to substep.
-  position_keys_.swap(position_keys_next_);
+  if (!s.shock_propagation) {
+    have_position_order_ = false;  // (not made for these contacts)
+    return sweeps();
+  }
   const int threads = s.workers ? s.workers->threads() : 1;
-  const bool new_order = !have_position_order_ || g != position_g_ || position_keys_ != position_keys_next_;
+  const bool new_order = !have_position_order_ || g != position_g_ || !same_contacts;
   const auto order = [&] {
     position_order_ = shock_passes(k, positions_, g, support_ids_, support_met_, threads), position_g_ = g,
     have_position_order_ = true;
@@ -2288,5 +2269,40 @@ void ContactSolver::project(Components& k, Vector g, const SolverSettings& s) {
         k.position[ct.b] = k.position[ct.b] - depth * n;
     });
 }
+
+#if PHYSICS_HAS_THREADS
+// The projection's contacts in the order its sweeps take them on two
+// threads (projection_order_), and its blocks. Each contact reads its two
+// bodies and writes its moving ends only (project_contact()), so a fixed
+// end ties no block to another, and its contacts go among their moving
+// bodies' (SweepPipeline::defer_one_ended: the walls' contacts reach from
+// the bottom of a pile to its top).
+void ContactSolver::plan_projection(std::size_t body_count) {
+  projection_order_.resize(positions_.size());
+  std::iota(projection_order_.begin(), projection_order_.end(), 0u);
+  projection_pipeline_.defer_one_ended(projection_order_, body_count, [&](std::uint32_t i) {
+    return SweepPipeline::Ends{positions_[i].c, positions_[i].b, positions_[i].moves};
+  });
+  projection_pipeline_.plan(
+      positions_.size(), body_count, pipeline_block,
+      [&](std::size_t i, auto&& body) {
+        const PositionContact& ct = positions_[projection_order_[i]];
+        if (ct.moves & 1) body(ct.c);
+        if (ct.moves & 2) body(ct.b);
+      },
+      [](std::size_t) { return false; });
+}
+
+void ContactSolver::pipelined_projection(Components& k, const SolverSettings& s, Workers& w) {
+  if (!projection_pipeline_.planned()) plan_projection(k.size());
+  ++stats.projections_pipelined;
+  const std::span<const std::uint32_t> order(projection_order_);
+  projection_pipeline_.run(w, s.iterations, 1, [&](std::size_t from, std::size_t count) {
+    bool pushed = false;
+    for (const std::uint32_t i : order.subspan(from, count)) pushed = project_contact(k, positions_[i], s) || pushed;
+    return static_cast<std::uint8_t>(pushed);
+  });
+}
+#endif
 
 }  // namespace physics

@@ -63,6 +63,7 @@
 #include "engine/island_solve.hpp"
 #include "engine/pairs.hpp"
 #include "engine/same_bits.hpp"
+#include "engine/sweep_pipeline.hpp"
 #include "engine/timing.hpp"
 #include "engine/union_find.hpp"
 #include "engine/workers.hpp"
@@ -116,6 +117,7 @@ struct SolverStats {
   std::int64_t energy_clamps = 0;  // body velocities the energy guard scaled back
   std::int64_t pipelined = 0;      // relaxations whose y rows' last sweeps ran on two threads (pipelined_sweeps)
   std::int64_t orders_beside = 0;  // bottom-up orders made on a helper while the sweeps ran (sweeps_beside)
+  std::int64_t projections_pipelined = 0;  // projections whose sweeps ran on two threads (pipelined_projection)
 };
 
 // One contact as the solver's iterations read it: the pair, its axis and
@@ -351,13 +353,25 @@ class ContactSolver {
   void project(Components& k, Vector g, const SolverSettings& s);
   // A contact of the position stage: the pair and its axis, and (project())
   // c's size along it, the sum of both sizes, each body's share of a correction.
+  // `moves`: bit 0, c's position may change (links()); bit 1, b's.
   struct PositionContact {
     EntityId c, b;
     int axis;  // as ContactConstraint::axis
+    std::uint8_t moves;
     double size_c, sizes, share_c, share_b;
   };
   static double gap(const Components& k, const PositionContact& ct);
+  static bool project_contact(Components& k, const PositionContact& ct, const SolverSettings& s);
   std::vector<PositionContact> positions_;
+  bool have_position_keys_ = false;  // position_keys_ holds the last projection's
+#if PHYSICS_HAS_THREADS
+  // The projection's sweeps on two threads (engine/sweep_pipeline.hpp), in
+  // projection_order_ (plan_projection()), planned again when its contacts change.
+  SweepPipeline projection_pipeline_;
+  std::vector<std::uint32_t> projection_order_;  // indices into positions_
+  void plan_projection(std::size_t body_count);
+  void pipelined_projection(Components& k, const SolverSettings& s, Workers& w);
+#endif
   std::vector<std::vector<PositionContact>> position_parts_;  // prepare_positions()' lists of a team's threads
 
   std::vector<Pair> pairs_;
@@ -423,18 +437,10 @@ class ContactSolver {
   std::array<bool, 2> axis_at_targets_{};
 #if PHYSICS_HAS_THREADS  // (not in the browser's build: no threads, and each member costs bytes)
   // The y rows' sweeps on two threads, one sweep behind the other
-  // (pipelined_sweeps()): the rows in blocks, and for each block the last
-  // block that shares a body with it. Made again after schedule().
-  struct Pipeline {
-    std::vector<std::uint32_t> start;  // block b: rows [start[b], start[b + 1]) of the y rows
-    std::vector<std::uint32_t> reach;  // block b: the last block sharing a body with it
-    bool made = false;
-  };
-  Pipeline pipeline_;
+  // (pipelined_sweeps(), engine/sweep_pipeline.hpp). Planned again after schedule().
+  SweepPipeline pipeline_;
   static constexpr std::size_t pipeline_block = 1024;                // rows
   static constexpr std::size_t pipeline_rows = min_parallel_items;  // the fewest y rows pipelined
-  std::vector<std::uint32_t> last_block_;  // by slot (plan_pipeline())
-  void plan_pipeline(std::span<const SolverRow> rows, std::span<const std::uint8_t> paired);
   std::uint8_t pipelined_sweeps(Workers& w, std::span<const SolverRow> rows, std::span<double> lambdas,
                                 std::span<const std::uint8_t> paired, int sweeps);
 #endif
