@@ -139,10 +139,8 @@ std::vector<std::uint32_t> support_depths(std::size_t bodies, std::span<const Su
 
 // Weight-bearing contacts whose lower body rests on the ground, lowest first
 // (contacts of equal depth in their given order: a stable counting sort), by
-// their indices among the solver's contacts; `*levels_start` (if given):
-// where each depth's contacts start in that order, then its end.
-std::vector<std::size_t> bottom_up(std::size_t bodies, std::span<const Support> contacts,
-                                   std::vector<std::size_t>* levels_start) {
+// their indices among the solver's contacts.
+std::vector<std::size_t> bottom_up(std::size_t bodies, std::span<const Support> contacts) {
   const auto anchors = [](const Support& ct) { return ct.lower_fixed || ct.upper_fixed; };
   if (std::none_of(contacts.begin(), contacts.end(), anchors)) return {};  // nothing rests on a fixed body
   const auto depth = support_depths(bodies, contacts);
@@ -156,7 +154,6 @@ std::vector<std::size_t> bottom_up(std::size_t bodies, std::span<const Support> 
   std::vector<std::size_t> first(levels + 1, 0), sorted(order.size());
   for (const std::uint32_t l : level) ++first[l + 1];
   for (std::size_t l = 1; l <= levels; ++l) first[l] += first[l - 1];
-  if (levels_start) *levels_start = first;
   for (std::size_t i = 0; i < order.size(); ++i) sorted[first[level[i]]++] = order[i];
   return sorted;
 }
@@ -185,68 +182,6 @@ std::size_t renumber(std::span<Support> supports, std::vector<std::uint32_t>& id
   return met.size();
 }
 
-// The pass's rows for a team of `threads` (ShockPass::parts): each moving
-// body is one thread's, which does the rows that move it (those whose upper
-// body it is), in their order. The bodies are cut across the pass's
-// direction (a pile's columns for the pass up along gravity, its layers
-// for those along x) at quantiles of (a sample of) their rows, so that few rows read a
-// lower body of another thread's: those wait until that thread is done with
-// the levels below theirs (run_pass()), after which nothing writes that body
-// (its rows' levels are below its depth, the row's level). A fixed lower
-// body is never written. So every body's rows are done in their order, each
-// reading what it read on one thread: the same bits.
-#if PHYSICS_HAS_THREADS
-void split_pass(ShockPass& pass, const Components& k, std::span<const std::size_t> levels_start, int threads) {
-  const auto team = static_cast<std::size_t>(threads);
-  const Vector across{-pass.down.y, pass.down.x};
-  const auto key = [&](EntityId e) {  // (a NaN as 0: the sort needs an order, and any cut gives the same bits)
-    const double d = Vector::dot(k.position[e], across);
-    return d == d ? d : 0.0;
-  };
-  const auto upper = [](const ShockRow& r) { return r.c_upper ? r.c : r.b; };
-  const auto lower = [](const ShockRow& r) { return r.c_upper ? r.b : r.c; };
-  // The cuts at quantiles of a sample of the rows' keys (every `stride`-th
-  // row: any cut gives the same bits, and the sample's quantiles are near
-  // the rows').
-  constexpr std::size_t stride = 8;
-  std::vector<double> keys;
-  keys.reserve(pass.rows.size() / stride + 1);
-  for (std::size_t i = 0; i < pass.rows.size(); i += stride) keys.push_back(key(upper(pass.rows[i])));
-  std::vector<double> cuts(team - 1);
-  for (std::size_t t = 1; t < team; ++t) {
-    const auto nth = keys.begin() + static_cast<std::ptrdiff_t>(keys.size() * t / team);
-    std::nth_element(keys.begin(), nth, keys.end());
-    cuts[t - 1] = *nth;
-  }
-  static_assert(max_threads <= 256, "a row's thread is kept in a byte");
-  const auto owner = [&](EntityId e) {
-    return static_cast<std::uint8_t>(std::upper_bound(cuts.begin(), cuts.end(), key(e)) - cuts.begin());
-  };
-  // Each row's thread (its upper body's), and whether it waits (a moving
-  // lower body of another thread's), worked out once.
-  std::vector<std::uint8_t> owners(pass.rows.size());
-  for (std::size_t i = 0; i < pass.rows.size(); ++i) {
-    ShockRow& r = pass.rows[i];
-    owners[i] = owner(upper(r));
-    r.waits = std::isfinite(k.mass[lower(r)]) && owner(lower(r)) != owners[i];
-  }
-  const std::size_t levels = levels_start.size() - 1;
-  std::vector<ShockRow> rows;
-  rows.reserve(pass.rows.size());
-  pass.parts.clear();
-  for (std::size_t t = 0; t < team; ++t) {
-    for (std::size_t l = 0; l < levels; ++l) {
-      pass.parts.push_back(static_cast<std::uint32_t>(rows.size()));
-      for (std::size_t i = levels_start[l]; i < levels_start[l + 1]; ++i)
-        if (owners[i] == t) rows.push_back(pass.rows[i]);
-    }
-    pass.parts.push_back(static_cast<std::uint32_t>(rows.size()));  // (thread t's end)
-  }
-  pass.rows.swap(rows);
-  pass.threads = threads;
-}
-#endif
-
 // The directions of the bottom-up passes: gravity's, and both ways along
 // each axis gravity has no component on. Along those, a fixed body anchors
 // what presses on it as the floor does a stack: a light block between a
@@ -255,12 +190,10 @@ void split_pass(ShockPass& pass, const Components& k, std::span<const std::size_
 // at the light one's rate, and the projection's shares by inverse mass push
 // the light one into the wall). The axes are independent (a contact's normal
 // is along one), so the passes along x do not undo those along y. `ids`,
-// `met`: renumber()'s scratch. Long passes are split for a team of
-// `threads` (split_pass()).
+// `met`: renumber()'s scratch.
 template <class Contacts>
 std::vector<ShockPass> shock_passes(const Components& k, const Contacts& contacts, Vector g,
-                                    std::vector<std::uint32_t>& ids, std::vector<EntityId>& met,
-                                    [[maybe_unused]] int threads) {
+                                    std::vector<std::uint32_t>& ids, std::vector<EntityId>& met) {
   std::vector<Vector> downs;
   if (!Vector::is_zero(g)) downs.push_back(g);
   if (g.x == 0.0) downs.push_back({-1, 0}), downs.push_back({1, 0});
@@ -279,12 +212,6 @@ std::vector<ShockPass> shock_passes(const Components& k, const Contacts& contact
   std::vector<ShockPass> out;
   std::vector<Support> supports;
   supports.reserve(contacts.size());
-#if PHYSICS_HAS_THREADS
-  std::vector<std::size_t> levels_start;  // (split_pass())
-  std::vector<std::size_t>* const levels = threads > 1 ? &levels_start : nullptr;
-#else
-  std::vector<std::size_t>* const levels = nullptr;  // (the browser's build, short of room, has no team)
-#endif
   for (const Vector down : downs) {
     // (support_sign's rule: a skewed gravity's direction takes either axis' anchors.)
     const auto anchors = [&](int axis) { return anchored[axis >= 2] && support_sign(axis, down) != 0; };
@@ -300,62 +227,17 @@ std::vector<ShockPass> shock_passes(const Components& k, const Contacts& contact
     }
     // (The browser's build, short of room, numbers them by entity id: the same order.)
     const std::size_t bodies = keeps_unchanged ? renumber(supports, ids, met, k.size()) : k.size();
-    const auto order = bottom_up(bodies, supports, levels);
+    const auto order = bottom_up(bodies, supports);
     if (order.empty()) continue;
     // Every listed contact's upper body is deeper than its lower one, so not fixed: the pass can move it.
     ShockPass& pass = out.emplace_back(ShockPass{.down = down, .rows = std::vector<ShockRow>(order.size())});
     for (std::size_t r = 0; r < order.size(); ++r) {
       const auto& ct = contacts[order[r]];
       pass.rows[r] = {ct.c, ct.b, static_cast<std::uint32_t>(order[r]), static_cast<std::uint8_t>(ct.axis),
-                      support_sign(ct.axis, down) > 0, false};
+                      support_sign(ct.axis, down) > 0};
     }
-#if PHYSICS_HAS_THREADS
-    if (threads > 1 && order.size() >= min_parallel_items) split_pass(pass, k, levels_start, threads);
-#endif
   }
   return out;
-}
-
-// Each row of the pass, row(r). Split for a team (split_pass()), on that
-// team each thread does its rows level by level, a row whose lower body is
-// another thread's after that thread's rows of the levels below; elsewhere
-// (a team of another size) one thread does the levels in order, each
-// level's threads' parts one after the other (the rows of one level do not
-// depend on each other but through their upper bodies, each one thread's).
-template <class Row>
-void run_pass(const ShockPass& pass, [[maybe_unused]] Workers* workers, Row&& row) {
-  const std::span<const ShockRow> rows(pass.rows);
-#if PHYSICS_HAS_THREADS
-  if (!pass.parts.empty()) {
-    Workers& w = workers_or_one(workers);
-    const auto team = static_cast<std::size_t>(pass.threads);
-    const std::size_t levels = pass.parts.size() / team - 1;
-    const auto part = [&](std::size_t t) { return std::span(pass.parts).subspan(t * (levels + 1), levels + 1); };
-    if (pass.threads == w.threads()) {
-      TeamProgress progress;
-      // (noexcept: the threads wait for each other's levels, so a throw would
-      // leave the others waiting; it ends the program instead.)
-      w.run([&](int t) noexcept {
-        const auto starts = part(static_cast<std::size_t>(t));
-        for (std::size_t l = 0; l < levels; ++l) {
-          progress.reach(t, l);
-          bool waited = false;  // (once the others are through the levels below, they stay so)
-          for (std::uint32_t i = starts[l]; i < starts[l + 1]; ++i) {
-            if (rows[i].waits && !waited) progress.wait_for_others(t, pass.threads, l), waited = true;
-            row(rows[i]);
-          }
-        }
-        progress.reach(t, levels);
-      });
-      return;
-    }
-    for (std::size_t l = 0; l < levels; ++l)
-      for (std::size_t t = 0; t < team; ++t)
-        for (std::uint32_t i = part(t)[l]; i < part(t)[l + 1]; ++i) row(rows[i]);
-    return;
-  }
-#endif
-  for (const ShockRow& r : rows) row(r);
 }
 
 }  // namespace
@@ -891,7 +773,6 @@ void ContactSolver::warm_start_one(Components& k, std::size_t i, double jn, doub
 // contacts, not on velocities: both relaxations share it.
 void ContactSolver::relax(Components& k, Vector g, const SolverSettings& s, bool after_bounce) {
   load_rows(k, after_bounce);
-  const int threads = workers_ ? workers_->threads() : 1;
   const auto sweeps = [&] {
     if (friction_.empty())
       iterate<false>(s);
@@ -899,9 +780,9 @@ void ContactSolver::relax(Components& k, Vector g, const SolverSettings& s, bool
       iterate<true>(s);
   };
   const auto order = [&] {
-    support_order_ = shock_passes(k, contacts_, g, support_ids_, support_met_, threads), have_order_ = true;
+    support_order_ = shock_passes(k, contacts_, g, support_ids_, support_met_), have_order_ = true;
   };
-  if (s.shock_propagation && !have_order_ && aside(contacts_.size()))
+  if (s.shock_propagation && !have_order_ && aside())
     sweeps_beside(sweeps, order);
   else
     sweeps();
@@ -918,17 +799,17 @@ void ContactSolver::relax(Components& k, Vector g, const SolverSettings& s, bool
   for (const ShockPass& pass : support_order_) {
     if (skips_pass(k, pass.down, tame)) continue;
     tame = false;
-    run_pass(pass, workers_, [&](const ShockRow& r) {
+    for (const ShockRow& r : pass.rows) {
       const Vector n = axis_normal[r.axis];
       const double target = targets[r.index];  // this relaxation's (load_rows)
       const double vn = Vector::dot(velocity[r.c] - velocity[r.b], n);
-      if (vn >= target) return;
+      if (vn >= target) continue;
       // The lower body is immovable for this pass: the upper takes it all.
       if (r.c_upper)
         velocity[r.c] = velocity[r.c] + (target - vn) * n;
       else
         velocity[r.b] = velocity[r.b] - (target - vn) * n;
-    });
+    }
   }
 }
 
@@ -2245,29 +2126,28 @@ void ContactSolver::project(Components& k, Vector g, const SolverSettings& s) {
     have_position_order_ = false;  // (not made for these contacts)
     return sweeps();
   }
-  const int threads = s.workers ? s.workers->threads() : 1;
   const bool new_order = !have_position_order_ || g != position_g_ || !same_contacts;
   const auto order = [&] {
-    position_order_ = shock_passes(k, positions_, g, support_ids_, support_met_, threads), position_g_ = g,
+    position_order_ = shock_passes(k, positions_, g, support_ids_, support_met_), position_g_ = g,
     have_position_order_ = true;
   };
-  if (new_order && aside(positions_.size())) {
+  if (new_order && aside()) {
     sweeps_beside(sweeps, order);
   } else {
     sweeps();
     if (new_order) order();
   }
   for (const ShockPass& pass : position_order_)
-    run_pass(pass, s.workers, [&](const ShockRow& r) {
+    for (const ShockRow& r : pass.rows) {
       const PositionContact& ct = positions_[r.index];
       const double depth = -gap(k, ct) - s.slop;
-      if (!(depth > 0.0)) return;
+      if (!(depth > 0.0)) continue;
       const Vector n = axis_normal[ct.axis];
       if (r.c_upper)
         k.position[ct.c] = k.position[ct.c] + depth * n;
       else
         k.position[ct.b] = k.position[ct.b] - depth * n;
-    });
+    }
 }
 
 #if PHYSICS_HAS_THREADS

@@ -161,7 +161,6 @@ struct ShockRow {
   std::uint32_t index;
   std::uint8_t axis;
   bool c_upper;
-  bool waits;  // on a team: the lower body is another thread's (split_pass())
 };
 
 // One bottom-up pass of shock propagation: the direction taken as down (the
@@ -170,19 +169,13 @@ struct ShockRow {
 // move are listed (the others would change nothing), each with what the
 // pass reads of it: a pile's pass reads this list in order and the
 // velocities and targets, not the solver's 64-byte contacts at random.
-//
-// On a team (split_pass()), each thread has the rows of the upper bodies it
-// owns, level by level (a level: the rows whose lower bodies have one depth
-// in the support graph): thread t's rows of level l are [parts[t * (levels
-// + 1) + l], parts[t * (levels + 1) + l + 1]). `parts` empty: one thread.
-// (A build without threads has neither.)
+// One thread runs it: a pile's pass is some hundred levels of some hundred
+// rows each, a level's rows waiting for the levels below, and split by
+// columns over two threads it took as long as on one (the level-by-level
+// waits cost what the second thread saved: docs/performance.md).
 struct ShockPass {
   Vector down;
   std::vector<ShockRow> rows;
-#if PHYSICS_HAS_THREADS
-  std::vector<std::uint32_t> parts{};
-  int threads = 1;
-#endif
 };
 
 // On x86-64, functions built for AVX2 beside the rest (friction_four:
@@ -298,14 +291,12 @@ class ContactSolver {
   template <bool friction>
   void iterate(const SolverSettings& s);
   // A new bottom-up order (contacts that began or ended) is made on a helper
-  // while this thread sweeps, when there is a team and `contacts` are too
-  // few for its sweeps (a rain's landing rows: 50-80 µs of an order beside
-  // 15-35 of sweeps). The order reads the contacts and masses (positions
-  // only to split passes of min_parallel_items rows for the team: none
-  // here), the sweeps their rows or the positions: the same bits.
-  bool aside(std::size_t contacts) const {
-    return has_threads && workers_ && workers_->threads() > 1 && contacts < min_parallel_items;
-  }
+  // while this thread sweeps, when there is a team: an order takes longer
+  // than the sweeps (a rain of 100 000 landing: 0.95 ms an order, one
+  // thread's sweeps 0.50 beside it, two threads' 0.56 before it), and the
+  // team's sweeps would wait for it. The order reads the contacts and
+  // masses, the sweeps their rows or the positions: the same bits.
+  bool aside() const { return has_threads && workers_ && workers_->threads() > 1; }
   template <class Sweeps, class Order>
   void sweeps_beside(Sweeps&& sweeps, Order&& order);
   void prepare_friction(const Components& k, bool any, bool kept_all);

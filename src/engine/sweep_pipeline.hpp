@@ -36,6 +36,7 @@ class SweepPipeline {
   template <class Bodies, class Together>
   void plan(std::size_t items, std::size_t body_count, std::size_t block, Bodies&& bodies, Together&& together);
   bool planned() const { return planned_; }
+  std::uint32_t reach(std::size_t block) const { return reach_[block]; }  // (the plan's)
   void forget() { planned_ = false; }
 
   // `items` (in their sweep order) with each item that has one moving end

@@ -154,11 +154,6 @@ void Workers::start(void (*task)(void*, int), void* context) {
 
 // Spins only (back_off()): the threads go through the steps side by side,
 // so the waits are short, and nobody would wake a sleeper.
-void TeamProgress::wait_for_others(int t, int threads, std::uint64_t step) const {
-  for (int u = 0; u < threads; ++u)
-    if (u != t) wait_for(u, step);
-}
-
 void TeamProgress::wait_for(int u, std::uint64_t step) const {
   const std::atomic<std::uint64_t>& theirs = slots_[static_cast<std::size_t>(u)].step;
   for (unsigned i = 1; theirs.load(std::memory_order_acquire) < step; ++i) back_off(i);

@@ -60,7 +60,7 @@ class Workers {
   // some threads (an allocation that fails in a range), run() throws the
   // lowest t's exception once every thread has returned, and the team stays
   // usable. (A task whose threads wait for each other, TeamProgress, must
-  // not throw: the others would wait on. run_pass' is noexcept.)
+  // not throw: the others would wait on. SweepPipeline::run's is noexcept.)
   template <class Task>
   void run(Task&& task) {
     if constexpr (has_threads) {
@@ -145,21 +145,16 @@ class Workers {
 
 // How far each thread of one task of the team (Workers::run) has gone
 // through numbered steps, for threads that wait for some of each other's
-// results (the bottom-up passes: a row whose lower body another thread
-// moves waits until that thread is done with the levels below the row's).
-// Each thread writes its own count, on a cache line of its own, and reads
-// the others' only when it waits. Threads that wait only for steps they
-// have reached themselves never wait for each other at once: each would
-// have reached more steps than the other.
+// results (the pipelined sweeps, engine/sweep_pipeline.hpp: a block of a
+// sweep waits until the other thread's sweep before it is past the blocks
+// that share its bodies). Each thread writes its own count, on a cache
+// line of its own, and reads the others' only when it waits.
 class TeamProgress {
  public:
   // Thread t has done every step before `step`.
   void reach(int t, std::uint64_t step) {
     slots_[static_cast<std::size_t>(t)].step.store(step, std::memory_order_release);
   }
-  // Returns once each other thread of the team (of `threads`) has reached
-  // `step`, which thread t must have reached.
-  void wait_for_others(int t, int threads, std::uint64_t step) const;
   // Returns once thread u has reached `step`.
   void wait_for(int u, std::uint64_t step) const;
 
