@@ -296,6 +296,7 @@ void ContactSolver::prepare(const Components& k, double h, Vector g, const Solve
   // not an impact, so no bounce (otherwise a block on the floor would hop).
   const double threshold = 2.0 * Vector::norm(g) * h + 1e-12;
   classify(k, h, threshold, s);
+  islands_found_ = false;  // (this round's contacts are made below)
   const bool kept_all = keeps_unchanged && kept_all_;
   const std::uint8_t flags = kept_all ? keep_contacts() : make_contacts(k, h);
   moving_fixed_ = flags & 1;
@@ -782,8 +783,14 @@ void ContactSolver::relax(Components& k, Vector g, const SolverSettings& s, bool
   const auto order = [&] {
     support_order_ = shock_passes(k, contacts_, g, support_ids_, support_met_), have_order_ = true;
   };
+  // (The guard's islands while the helper makes the order: it takes longer than the sweeps.)
   if (s.shock_propagation && !have_order_ && aside())
-    sweeps_beside(sweeps, order);
+    sweeps_beside(
+        [&] {
+          sweeps();
+          if (!islands_found_) find_islands(k.size());
+        },
+        order);
   else
     sweeps();
   store_rows(k, after_bounce);
@@ -1815,15 +1822,15 @@ void ContactSolver::list_marked(std::size_t n) {
     if (seen[e]) bodies_.push_back(static_cast<EntityId>(e)), seen[e] = 0;
 }
 
-// The islands of touching finite bodies (union-find over the contacts), and
-// per island the energies the guard needs: sums_, island_ of each body of
+// The islands of touching finite bodies (union-find over the contacts):
 // bodies_ (the finite bodies of the contacts, in increasing id order: the
-// order the sums are taken in).
-void ContactSolver::island_energies(const Components& k) {
-  const auto n = k.size();
+// order the sums are taken in), island_ of each (numbered as their roots
+// are first met), one IslandEnergy a island in sums_. They depend on the
+// contacts only: found once a round (islands_found_), on a team beside the
+// helper's new support order (relax()).
+void ContactSolver::find_islands(std::size_t n) {
   islands_.resize(n);
   for (const ContactConstraint& ct : contacts_) islands_.add(ct.c), islands_.add(ct.b);
-  const auto find = [&](EntityId x) { return islands_.find(x); };
   for (const ContactConstraint& ct : contacts_)
     if (ct.wc > 0.0 && ct.wb > 0.0) islands_.join(ct.c, ct.b);
   // The finite bodies of the contacts, by id: marked, then listed by a look
@@ -1842,24 +1849,31 @@ void ContactSolver::island_energies(const Components& k) {
   } else {
     list_marked(n);
   }
-  // One IslandEnergy per island, numbered as their roots are first met.
   island_.resize(n);
   root_index_.resize(n, none);
   sums_.clear();
   for (const EntityId e : bodies_) {
-    const EntityId r = find(e);
+    const EntityId r = islands_.find(e);
     if (root_index_[r] == none) root_index_[r] = static_cast<std::uint32_t>(sums_.size()), sums_.emplace_back();
+    island_[e] = root_index_[r];
   }
+  for (const EntityId e : bodies_) root_index_[e] = none;  // (every root is among them)
+  islands_found_ = true;
+}
+
+// Per island (find_islands()), the energies the guard needs: sums_.
+void ContactSolver::island_energies(const Components& k) {
+  if (!islands_found_) find_islands(k.size());
+  std::fill(sums_.begin(), sums_.end(), IslandEnergy{});
   for (const ContactConstraint& ct : contacts_) {
     if ((ct.wc > 0.0) == (ct.wb > 0.0)) continue;  // the fixed bodies an island touches
     const EntityId body = ct.wc > 0.0 ? ct.c : ct.b, fixed = ct.wc > 0.0 ? ct.b : ct.c;
-    IslandEnergy& su = sums_[root_index_[find(body)]];
+    IslandEnergy& su = sums_[island_[body]];
     if (su.frames == 0) su.frame = k.velocity[fixed], su.frames = 1;
     else if (su.frames == 1 && !(su.frame == k.velocity[fixed])) su.frames = 2;
   }
   for (const EntityId e : bodies_) {
-    const std::uint32_t i = root_index_[find(e)];
-    island_[e] = i;
+    const std::uint32_t i = island_[e];
     const double m = k.mass[e];
     const Vector u = sums_[i].frame;
     const Vector v0 = v_start_[slot_of_[e]] - u, vi = v_inelastic_[slot_of_[e]] - u, v1 = k.velocity[e] - u;
@@ -1873,7 +1887,6 @@ void ContactSolver::island_energies(const Components& k) {
     su.b_back += m * Vector::dot(v0, back);
     su.a_back += 0.5 * m * Vector::dot(back, back);
   }
-  for (const EntityId e : bodies_) root_index_[e] = none;  // (every root is among them)
 }
 
 void ContactSolver::solve_positions(Components& k, std::span<const EntityId> entities, Vector g,

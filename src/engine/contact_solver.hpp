@@ -304,6 +304,8 @@ class ContactSolver {
   void guard_energy(Components& k);
   bool any_body_gained(const Components& k) const;
   void island_energies(const Components& k);
+  void find_islands(std::size_t n);
+  bool islands_found_ = false;  // bodies_, island_ and sums_ are this round's contacts' (find_islands())
   void list_marked(std::size_t n);  // bodies_: the ids below n whose seen_ is set, in order; the marks cleared
   void impact_time(Components& k, double h, Vector g, bool exact_motion);
   void store();
