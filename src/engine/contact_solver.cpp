@@ -2095,10 +2095,9 @@ inline bool ContactSolver::project_contact(Components& k, const PositionContact&
   return true;
 }
 
-// Non-linear Gauss-Seidel on positions, shared in proportion to inverse
-// masses, then the same bottom-up pass as the velocities'. A sweep that
-// pushes nothing ends the sweeps (the next would find the same overlaps).
-void ContactSolver::project(Components& k, Vector g, const SolverSettings& s) {
+// Each position contact's sizes along its axis, its bodies' shares of a
+// correction and its moving ends, and its key (position_keys_next_).
+void ContactSolver::measure_positions(const Components& k, const SolverSettings& s) {
   position_keys_next_.resize(positions_.size());
   workers_or_one(s.workers).for_ranges(positions_.size(), min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
@@ -2115,6 +2114,13 @@ void ContactSolver::project(Components& k, Vector g, const SolverSettings& s) {
       position_keys_next_[i] = {ct.c, ct.b, flags};
     }
   });
+}
+
+// Non-linear Gauss-Seidel on positions, shared in proportion to inverse
+// masses, then the same bottom-up pass as the velocities'. A sweep that
+// pushes nothing ends the sweeps (the next would find the same overlaps).
+void ContactSolver::project(Components& k, Vector g, const SolverSettings& s) {
+  measure_positions(k, s);
   // The order and the sweeps' plan depend only on the contacts' bodies,
   // axes and moving ends, and (the order) on gravity: a resting pile keeps
   // them from substep to substep.

@@ -344,6 +344,7 @@ class ContactSolver {
   // solve_positions' stages.
   bool prepare_positions(const Components& k, const SolverSettings& s);
   void project(Components& k, Vector g, const SolverSettings& s);
+  void measure_positions(const Components& k, const SolverSettings& s);
   // A contact of the position stage: the pair and its axis, and (project())
   // c's size along it, the sum of both sizes, each body's share of a correction.
   // `moves`: bit 0, c's position may change (links()); bit 1, b's.
@@ -432,7 +433,7 @@ class ContactSolver {
   // The y rows' sweeps on two threads, one sweep behind the other
   // (pipelined_sweeps(), engine/sweep_pipeline.hpp). Planned again after schedule().
   SweepPipeline pipeline_;
-  static constexpr std::size_t pipeline_block = 1024;                // rows
+  static constexpr std::size_t pipeline_block = 1024;                // items (y rows, projection contacts)
   static constexpr std::size_t pipeline_rows = min_parallel_items;  // the fewest y rows pipelined
   std::uint8_t pipelined_sweeps(Workers& w, std::span<const SolverRow> rows, std::span<double> lambdas,
                                 std::span<const std::uint8_t> paired, int sweeps);
