@@ -190,51 +190,56 @@ std::size_t renumber(std::span<Support> supports, std::vector<std::uint32_t>& id
 // at the light one's rate, and the projection's shares by inverse mass push
 // the light one into the wall). The axes are independent (a contact's normal
 // is along one), so the passes along x do not undo those along y. `ids`,
-// `met`: renumber()'s scratch.
-template <class Contacts>
-std::vector<ShockPass> shock_passes(const Components& k, const Contacts& contacts, Vector g,
+// `met`: renumber()'s scratch. ends(i): contact i's SupportEnds, read once
+// (the velocity stage's from its 12-byte keys: a landing rain of 100 000
+// read its 64-byte contacts and both bodies' masses twice, 1.03 ms an order).
+struct SupportEnds {
+  EntityId c, b;
+  std::uint8_t axis, fixed;  // fixed: bit 0, c is; bit 1, b is
+};
+template <class Ends>
+std::vector<ShockPass> shock_passes(std::size_t count, Ends&& ends, std::size_t entities, Vector g,
                                     std::vector<std::uint32_t>& ids, std::vector<EntityId>& met) {
   std::vector<Vector> downs;
   if (!Vector::is_zero(g)) downs.push_back(g);
   if (g.x == 0.0) downs.push_back({-1, 0}), downs.push_back({1, 0});
   if (g.y == 0.0) downs.push_back({0, -1}), downs.push_back({0, 1});
-  // Which ends are fixed, read once per contact; and along which axes a
-  // contact has a fixed end: a direction along no such axis has nothing
-  // resting on a fixed body (bottom_up() would find no anchor), and its
-  // supports are not listed (a pile's side contacts, most of its contacts,
-  // when no wall holds it).
-  std::vector<std::uint8_t> fixed(contacts.size());
+  // Along which axes a contact has a fixed end: a direction along no such
+  // axis has nothing resting on a fixed body (bottom_up() would find no
+  // anchor), and its supports are not listed (a pile's side contacts, most
+  // of its contacts, when no wall holds it).
+  std::vector<SupportEnds> all(count);
   std::array<bool, 2> anchored{};  // by component: x, y
-  for (std::size_t i = 0; i < contacts.size(); ++i) {
-    fixed[i] = static_cast<std::uint8_t>((std::isfinite(k.mass[contacts[i].c]) ? 0 : 1) | (std::isfinite(k.mass[contacts[i].b]) ? 0 : 2));
-    if (fixed[i]) anchored[contacts[i].axis >= 2] = true;
+  for (std::size_t i = 0; i < count; ++i) {
+    all[i] = ends(i);
+    if (all[i].fixed) anchored[all[i].axis >= 2] = true;
   }
   std::vector<ShockPass> out;
   std::vector<Support> supports;
-  supports.reserve(contacts.size());
+  supports.reserve(count);
   for (const Vector down : downs) {
     // (support_sign's rule: a skewed gravity's direction takes either axis' anchors.)
     const auto anchors = [&](int axis) { return anchored[axis >= 2] && support_sign(axis, down) != 0; };
     if (!anchors(0) && !anchors(2)) continue;
     supports.clear();
-    for (std::size_t i = 0; i < contacts.size(); ++i) {
-      const int sign = support_sign(contacts[i].axis, down);
+    for (std::size_t i = 0; i < count; ++i) {
+      const SupportEnds& ct = all[i];
+      const int sign = support_sign(ct.axis, down);
       if (sign == 0) continue;
-      const bool fc = fixed[i] & 1, fb = fixed[i] >> 1;
+      const bool fc = ct.fixed & 1, fb = ct.fixed >> 1;
       const auto index = static_cast<std::uint32_t>(i);
-      if (sign > 0) supports.push_back({contacts[i].b, contacts[i].c, fb, fc, index});
-      else supports.push_back({contacts[i].c, contacts[i].b, fc, fb, index});
+      if (sign > 0) supports.push_back({ct.b, ct.c, fb, fc, index});
+      else supports.push_back({ct.c, ct.b, fc, fb, index});
     }
     // (The browser's build, short of room, numbers them by entity id: the same order.)
-    const std::size_t bodies = keeps_unchanged ? renumber(supports, ids, met, k.size()) : k.size();
+    const std::size_t bodies = keeps_unchanged ? renumber(supports, ids, met, entities) : entities;
     const auto order = bottom_up(bodies, supports);
     if (order.empty()) continue;
     // Every listed contact's upper body is deeper than its lower one, so not fixed: the pass can move it.
     ShockPass& pass = out.emplace_back(ShockPass{.down = down, .rows = std::vector<ShockRow>(order.size())});
     for (std::size_t r = 0; r < order.size(); ++r) {
-      const auto& ct = contacts[order[r]];
-      pass.rows[r] = {ct.c, ct.b, static_cast<std::uint32_t>(order[r]), static_cast<std::uint8_t>(ct.axis),
-                      support_sign(ct.axis, down) > 0};
+      const SupportEnds& ct = all[order[r]];
+      pass.rows[r] = {ct.c, ct.b, static_cast<std::uint32_t>(order[r]), ct.axis, support_sign(ct.axis, down) > 0};
     }
   }
   return out;
@@ -269,7 +274,12 @@ void ContactSolver::solve_velocities(Components& k, std::span<const EntityId> en
       prepare(k, h, g, s);
     });
     // Later rounds start from velocities that hold this substep's impulses already.
-    if (round == 0) laps.time(Stage::warm_start, [&] { warm_start(k); });
+    if (round == 0) laps.time(Stage::warm_start, [&] {
+#if PHYSICS_HAS_THREADS
+      if (y_rows_unplanned()) return workers_->side_by_side([&] { warm_start(k); }, [&] { plan_y_rows(); });
+#endif
+      warm_start(k);
+    });
     laps.time(Stage::relax, [&] { relax(k, g, s, false); });
     laps.time(Stage::restitution, [&] { restitution(k, g, s); });
     laps.time(Stage::impact_time, [&] { impact_time(k, h, g, s.exact_motion); });
@@ -773,27 +783,40 @@ void ContactSolver::warm_start_one(Components& k, std::size_t i, double jn, doub
 // the iterations do not read it). The support order depends only on the
 // contacts, not on velocities: both relaxations share it.
 void ContactSolver::relax(Components& k, Vector g, const SolverSettings& s, bool after_bounce) {
-  load_rows(k, after_bounce);
-  const auto sweeps = [&] {
+#if PHYSICS_HAS_THREADS
+  const bool plan = y_rows_unplanned();  // (asked on the team: beside the order, this thread has none)
+#endif
+  const auto rows = [&] {  // loaded, swept, stored
+#if PHYSICS_HAS_THREADS
+    if (plan) plan_y_rows();
+#endif
+    load_rows(k, after_bounce);
     if (friction_.empty())
       iterate<false>(s);
     else
       iterate<true>(s);
+    store_rows(k, after_bounce);
   };
   const auto order = [&] {
-    support_order_ = shock_passes(k, contacts_, g, support_ids_, support_met_), have_order_ = true;
+    const auto ends = [&](std::size_t i) {
+      const TopologyKey& t = topology_[i];  // (this substep's: schedule())
+      return SupportEnds{t.c, t.b, static_cast<std::uint8_t>(t.flags & 3), static_cast<std::uint8_t>(t.flags >> 2 & 3)};
+    };
+    support_order_ = shock_passes(contacts_.size(), ends, k.size(), g, support_ids_, support_met_), have_order_ = true;
   };
-  // (The guard's islands while the helper makes the order: it takes longer than the sweeps.)
-  if (s.shock_propagation && !have_order_ && aside())
-    sweeps_beside(
-        [&] {
-          sweeps();
-          if (!islands_found_) find_islands(k.size());
-        },
-        order);
-  else
-    sweeps();
-  store_rows(k, after_bounce);
+  if (s.shock_propagation && !have_order_ && aside()) {
+    // The rows on this thread while the helper makes the order, and the
+    // guard's islands by whichever is done first (the order mostly: the
+    // landing rain of 100 000, 1.03 ms against 0.53 of sweeps; a new plan
+    // of the y rows, 0.38, makes the rows the longer).
+    std::atomic<bool> islands_taken{islands_found_};
+    const auto islands = [&] {
+      if (!islands_taken.exchange(true)) find_islands(k.size());
+    };
+    sweeps_beside([&] { rows(), islands(); }, [&] { order(), islands(); });
+  } else {
+    rows();
+  }
   if (!after_bounce && Vector::is_zero(g)) {
     islands_solve_.solve(k, contacts_, impulses_, friction_);
     axis_at_targets_ = {};  // (the velocities are the islands' now)
@@ -1016,14 +1039,6 @@ void ContactSolver::order_by_axis() {
     append(2);
   }
   append(y);
-#if PHYSICS_HAS_THREADS
-  // The y rows' sweeps may go on two threads (pipelined_sweeps): the floor's rows among their bodies'.
-  if (workers_ && workers_->threads() > 1 && y_rows >= pipeline_rows)
-    pipeline_.defer_one_ended(std::span(by_axis_).subspan(x_rows_), slot_body_.size(), [&](std::uint32_t i) {
-      const ContactConstraint& ct = contacts_[i];
-      return SweepPipeline::Ends{slot_of_[ct.c], slot_of_[ct.b], topology_[i].flags >> 4 & 3};
-    });
-#endif
 }
 
 // The rows' order: without friction, a row reads and changes one velocity
@@ -1259,18 +1274,47 @@ void ContactSolver::iterate(const SolverSettings& s) {
 }
 
 #if PHYSICS_HAS_THREADS
+// Whether the y rows of this order may be swept on two threads
+// (pipelined_sweeps) and are not planned for it yet (plan_y_rows()).
+bool ContactSolver::y_rows_unplanned() const {
+  return aside() && friction_.empty() && by_axis_.size() - x_rows_ >= pipeline_rows && !pipeline_.planned();
+}
+
+// The y rows made ready for pipelined_sweeps: the floor's rows among their
+// bodies' (SweepPipeline::defer_one_ended: every body keeps its rows'
+// order, the same bits), their pairs side by side again (paired_,
+// schedule()), then the plan. Before the rows are loaded: on a helper
+// beside the warm start (solve_velocities(): a new order of the landing
+// rain of 100 000 took 0.24 ms here, once a substep, the other thread
+// waiting), else in relax().
+void ContactSolver::plan_y_rows() {
+  const std::span<std::uint32_t> rows = std::span(by_axis_).subspan(x_rows_);
+  const std::span<std::uint8_t> paired = std::span(paired_).subspan(x_rows_);
+  pipeline_.defer_one_ended(rows, slot_body_.size(), [&](std::uint32_t i) {
+    const TopologyKey& t = topology_[i];
+    return SweepPipeline::Ends{slot_of_[t.c], slot_of_[t.b], t.flags >> 4 & 3};
+  });
+#if defined(__SSE2__)
+  for (std::size_t r = 0; r + 1 < rows.size(); ++r)
+    paired[r] = rows[r] / schedule_chunk == rows[r + 1] / schedule_chunk && level_[rows[r]] == level_[rows[r + 1]];
+  paired.back() = 0;
+#endif
+  const std::span<const SweepPipeline::Ends> ends = pipeline_.ends();
+  pipeline_.plan(rows.size(), slot_body_.size(), pipeline_block,
+                 [&](std::size_t r, auto&& body) { body(ends[r].c), body(ends[r].b); },
+                 [&](std::size_t r) { return paired[r] != 0; });
+  plain_rows_ = false;  // (rows_ in the order before)
+}
+
 // `sweeps` sweeps of the y rows, or up to the first that changes nothing
 // (the sweeps after it change nothing either: iterate<false>), on two
 // threads (engine/sweep_pipeline.hpp). The rows in blocks of about
 // pipeline_block (a pair solved together kept in one), their bodies fixed
 // ones included (so that two threads never write one body's values at
-// once). Returns what the last sweep that counts found (sweep_axis).
+// once), as plan_y_rows() planned them. Returns what the last sweep that
+// counts found (sweep_axis).
 std::uint8_t ContactSolver::pipelined_sweeps(Workers& w, std::span<const SolverRow> rows, std::span<double> lambdas,
                                              std::span<const std::uint8_t> paired, int sweeps) {
-  if (!pipeline_.planned())
-    pipeline_.plan(rows.size(), slot_body_.size(), pipeline_block,
-                   [&](std::size_t r, auto&& body) { body(rows[r].c), body(rows[r].b); },
-                   [&](std::size_t r) { return paired[r] != 0; });
   ++stats.pipelined;
   const std::span<AxisBody> bodies(axis_bodies_[1]);
   return pipeline_.run(w, sweeps, changed, [&](std::size_t from, std::size_t count) {
@@ -2147,7 +2191,12 @@ void ContactSolver::project(Components& k, Vector g, const SolverSettings& s) {
   }
   const bool new_order = !have_position_order_ || g != position_g_ || !same_contacts;
   const auto order = [&] {
-    position_order_ = shock_passes(k, positions_, g, support_ids_, support_met_), position_g_ = g,
+    const auto ends = [&](std::size_t i) {
+      const PositionContact& ct = positions_[i];
+      const auto fixed = static_cast<std::uint8_t>((std::isfinite(k.mass[ct.c]) ? 0 : 1) | (std::isfinite(k.mass[ct.b]) ? 0 : 2));
+      return SupportEnds{ct.c, ct.b, static_cast<std::uint8_t>(ct.axis), fixed};
+    };
+    position_order_ = shock_passes(positions_.size(), ends, k.size(), g, support_ids_, support_met_), position_g_ = g,
     have_position_order_ = true;
   };
   if (new_order && aside()) {
@@ -2182,12 +2231,12 @@ void ContactSolver::plan_projection(std::size_t body_count) {
   projection_pipeline_.defer_one_ended(projection_order_, body_count, [&](std::uint32_t i) {
     return SweepPipeline::Ends{positions_[i].c, positions_[i].b, positions_[i].moves};
   });
+  const std::span<const SweepPipeline::Ends> ends = projection_pipeline_.ends();
   projection_pipeline_.plan(
       positions_.size(), body_count, pipeline_block,
       [&](std::size_t i, auto&& body) {
-        const PositionContact& ct = positions_[projection_order_[i]];
-        if (ct.moves & 1) body(ct.c);
-        if (ct.moves & 2) body(ct.b);
+        if (ends[i].moving & 1) body(ends[i].c);
+        if (ends[i].moving & 2) body(ends[i].b);
       },
       [](std::size_t) { return false; });
 }

@@ -291,11 +291,12 @@ class ContactSolver {
   template <bool friction>
   void iterate(const SolverSettings& s);
   // A new bottom-up order (contacts that began or ended) is made on a helper
-  // while this thread sweeps, when there is a team: an order takes longer
-  // than the sweeps (a rain of 100 000 landing: 0.95 ms an order, one
-  // thread's sweeps 0.50 beside it, two threads' 0.56 before it), and the
-  // team's sweeps would wait for it. The order reads the contacts and
-  // masses, the sweeps their rows or the positions: the same bits.
+  // while this thread loads, sweeps and stores the rows, when there is a
+  // team: an order takes longer than the sweeps (a rain of 100 000 landing:
+  // 0.95 ms an order, one thread's sweeps 0.50 beside it, two threads' 0.56
+  // before it), and the team's sweeps would wait for it. The order reads
+  // the contacts and masses, the rows the velocities or the positions: the
+  // same bits.
   bool aside() const { return has_threads && workers_ && workers_->threads() > 1; }
   template <class Sweeps, class Order>
   void sweeps_beside(Sweeps&& sweeps, Order&& order);
@@ -435,6 +436,8 @@ class ContactSolver {
   SweepPipeline pipeline_;
   static constexpr std::size_t pipeline_block = 1024;                // items (y rows, projection contacts)
   static constexpr std::size_t pipeline_rows = min_parallel_items;  // the fewest y rows pipelined
+  bool y_rows_unplanned() const;
+  void plan_y_rows();
   std::uint8_t pipelined_sweeps(Workers& w, std::span<const SolverRow> rows, std::span<double> lambdas,
                                 std::span<const std::uint8_t> paired, int sweeps);
 #endif

@@ -53,6 +53,9 @@ class SweepPipeline {
   };
   template <class EndsOf>
   void defer_one_ended(std::span<std::uint32_t> items, std::size_t body_count, EndsOf&& ends);
+  // The ends of the last defer_one_ended's items, in their new order (asked
+  // once an item there: a plan's bodies may read them here).
+  std::span<const Ends> ends() const { return ends_; }
 
   // `sweeps` sweeps over the planned items on a team of two or more (its
   // first two threads), or up to the first sweep whose blocks' bits
@@ -70,6 +73,7 @@ class SweepPipeline {
   std::vector<std::uint32_t> next_pair_;   // by body: defer_one_ended()'s scratch
   std::vector<std::uint64_t> deferred_;    // defer_one_ended()'s: (where it goes) << 32 | item's place
   std::vector<std::uint32_t> kept_;        // defer_one_ended()'s: the items as they came
+  std::vector<Ends> ends_, kept_ends_;     // defer_one_ended()'s: by item, then as they came
   bool planned_ = false;
 };
 
@@ -102,13 +106,14 @@ template <class EndsOf>
 void SweepPipeline::defer_one_ended(std::span<std::uint32_t> items, std::size_t body_count, EndsOf&& ends) {
   const auto n = static_cast<std::uint32_t>(items.size());
   next_pair_.resize(body_count);
-  for (const std::uint32_t item : items) {
-    const Ends e = ends(item);
+  ends_.resize(n);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const Ends e = ends_[i] = ends(items[i]);
     next_pair_[e.c] = next_pair_[e.b] = n;  // (n: the end)
   }
   deferred_.clear();
   for (std::uint32_t i = n; i-- > 0;) {
-    const Ends e = ends(items[i]);
+    const Ends e = ends_[i];
     if (e.moving == 3)
       next_pair_[e.c] = next_pair_[e.b] = i;
     else if (e.moving != 0)
@@ -117,13 +122,16 @@ void SweepPipeline::defer_one_ended(std::span<std::uint32_t> items, std::size_t 
   if (deferred_.empty()) return;
   std::sort(deferred_.begin(), deferred_.end());
   kept_.assign(items.begin(), items.end());
+  kept_ends_.swap(ends_);
+  ends_.resize(n);
   auto d = deferred_.begin();
   std::size_t out = 0;
+  const auto put = [&](std::uint32_t i) { items[out] = kept_[i], ends_[out++] = kept_ends_[i]; };
   for (std::uint32_t i = 0; i <= n; ++i) {
-    for (; d != deferred_.end() && *d >> 32 == i; ++d) items[out++] = kept_[static_cast<std::uint32_t>(*d)];
+    for (; d != deferred_.end() && *d >> 32 == i; ++d) put(static_cast<std::uint32_t>(*d));
     if (i == n) break;
-    const unsigned moving = ends(kept_[i]).moving;
-    if (moving == 0 || moving == 3) items[out++] = kept_[i];
+    const unsigned moving = kept_ends_[i].moving;
+    if (moving == 0 || moving == 3) put(i);
   }
 }
 
