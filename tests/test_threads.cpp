@@ -289,7 +289,7 @@ BOOST_AUTO_TEST_CASE(one_ended_items_go_just_before_their_bodys_next_item) {
 // 9 000-odd contacts (pipelined_projection), and so do the relaxation's y
 // rows (pipelined_sweeps), each with the floor's and walls' contacts moved
 // among their bodies' (SweepPipeline::defer_one_ended). (A new order is
-// made beside one thread's sweeps, sweeps_beside: the steps whose contacts
+// made beside one thread's sweeps, ContactSolver::beside: the steps whose contacts
 // changed are not pipelined.)
 std::vector<double> run_top_down_pile(int threads, SolverStats* stats) {
   const WorldId w = world_on_floor(threads, 800);
@@ -324,7 +324,7 @@ BOOST_AUTO_TEST_CASE(the_projection_and_the_y_rows_on_two_threads_give_the_same_
 
 // A rain's first landings: a few hundred contacts at a time, too few for
 // the team's sweeps, so a new bottom-up order (velocity and position stages)
-// is made on the helper while this thread sweeps (sweeps_beside). The same
+// is made on the helper while this thread sweeps (ContactSolver::beside). The same
 // bits as one thread's, which makes them after its sweeps.
 std::vector<double> run_landing(int threads, std::int64_t* beside) {
   const WorldId w = world_on_floor(threads, 1000);

@@ -116,7 +116,7 @@ struct SolverStats {
   std::int64_t contacts = 0;       // contacts solved, summed over substeps
   std::int64_t energy_clamps = 0;  // body velocities the energy guard scaled back
   std::int64_t pipelined = 0;      // relaxations whose y rows' last sweeps ran on two threads (pipelined_sweeps)
-  std::int64_t orders_beside = 0;  // bottom-up orders made on a helper while the sweeps ran (sweeps_beside)
+  std::int64_t orders_beside = 0;  // bottom-up orders made on a helper while the sweeps ran (beside())
   std::int64_t projections_pipelined = 0;  // projections whose sweeps ran on two threads (pipelined_projection)
 };
 
@@ -280,8 +280,15 @@ class ContactSolver {
   static bool left_to_ccd(const SolverSettings& s, const Pair& p, Vector n, bool impact, bool closes_apart);
   void schedule(const Components& k, Vector g, bool kept_all);
   void warm_start(Components& k);
-  void warm_start_search(Components& k);
-  void warm_start_one(Components& k, std::size_t i, double jn, double jt);
+  template <class Found>
+  void warm_impulses_of(std::size_t begin, std::size_t end, bool search, Found&& found) const;
+  double set_warm(std::size_t i, double jn, double jt);
+  template <class Own>
+  void apply_warm(Components& k, std::size_t i, double jn, double jt, Own&& own);
+#if PHYSICS_HAS_THREADS
+  void warm_start_team(Components& k, bool search);
+  std::vector<std::uint8_t> warmed_;  // by contact: it starts with an impulse (warm_start_team())
+#endif
   void relax(Components& k, Vector g, const SolverSettings& s, bool after_bounce);
   void load_rows(const Components& k, bool after_bounce);
   void load_contact_rows(bool after_bounce);
@@ -298,8 +305,10 @@ class ContactSolver {
   // the contacts and masses, the rows the velocities or the positions: the
   // same bits.
   bool aside() const { return has_threads && workers_ && workers_->threads() > 1; }
-  template <class Sweeps, class Order>
-  void sweeps_beside(Sweeps&& sweeps, Order&& order);
+  // here() on this thread alone while helper() runs on a helper (aside()):
+  // neither uses the team.
+  template <class Here, class Helper>
+  void beside(Here&& here, Helper&& helper);
   void prepare_friction(const Components& k, bool any, bool kept_all);
   void restitution(Components& k, Vector g, const SolverSettings& s);
   void guard_energy(Components& k);
