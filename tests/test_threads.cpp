@@ -250,6 +250,10 @@ BOOST_AUTO_TEST_CASE(one_ended_items_go_just_before_their_bodys_next_item) {
   // {4, 6} (4 moves) to the end, after 4's last; {0, 0} (nothing moves) keeps its place.
   const std::vector<std::uint32_t> want = {1, 0, 2, 3, 4, 6, 5};
   BOOST_TEST(order == want, boost::test_tools::per_element());
+  BOOST_TEST_REQUIRE(p.ends().size() == order.size());  // (the ends as the items now come)
+  for (std::size_t i = 0; i < order.size(); ++i)
+    BOOST_TEST((p.ends()[i].c == items[order[i]].c && p.ends()[i].b == items[order[i]].b &&
+                p.ends()[i].moving == items[order[i]].moving));
   for (std::uint32_t body = 1; body <= 4; ++body) {  // each moving body's items in their given order
     std::vector<std::uint32_t> seen;
     for (const std::uint32_t i : order)

@@ -715,68 +715,33 @@ void ContactSolver::keep_round() {
 // A resting contact that was there last substep starts with the impulse it
 // ended with (a stack's weight is then carried from the start). When the
 // contacts are those of last substep, in the same order (schedule(): a
-// resting pile), contact i's impulse is last substep's i-th; otherwise it
-// is searched for (warm_impulses_of()).
+// resting pile), contact i's impulse is last substep's i-th. The contacts
+// that are not resting are the impacts, in order (make_contacts()): a merge
+// with their list, so that the pass reads no contact (warm_start_one).
 void ContactSolver::warm_start(Components& k) {
   // (The browser's build, short of room, always searches: the same impulses.)
-  const bool search = !keeps_unchanged || restored_ || !same_topology_;
-  if (search && !restored_) last_impulses(topology_next_, warm_);
-  restored_ = false;
-#if PHYSICS_HAS_THREADS
-  if (aside() && workers_->splits(contacts_.size(), min_parallel_items)) return warm_start_team(k, search);
-#endif
-  warm_impulses_of(0, contacts_.size(), search, [&](std::size_t i, double jn, double jt) {
-    apply_warm(k, i, jn, set_warm(i, jn, jt), [](EntityId) { return true; });
-  });
-}
-
-#if PHYSICS_HAS_THREADS
-// On a team: the impulses found by ranges of contacts, then applied by
-// ranges of body ids, each thread applying every contact's impulse to its
-// own bodies: each body gets its contacts' in their order, the same bits
-// as one thread (a settled rain of 100 000: 0.3 ms a substep on one).
-void ContactSolver::warm_start_team(Components& k, bool search) {
-  Workers& w = *workers_;
-  const std::size_t n = contacts_.size();
-  warmed_.resize(n);
-  w.for_ranges(n, min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
-    std::fill(warmed_.begin() + static_cast<std::ptrdiff_t>(begin), warmed_.begin() + static_cast<std::ptrdiff_t>(end), 0);
-    warm_impulses_of(begin, end, search, [&](std::size_t i, double jn, double jt) { set_warm(i, jn, jt), warmed_[i] = 1; });
-  });
-  const std::array<EntityId, max_threads + 1> cut = id_cuts(pairs_, static_cast<std::size_t>(w.threads()));
-  w.run([&](int t) {
-    const EntityId from = cut[static_cast<std::size_t>(t)], to = cut[static_cast<std::size_t>(t) + 1];
-    for (std::size_t i = 0; i < n; ++i)
-      if (warmed_[i])
-        apply_warm(k, i, impulses_[i].lambda, friction_.empty() ? 0.0 : friction_[i].lambda,
-                   [&](EntityId e) { return e >= from && e < to; });
-  });
-}
-#endif
-
-// found(i, jn, jt) for each contact i in [begin, end) that starts with an
-// impulse: last substep's i-th (same contacts), or looked up by pair and
-// axis in the sorted list (`search`). Contacts mostly come in the order of
-// the list (pairs in registration order, ids mostly registered in
-// increasing order), so each search starts where the last one ended when it
-// can: a merge, not a binary search from scratch per contact. The impacts
-// start with none (make_contacts() lists them in order: a merge with their
-// list, so that the pass reads no contact).
-template <class Found>
-void ContactSolver::warm_impulses_of(std::size_t begin, std::size_t end, bool search, Found&& found) const {
-  if (!search) {
-    const std::span<const double> jn(last_jn_), jt(last_jt_);
-    auto impact = std::lower_bound(impacts_.begin(), impacts_.end(), begin);
-    for (std::size_t i = begin, last = std::min(end, jn.size()); i < last; ++i) {
-      const bool resting = impact == impacts_.end() || *impact != i;
-      impact += !resting;
-      if (jn[i] > 0.0 && resting) found(i, jn[i], jt[i]);
-    }
+  if (!keeps_unchanged || restored_ || !same_topology_) {
+    warm_start_search(k);
     return;
   }
+  auto impact = impacts_.begin();
+  for (std::size_t i = 0; i < last_jn_.size(); ++i) {
+    const bool resting = impact == impacts_.end() || *impact != i;
+    impact += !resting;
+    if (last_jn_[i] > 0.0 && resting) warm_start_one(k, i, last_jn_[i], last_jt_[i]);
+  }
+}
+
+// Otherwise each contact's impulse is looked up by pair and axis in the
+// sorted list. Contacts mostly come in the order of the list (pairs in
+// registration order, ids mostly registered in increasing order), so each
+// search starts where the last one ended when it can: a merge, not a binary
+// search from scratch per contact.
+void ContactSolver::warm_start_search(Components& k) {
+  if (!restored_) last_impulses(topology_next_, warm_);
+  restored_ = false;
   auto from = warm_.begin();
-  for (std::size_t i = begin; i < end; ++i) {
-    const ContactConstraint& ct = contacts_[i];
+  for (ContactConstraint& ct : contacts_) {
     if (!ct.resting) continue;
     const auto kk = key(ct.c, ct.b);
     const auto probe = std::make_tuple(kk, ct.axis, -infinity, -infinity);
@@ -791,35 +756,25 @@ void ContactSolver::warm_impulses_of(std::size_t begin, std::size_t end, bool se
     const auto it = std::lower_bound(from, hi, probe);
     from = it;
     if (it != warm_.end() && std::get<0>(*it) == kk && std::get<1>(*it) == ct.axis)
-      found(i, std::get<2>(*it), std::get<3>(*it));
+      warm_start_one(k, static_cast<std::size_t>(&ct - contacts_.data()), std::get<2>(*it), std::get<3>(*it));
   }
 }
 
-// Contact i starts with the normal impulse jn and the tangential jt, within
-// the cone of this substep's start (mu may be 0 for a pair that had none):
-// returns the tangential one (0 without friction).
-double ContactSolver::set_warm(std::size_t i, double jn, double jt) {
-  impulses_[i].lambda = jn;
-  if (friction_.empty()) return 0.0;
-  FrictionRow& f = friction_[i];
-  return f.lambda = std::clamp(jt, -f.mu * jn, f.mu * jn);
-}
-
-// Contact i's starting impulses (set_warm()'s jn and jt) applied to its
-// ends for which own(end). Its bodies and axis read from its key
-// (topology_, 12 bytes, not its 64-byte contact: a settled rain of 100 000
-// spent 8 % of its step waiting for those), its inverse masses from its
-// bodies' (the contact's are those).
-template <class Own>
-void ContactSolver::apply_warm(Components& k, std::size_t i, double jn, double jt, Own&& own) {
+// Contact i starts with the normal impulse jn and the tangential jt. Its
+// bodies and axis read from its key (topology_, 12 bytes, not its 64-byte
+// contact: a settled rain of 100 000 spent 8 % of its step waiting for
+// those), its inverse masses from its bodies' (the contact's are those).
+void ContactSolver::warm_start_one(Components& k, std::size_t i, double jn, double jt) {
   const TopologyKey& ct = topology_[i];
   const Vector n = axis_normal[ct.flags & 3];
   const double wc = inverse_mass_[ct.c], wb = inverse_mass_[ct.b];
-  Vector elsewhere{};  // (an end another thread applies to)
-  Vector& vc = own(ct.c) ? k.velocity[ct.c] : elsewhere;
-  Vector& vb = own(ct.b) ? k.velocity[ct.b] : elsewhere;
-  apply_normal_impulse(vc, vb, n, jn, wc, wb);
-  if (jt != 0.0) apply_normal_impulse(vc, vb, tangent(n), jt, wc, wb);
+  impulses_[i].lambda = jn;
+  apply_normal_impulse(k.velocity[ct.c], k.velocity[ct.b], n, jn, wc, wb);
+  if (friction_.empty()) return;
+  FrictionRow& f = friction_[i];
+  // Within the cone of this substep's start (mu may be 0 for a pair that had none).
+  f.lambda = std::clamp(jt, -f.mu * jn, f.mu * jn);
+  if (f.lambda != 0.0) apply_normal_impulse(k.velocity[ct.c], k.velocity[ct.b], tangent(n), f.lambda, wc, wb);
 }
 
 // Sequential impulses with accumulated clamping, then the bottom-up pass.

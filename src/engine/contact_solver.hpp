@@ -280,15 +280,8 @@ class ContactSolver {
   static bool left_to_ccd(const SolverSettings& s, const Pair& p, Vector n, bool impact, bool closes_apart);
   void schedule(const Components& k, Vector g, bool kept_all);
   void warm_start(Components& k);
-  template <class Found>
-  void warm_impulses_of(std::size_t begin, std::size_t end, bool search, Found&& found) const;
-  double set_warm(std::size_t i, double jn, double jt);
-  template <class Own>
-  void apply_warm(Components& k, std::size_t i, double jn, double jt, Own&& own);
-#if PHYSICS_HAS_THREADS
-  void warm_start_team(Components& k, bool search);
-  std::vector<std::uint8_t> warmed_;  // by contact: it starts with an impulse (warm_start_team())
-#endif
+  void warm_start_search(Components& k);
+  void warm_start_one(Components& k, std::size_t i, double jn, double jt);
   void relax(Components& k, Vector g, const SolverSettings& s, bool after_bounce);
   void load_rows(const Components& k, bool after_bounce);
   void load_contact_rows(bool after_bounce);

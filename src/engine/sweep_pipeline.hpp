@@ -53,8 +53,8 @@ class SweepPipeline {
   };
   template <class EndsOf>
   void defer_one_ended(std::span<std::uint32_t> items, std::size_t body_count, EndsOf&& ends);
-  // The ends of the last defer_one_ended's items, in their new order (asked
-  // once an item there: a plan's bodies may read them here).
+  // The ends of the last defer_one_ended()'s items, in the items' new order
+  // (each asked once, there): a plan may read its items' bodies here.
   std::span<const Ends> ends() const { return ends_; }
 
   // `sweeps` sweeps over the planned items on a team of two or more (its
