@@ -190,13 +190,20 @@ std::size_t renumber(std::span<Support> supports, std::vector<std::uint32_t>& id
 // at the light one's rate, and the projection's shares by inverse mass push
 // the light one into the wall). The axes are independent (a contact's normal
 // is along one), so the passes along x do not undo those along y. `ids`,
-// `met`: renumber()'s scratch. ends(i): contact i's SupportEnds, read once
-// (the velocity stage's from its 12-byte keys: a landing rain of 100 000
-// read its 64-byte contacts and both bodies' masses twice, 1.03 ms an order).
+// `met`: renumber()'s scratch. ends(i): contact i's SupportEnds, read once,
+// from its 12-byte key (a landing rain of 100 000 read its 64-byte contacts
+// and both bodies' masses twice, 1.03 ms an order).
 struct SupportEnds {
   EntityId c, b;
   std::uint8_t axis, fixed;  // fixed: bit 0, c is; bit 1, b is
 };
+// A contact's key (ContactSolver::TopologyKey: bodies, then flags with the
+// axis in bits 0-1 and the fixed ends in bits 2-3, inverse mass 0 being an
+// infinite or NaN mass) as shock_passes() reads it.
+template <class Key>
+SupportEnds support_ends(const Key& t) {
+  return {t.c, t.b, static_cast<std::uint8_t>(t.flags & 3), static_cast<std::uint8_t>(t.flags >> 2 & 3)};
+}
 template <class Ends>
 std::vector<ShockPass> shock_passes(std::size_t count, Ends&& ends, std::size_t entities, Vector g,
                                     std::vector<std::uint32_t>& ids, std::vector<EntityId>& met) {
@@ -798,10 +805,7 @@ void ContactSolver::relax(Components& k, Vector g, const SolverSettings& s, bool
     store_rows(k, after_bounce);
   };
   const auto order = [&] {
-    const auto ends = [&](std::size_t i) {
-      const TopologyKey& t = topology_[i];  // (this substep's: schedule())
-      return SupportEnds{t.c, t.b, static_cast<std::uint8_t>(t.flags & 3), static_cast<std::uint8_t>(t.flags >> 2 & 3)};
-    };
+    const auto ends = [&](std::size_t i) { return support_ends(topology_[i]); };  // (this substep's: schedule())
     support_order_ = shock_passes(contacts_.size(), ends, k.size(), g, support_ids_, support_met_), have_order_ = true;
   };
   if (s.shock_propagation && !have_order_ && aside()) {
@@ -936,9 +940,6 @@ void ContactSolver::schedule(const Components& k, Vector g, bool kept_all) {
   // of by_axis_ (order_by_axis) has no next one in its sweep.
   paired_.resize(by_axis_.size());
 #if defined(__SSE2__)
-  const auto same_level = [&](std::uint32_t a, std::uint32_t b) {
-    return a / schedule_chunk == b / schedule_chunk && level_[a] == level_[b];
-  };
   // The same in order_ for the friction sweep: rows i and i + 1 of one chunk
   // and level with normals along the same component (schedule's sort puts a
   // level's x rows before its y rows).
@@ -955,6 +956,12 @@ void ContactSolver::schedule(const Components& k, Vector g, bool kept_all) {
   if (!friction_paired_.empty()) friction_paired_.back() = 0;
 #endif
   scheduled_ = true;  // (last: an allocation that throws above leaves no order taken for made)
+}
+
+// Whether contacts a and b come from one chunk and level of the order
+// (order_chunk()): then they share no linking body.
+bool ContactSolver::same_level(std::uint32_t a, std::uint32_t b) const {
+  return a / schedule_chunk == b / schedule_chunk && level_[a] == level_[b];
 }
 
 // Contacts [start, end) of one chunk, by level (order_, level_): a
@@ -1296,8 +1303,7 @@ void ContactSolver::plan_y_rows() {
     return SweepPipeline::Ends{slot_of_[t.c], slot_of_[t.b], t.flags >> 4 & 3};
   });
 #if defined(__SSE2__)
-  for (std::size_t r = 0; r + 1 < rows.size(); ++r)
-    paired[r] = rows[r] / schedule_chunk == rows[r + 1] / schedule_chunk && level_[rows[r]] == level_[rows[r + 1]];
+  for (std::size_t r = 0; r + 1 < rows.size(); ++r) paired[r] = same_level(rows[r], rows[r + 1]);
   paired.back() = 0;
 #endif
   const std::span<const SweepPipeline::Ends> ends = pipeline_.ends();
@@ -2192,11 +2198,7 @@ void ContactSolver::project(Components& k, Vector g, const SolverSettings& s) {
   }
   const bool new_order = !have_position_order_ || g != position_g_ || !same_contacts;
   const auto order = [&] {
-    const auto ends = [&](std::size_t i) {
-      const PositionContact& ct = positions_[i];
-      const auto fixed = static_cast<std::uint8_t>((std::isfinite(k.mass[ct.c]) ? 0 : 1) | (std::isfinite(k.mass[ct.b]) ? 0 : 2));
-      return SupportEnds{ct.c, ct.b, static_cast<std::uint8_t>(ct.axis), fixed};
-    };
+    const auto ends = [&](std::size_t i) { return support_ends(position_keys_[i]); };  // (this projection's)
     position_order_ = shock_passes(positions_.size(), ends, k.size(), g, support_ids_, support_met_), position_g_ = g,
     have_position_order_ = true;
   };

@@ -457,6 +457,7 @@ class ContactSolver {
   // How many x rows a world needs for them to be cut (order_by_axis()).
   static constexpr std::size_t cut_x_rows = min_parallel_items;
   void order_by_axis();
+  bool same_level(std::uint32_t a, std::uint32_t b) const;
   std::vector<std::uint8_t> paired_;       // by row of by_axis_: it and the next may be solved together
   std::vector<std::uint8_t> friction_paired_;  // the same by row of order_ (with SSE2: group_friction_rows)
   // By row of order_, with friction: how many rows from it the friction sweep
