@@ -513,7 +513,11 @@ class Report {
            md.str() + "\n";
   }
 
-  // Growth of our cost between consecutive sizes from 10 000 up: exponent of t ~ N^k.
+  // Growth of our cost between consecutive sizes from 10 000 up: exponent of
+  // t ~ N^k; beside it Box2D v3.2's over the same sizes where it ran both
+  // (the aim's yardstick: what the memory of the machine does to the
+  // strongest peer), with its steps where a budget cut its run short (its
+  // median then covers another share of the scene's phases).
   std::string growth() const {
     std::ostringstream md;
     std::vector<std::string> names;
@@ -525,19 +529,39 @@ class Report {
         if (r.engine == "ours" && r.scene == name && r.n >= 10000) ours.push_back(&r);
       for (std::size_t i = 0; i + 1 < ours.size(); ++i) {
         const Result &a = *ours[i], &b = *ours[i + 1];
-        const double k = std::log(b.median_ms / a.median_ms) / std::log(double(b.n) / double(a.n));
+        const double k = exponent(a, b);
         md << "| " << name << " | " << a.n << " → " << b.n << " | " << fmt("%.3f", a.median_ms) << " | "
-           << fmt("%.3f", b.median_ms) << " | " << fmt("%.2f", k) << " |\n";
+           << fmt("%.3f", b.median_ms) << " | " << fmt("%.2f", k) << " | " << peer_growth(a, b) << " |\n";
         std::printf("ours %s: cost grows as N^%.2f from %zu to %zu bodies\n", name.c_str(), k, a.n, b.n);
       }
     }
     if (md.str().empty()) return "";
     return "## Growth of our cost with N\n\n| scene | N | ms/step at the first | ms/step at the second | exponent k "
-           "(t ∝ N^k) |\n|---|---|---:|---:|---:|\n" +
+           "(t ∝ N^k) | Box2D v3.2's k |\n|---|---|---:|---:|---:|---:|\n" +
            md.str() + "\n";
   }
 
  private:
+  static double exponent(const Result& a, const Result& b) {
+    return std::log(b.median_ms / a.median_ms) / std::log(double(b.n) / double(a.n));
+  }
+  // Box2D v3.2's exponent over ours' two runs' sizes, "-" where it ran one of them not.
+  std::string peer_growth(const Result& ours_a, const Result& ours_b) const {
+    const auto find = [&](const Result& o) -> const Result* {
+      for (const Result& r : results_)
+        if (r.engine == "box2d3" && r.scene == o.scene && r.n == o.n) return &r;
+      return nullptr;
+    };
+    const Result *a = find(ours_a), *b = find(ours_b);
+    if (!a || !b) return "-";
+    std::string cut;
+    for (const auto& [peer, ours] : {std::pair{a, &ours_a}, std::pair{b, &ours_b}})
+      if (peer->steps_run < ours->steps_run)
+        cut += (cut.empty() ? " (" : ", ") + std::to_string(peer->steps_run) + " of " + std::to_string(ours->steps_run) +
+               " steps at " + std::to_string(peer->n);
+    return fmt("%.2f", exponent(*a, *b)) + (cut.empty() ? "" : cut + ")");
+  }
+
   const Options& o_;
   std::ostringstream table_;
   std::vector<Result> results_;
