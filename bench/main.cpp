@@ -29,6 +29,7 @@
 #include <sys/resource.h>
 
 #include <thread>
+#include <unistd.h>
 #include <vector>
 
 #include "bench.hpp"
@@ -91,6 +92,7 @@ struct Result {
   int steps_run = 0;  // fewer than asked when the run hit the time budget
   double peak_mb = 0; // the run's process: peak resident memory
   double map_mb = 0;  // the heap its tile map took (Engine::map_mb)
+  double others = NAN; // the machine's other load during the run, in cores (others_load); NaN: unknown
   Quality q;
 };
 
@@ -224,6 +226,38 @@ double percentile(std::vector<double> v, double p) {
   return v[std::min(k, v.size() - 1)];
 }
 
+// The CPU time the machine has spent, every process and the hypervisor's
+// steal included (/proc/stat; NaN where it cannot be read), and this
+// process's and its waited-for children's (getrusage).
+struct CpuTimes {
+  double machine_s = NAN, self_s = 0;
+};
+
+CpuTimes cpu_times() {
+  CpuTimes t;
+  std::ifstream in("/proc/stat");
+  std::string cpu;
+  unsigned long long user = 0, nice = 0, system = 0, idle = 0, iowait = 0, irq = 0, softirq = 0, steal = 0;
+  if (in >> cpu >> user >> nice >> system >> idle >> iowait >> irq >> softirq >> steal && cpu == "cpu")
+    t.machine_s = static_cast<double>(user + nice + system + irq + softirq + steal) / static_cast<double>(sysconf(_SC_CLK_TCK));
+  const auto seconds = [](timeval v) { return static_cast<double>(v.tv_sec) + static_cast<double>(v.tv_usec) * 1e-6; };
+  for (const int who : {RUSAGE_SELF, RUSAGE_CHILDREN}) {
+    rusage use{};
+    getrusage(who, &use);
+    t.self_s += seconds(use.ru_utime) + seconds(use.ru_stime);
+  }
+  return t;
+}
+
+// How many cores the rest of the machine kept busy between a and b, over
+// wall_s seconds: what a two-thread run did not have of the second core (on
+// a shared machine a neighbour may hold it). NaN when unknown, or when the
+// window was too short for the kernel's ticks (10 ms) to tell.
+double others_load(const CpuTimes& a, const CpuTimes& b, double wall_s) {
+  if (!(wall_s >= 0.25) || std::isnan(a.machine_s) || std::isnan(b.machine_s)) return NAN;
+  return std::max(0.0, ((b.machine_s - a.machine_s) - (b.self_s - a.self_s)) / wall_s);
+}
+
 Result run(const std::string& engine, const Scene& s, const Options& o) {
   using clock = std::chrono::steady_clock;
   Result r;
@@ -280,6 +314,10 @@ Result run_isolated(const std::string& self, const std::string& engine, const Sc
   std::ostringstream cmd;
   cmd << "'" << (local ? self : o.peers) << "' --child " << engine << "," << s.name << "," << s.dynamic_count() << " --steps " << o.steps
       << " --warmup " << o.warmup << " --budget " << o.budget << " --phase-budget " << o.phase_budget;
+  // The machine's other load over the child's whole life (its scene's
+  // making too: one thread then, but the rest of the machine is what counts).
+  const auto start = std::chrono::steady_clock::now();
+  const CpuTimes before = cpu_times();
   std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(cmd.str().c_str(), "r"), pclose);
   if (!pipe) throw std::runtime_error("cannot start " + cmd.str());
   Result r;
@@ -291,6 +329,7 @@ Result run_isolated(const std::string& self, const std::string& engine, const Sc
                              &r.build_ms, &r.steps_run, &r.q.escaped, &r.q.max_overlap, &r.q.energy_drift,
                              &r.q.top_moved, &r.peak_mb, &r.map_mb) == 10;
   if (pclose(pipe.release()) != 0 || !got) throw std::runtime_error("the run failed: " + cmd.str());
+  r.others = others_load(before, cpu_times(), std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   return r;
 }
 
@@ -455,15 +494,21 @@ std::string engine_note(const std::string& e, const Options& o) {
   return "`" + e + "`";
 }
 
-// The table, printed and in Markdown, and the growth of our cost.
+// The run of median time among an engine's runs (the lower middle of an even count).
+Result median_run(std::vector<Result> runs) {
+  std::sort(runs.begin(), runs.end(), [](const Result& a, const Result& b) { return a.median_ms < b.median_ms; });
+  return runs[(runs.size() - 1) / 2];
+}
+
+// The table, printed and in Markdown, the two-thread runs and the growth of our cost.
 class Report {
  public:
   explicit Report(const Options& o) : o_(o) {
     table_ << "| engine | scene | N | median ms/step | p95 ms/step | ns/body/step | time ÷ ours | escaped | max overlap "
-              "(block) | KE drift (gas) | top block moved (pyramids, m) | peak MB |\n"
-              "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-    std::printf("%-22s %-16s %7s %9s %9s %9s %7s %7s %9s %10s %9s %7s\n", "engine", "scene", "N", "median", "p95",
-                "ns/body", "÷ours", "escaped", "overlap", "KE drift", "top moved", "peak MB");
+              "(block) | KE drift (gas) | top block moved (pyramids, m) | peak MB | other load (cores) |\n"
+              "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    std::printf("%-22s %-16s %7s %9s %9s %9s %7s %7s %9s %10s %9s %7s %6s\n", "engine", "scene", "N", "median", "p95",
+                "ns/body", "÷ours", "escaped", "overlap", "KE drift", "top moved", "peak MB", "others");
   }
 
   // ours_ms: ours' median on the same scene (0 if ours did not run it).
@@ -472,18 +517,52 @@ class Report {
     const std::string ratio = ours_ms > 0 ? fmt("%.2f", r.median_ms / ours_ms) : "-";
     const std::string drift = r.scene == "gas" ? fmt("%+.2e", r.q.energy_drift) : "-";
     const std::string top = r.scene.find("pyramid") != std::string::npos ? fmt("%.4f", r.q.top_moved) : "-";
-    std::printf("%-22s %-16s %7zu %9.3f %9.3f %9.1f %7s %7zu %9.4f %10s %9s %7.0f\n", label.c_str(), r.scene.c_str(),
-                r.n, r.median_ms, r.p95_ms, ns_body, ratio.c_str(), r.q.escaped, r.q.max_overlap, drift.c_str(),
-                top.c_str(), r.peak_mb);
+    std::printf("%-22s %-16s %7zu %9.3f %9.3f %9.1f %7s %7zu %9.4f %10s %9s %7.0f %6s\n", label.c_str(),
+                r.scene.c_str(), r.n, r.median_ms, r.p95_ms, ns_body, ratio.c_str(), r.q.escaped, r.q.max_overlap,
+                drift.c_str(), top.c_str(), r.peak_mb, load(r).c_str());
     std::fflush(stdout);
     table_ << "| " << label << " | " << r.scene << " | " << r.n << " | " << fmt("%.3f", r.median_ms) << " | "
            << fmt("%.3f", r.p95_ms) << " | " << fmt("%.1f", ns_body) << " | " << ratio << " | " << r.q.escaped
            << " | " << fmt("%.4f", r.q.max_overlap) << " | " << drift << " | " << top << " | "
-           << fmt("%.0f", r.peak_mb) << " |\n";
+           << fmt("%.0f", r.peak_mb) << " | " << load(r) << " |\n";
     results_.push_back(r);
   }
 
   std::string table() const { return table_.str(); }
+
+  // One engine's runs on one thread and on two of one scene (in turns).
+  void add_threads(const std::vector<Result>& one, const std::vector<Result>& two) {
+    if (one.empty() || two.empty()) return;
+    const auto runs = [](const std::vector<Result>& rs) {
+      std::string out;
+      for (const Result& r : rs) out += (out.empty() ? "" : ", ") + fmt("%.3f", r.median_ms) + " (" + load(r) + ")";
+      return out;
+    };
+    std::vector<Result> free;
+    for (const Result& r : two)
+      if (r.others < free_below) free.push_back(r);
+    const double base = median_run(one).median_ms;
+    const std::string gain_free = free.empty() ? "- (none)"
+                                               : fmt("%.2f×", base / median_run(free).median_ms) + " (" +
+                                                     std::to_string(free.size()) + " of " + std::to_string(two.size()) + ")";
+    threads_ << "| " << two.front().engine << " | " << one.front().scene << " | " << one.front().n << " | " << runs(one)
+             << " | " << runs(two) << " | " << fmt("%.2f×", base / median_run(two).median_ms) << " | " << gain_free
+             << " |\n";
+    std::printf("%s %s %zu: two threads %.2fx one (median runs), %s with the second core free\n",
+                two.front().engine.c_str(), one.front().scene.c_str(), one.front().n,
+                base / median_run(two).median_ms, gain_free.c_str());
+  }
+
+  std::string threads() const {
+    if (threads_.str().empty()) return "";
+    return "## Two threads\n\nEach engine's runs on one thread and on two, in turns, with the machine's other load "
+           "during each (*other load*: the cores' time spent by other processes or taken by the hypervisor, over the "
+           "run's time; near 0 the second core was free, near 1 a neighbour held it). *gain*: the median one-thread "
+           "run's time over the median two-thread run's; *gain, second core free*: the same over the two-thread runs "
+           "whose other load stayed under " + fmt("%.2f", free_below) + " core.\n\n"
+           "| engine | scene | N | one thread: ms a step (other load) | two threads: ms a step (other load) | gain | "
+           "gain, second core free |\n|---|---|---:|---|---|---:|---:|\n" + threads_.str() + "\n";
+  }
 
   // The tiles scene: per engine and map, the map's heap and the step's cost
   // over the engine's own on the first (smallest) map.
@@ -562,8 +641,10 @@ class Report {
     return fmt("%.2f", exponent(*a, *b)) + (cut.empty() ? "" : cut + ")");
   }
 
+  static constexpr double free_below = 0.25;  // a two-thread run had the second core: others' load under this
+  static std::string load(const Result& r) { return std::isnan(r.others) ? "-" : fmt("%.2f", r.others); }
   const Options& o_;
-  std::ostringstream table_;
+  std::ostringstream table_, threads_;
   std::vector<Result> results_;
 };
 
@@ -595,12 +676,6 @@ int runs_of(const std::string& engine, const Scene& s, bool alone, const Options
   return (repeated && (engine == "ours" || engine == "box2d3")) || paired ? o.repeats : 1;
 }
 
-// The run of median time among an engine's runs (the lower middle of an even count).
-Result median_run(std::vector<Result> runs) {
-  std::sort(runs.begin(), runs.end(), [](const Result& a, const Result& b) { return a.median_ms < b.median_ms; });
-  return runs[(runs.size() - 1) / 2];
-}
-
 // One scene at one size, every engine (ours alone if `alone`), ours and
 // Box2D v3.2 in turns where they run several times (runs_of); ours and
 // Box2D v3.2 on two threads too (ours-2t, box2d3-2t) on the stable solver's
@@ -630,6 +705,8 @@ void run_scene(const std::string& self, const Scene& s, bool alone, const Option
     if (runs[engine].size() > 1) label += " (median of " + std::to_string(runs[engine].size()) + ")";
     report.add(r, ours_ms, label);
   }
+  for (const std::string engine : {"ours", "box2d3"})
+    if (runs.count(engine) && runs.count(engine + "-2t")) report.add_threads(runs[engine], runs[engine + "-2t"]);
 }
 
 void run_all(const std::string& self, const Options& o, Report& report) {
@@ -715,9 +792,11 @@ void write_markdown(const Options& o, const std::string& command, const std::str
         "bodies whose centre left the box; *max overlap* is the deepest overlap of two boxes, or of a box into a "
         "wall, at the last step, in block sides; *KE drift* is (E_end − E_start)/E_start; *top block moved* is the "
         "largest displacement of a pyramid's top block over the run; *peak MB* is the run's process's peak "
-        "resident memory (the scene's description included).\n\n"
+        "resident memory (the scene's description included); *other load* is how many cores the rest of the machine "
+        "kept busy during the run's steps (/proc/stat less the run's own time; a two-thread run with 1 here had one "
+        "core; - for runs under half a second).\n\n"
      << report.table() << "\n"
-     << report.growth() << report.tiles() << broadphase;
+     << report.threads() << report.growth() << report.tiles() << broadphase;
 }
 
 }  // namespace
