@@ -142,7 +142,7 @@ std::uint8_t SweepPipeline::run(Workers& w, int sweeps, std::uint8_t going_on, S
   std::atomic<int> stop{sweeps};  // the first sweep that found none of going_on, once one has
   TeamProgress progress;          // thread t has done blocks [0, step) of sweep after sweep (its sweeps' blocks in a row)
   constexpr std::uint64_t done = ~std::uint64_t{0};
-  w.run([&](int t) noexcept {
+  w.run_together([&](int t) noexcept {
     const int other = 1 - t;
     for (int sweep = t; t < 2 && sweep < sweeps && sweep <= stop.load(std::memory_order_acquire); sweep += 2) {
       const std::uint64_t before = static_cast<std::uint64_t>(sweep / 2) * blocks;  // its blocks of its earlier sweeps

@@ -59,32 +59,57 @@ T wait_change(const std::atomic<T>& a, T old) {
 
 }  // namespace
 
+// A task's parts are claimed from one word, `state`: the task's number
+// (its generation) in the high 32 bits, its parts' count and the next part
+// to claim in the low ones. A claim is a compare-and-swap that holds only
+// for the task it was made for, so a helper that wakes late, after the
+// calling thread has done the parts and gone on, claims nothing of a task
+// that is over. The task and its context are read only after a claim
+// (start() publishes no other task until every part is done).
 struct Workers::Team {
-  std::atomic<std::uint32_t> generation{0};  // one more per task
-  std::atomic<int> pending{0};               // helpers still running the task
+  std::atomic<std::uint64_t> state{0};  // generation << 32 | parts << 16 | next part
+  std::atomic<int> done{0};             // parts of the task returned
   std::atomic<bool> stop{false};
+  std::uint32_t generation = 0;         // the calling thread's count of tasks
   void (*task)(void*, int) = nullptr;
   void* context = nullptr;
+  bool together = false;  // each helper takes one part at most (Workers::run_together)
 #if PHYSICS_HAS_THREADS
   std::vector<std::thread> helpers;
-  std::vector<std::exception_ptr> errors;  // by thread: what its part of the task threw
+  std::vector<std::exception_ptr> errors;  // by part: what it threw
 
-  // Thread t's part of the task; what it throws is kept for start() to throw.
+  static constexpr std::uint64_t generation_of(std::uint64_t s) { return s >> 32; }
+  // The next part of task `gen` in `part`, if it has one left.
+  bool claim(std::uint64_t gen, int& part) {
+    std::uint64_t s = state.load(std::memory_order_acquire);
+    for (;;) {
+      const auto next = static_cast<int>(s & 0xFFFF), parts = static_cast<int>(s >> 16 & 0xFFFF);
+      if (generation_of(s) != gen || next >= parts) return false;
+      if (state.compare_exchange_weak(s, s + 1, std::memory_order_acq_rel, std::memory_order_acquire)) {
+        part = next;
+        return true;
+      }
+    }
+  }
+  // Part t of the task; what it throws is kept for start() to throw.
   void run_part(int t) {
     try {
       task(context, t);
     } catch (...) {
       errors[static_cast<std::size_t>(t)] = std::current_exception();
     }
+    if (done.fetch_add(1, std::memory_order_acq_rel) + 1 == static_cast<int>(helpers.size()) + 1) done.notify_one();
   }
-
-  void serve(int index) {
-    std::uint32_t seen = 0;
+  void serve() {
+    std::uint64_t seen = 0;  // the state last looked at
     for (;;) {
-      seen = wait_change(generation, seen);
+      const std::uint64_t gen = generation_of(seen);
+      while (generation_of(seen) == gen) seen = wait_change(state, seen);
       if (stop.load(std::memory_order_acquire)) return;
-      run_part(index);
-      if (pending.fetch_sub(1, std::memory_order_acq_rel) == 1) pending.notify_one();
+      for (int part; claim(generation_of(seen), part);) {
+        run_part(part);
+        if (together) break;
+      }
     }
   }
 #endif
@@ -99,7 +124,7 @@ Workers::Workers(int threads) : threads_(threads) {
   if (threads == 1) return;
   team_ = std::make_unique<Team>();
   team_->errors.resize(static_cast<std::size_t>(threads));
-  for (int t = 1; t < threads; ++t) team_->helpers.emplace_back([team = team_.get(), t] { team->serve(t); });
+  for (int t = 1; t < threads; ++t) team_->helpers.emplace_back([team = team_.get()] { team->serve(); });
 #endif
 }
 
@@ -125,21 +150,24 @@ Workers::~Workers() {
 #if PHYSICS_HAS_THREADS
   if (!team_) return;
   team_->stop.store(true, std::memory_order_release);
-  team_->generation.fetch_add(1, std::memory_order_acq_rel);
-  team_->generation.notify_all();
+  team_->state.store(std::uint64_t{++team_->generation} << 32, std::memory_order_release);  // (no part to claim)
+  team_->state.notify_all();
   for (std::thread& t : team_->helpers) t.join();
 #endif
 }
 
-void Workers::start(void (*task)(void*, int), void* context) {
+void Workers::start(void (*task)(void*, int), void* context, bool together) {
 #if PHYSICS_HAS_THREADS
   Team& team = *team_;
-  team.task = task, team.context = context;
-  team.pending.store(threads_ - 1, std::memory_order_relaxed);
-  team.generation.fetch_add(1, std::memory_order_acq_rel);
-  team.generation.notify_all();
-  team.run_part(0);
-  for (int left = threads_ - 1; left != 0;) left = wait_change(team.pending, left);
+  team.task = task, team.context = context, team.together = together;
+  team.done.store(0, std::memory_order_relaxed);
+  const std::uint64_t gen = ++team.generation;
+  // Together: part 0 is this thread's, the helpers claim the others.
+  team.state.store(gen << 32 | static_cast<std::uint64_t>(threads_) << 16 | (together ? 1 : 0), std::memory_order_release);
+  team.state.notify_all();
+  if (together) team.run_part(0);
+  for (int part; !together && team.claim(gen, part);) team.run_part(part);
+  for (int done = team.done.load(std::memory_order_acquire); done != threads_;) done = wait_change(team.done, done);
   // (The first thread's exception that there is; the others' dropped, for the next task.)
   const auto thrown =
       std::find_if(team.errors.begin(), team.errors.end(), [](const std::exception_ptr& e) { return e != nullptr; });

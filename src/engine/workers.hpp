@@ -55,16 +55,30 @@ class Workers {
 
   int threads() const { return has_threads ? threads_ : 1; }
 
-  // Runs task(t) for every t in [0, threads()) at once, t = 0 on the calling
-  // thread, and returns when every one has returned. If the task throws on
-  // some threads (an allocation that fails in a range), run() throws the
-  // lowest t's exception once every thread has returned, and the team stays
-  // usable. (A task whose threads wait for each other, TeamProgress, must
-  // not throw: the others would wait on. SweepPipeline::run's is noexcept.)
+  // Runs task(t) for every part t in [0, threads()), and returns when every
+  // one has returned. The parts are claimed in turn by the calling thread
+  // and the helpers as they come: a helper that a busy machine keeps off
+  // its core leaves its part to the calling thread, which would otherwise
+  // wait for it (the same results: part t does the same work on any
+  // thread; no two parts may wait for each other). If the task throws in
+  // some parts (an allocation that fails in a range), run() throws the
+  // lowest t's exception once every part has returned, and the team stays
+  // usable.
   template <class Task>
   void run(Task&& task) {
     if constexpr (has_threads) {
-      if (threads_ > 1) return start(+[](void* context, int t) { (*static_cast<Task*>(context))(t); }, &task);
+      if (threads_ > 1) return start(+[](void* context, int t) { (*static_cast<Task*>(context))(t); }, &task, false);
+    }
+    task(0);
+  }
+  // run(), with every part on a thread of its own at once, part 0 on the
+  // calling thread: for parts that wait for each other (TeamProgress), which
+  // must not throw (the others would wait on; SweepPipeline::run's is
+  // noexcept).
+  template <class Task>
+  void run_together(Task&& task) {
+    if constexpr (has_threads) {
+      if (threads_ > 1) return start(+[](void* context, int t) { (*static_cast<Task*>(context))(t); }, &task, true);
     }
     task(0);
   }
@@ -138,7 +152,7 @@ class Workers {
 
  private:
   struct Team;  // the helpers (threads - 1 of them) and what they share
-  void start(void (*task)(void*, int), void* context);
+  void start(void (*task)(void*, int), void* context, bool together);
   int threads_ = 1;
   std::unique_ptr<Team> team_;
 };
