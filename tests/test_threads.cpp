@@ -1,11 +1,14 @@
 // The engine's threads (engine/workers.hpp, WorldDef::threads, --threads):
 // the team's ranges, and the same bits for any number of threads on worlds
 // big enough for every parallel loop to split (min_parallel_items).
+#include <atomic>
 #include <bit>
+#include <chrono>
 #include <cstdint>
 #include <new>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "helpers.hpp"
@@ -46,9 +49,9 @@ BOOST_AUTO_TEST_CASE(ranges_cover_every_item_once_in_order) {
   }
 }
 
-// Every thread runs the task once per run, many runs in a row (the helpers
+// Every part of the task runs once per run, many runs in a row (the helpers
 // spinning between them, then asleep).
-BOOST_AUTO_TEST_CASE(every_thread_runs_each_task_once) {
+BOOST_AUTO_TEST_CASE(every_part_runs_once_per_task) {
   Workers w(3);
   std::vector<int> runs(3, 0);
   for (int r = 0; r < 2000; ++r) w.run([&](int t) { ++runs[static_cast<std::size_t>(t)]; });
@@ -57,6 +60,32 @@ BOOST_AUTO_TEST_CASE(every_thread_runs_each_task_once) {
   BOOST_TEST(copy.threads() == 3);
   copy.run([&](int t) { ++runs[static_cast<std::size_t>(t)]; });
   BOOST_TEST(runs == std::vector<int>(3, 2001), boost::test_tools::per_element());
+}
+
+// run_together() puts every part on a thread of its own at once, part 0 on
+// the caller's, even when the helpers are asleep (between runs here) and
+// part 0 is over at once: parts 1 and 2 wait until all three have started,
+// which a thread that took two parts would wait for on (the deadline turns
+// that into a failure). run() would give the caller a sleeping helper's
+// part.
+BOOST_AUTO_TEST_CASE(parts_run_together_are_on_threads_of_their_own) {
+  Workers w(3);
+  for (int r = 0; r < 40; ++r) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(r % 2 == 0 ? 3 : 0));  // (past the helpers' spinning)
+    std::atomic<int> started{0};
+    std::atomic<bool> late{false};
+    std::vector<std::thread::id> ids(3);
+    w.run_together([&](int t) noexcept {
+      ids[static_cast<std::size_t>(t)] = std::this_thread::get_id();
+      started.fetch_add(1);
+      const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+      while (t != 0 && started.load() < 3)
+        if (std::chrono::steady_clock::now() > deadline) return late.store(true);
+    });
+    BOOST_TEST_REQUIRE(!late.load());
+    BOOST_TEST((ids[0] == std::this_thread::get_id()));
+    BOOST_TEST((ids[0] != ids[1] && ids[1] != ids[2] && ids[0] != ids[2]));
+  }
 }
 
 // What a task throws on any thread reaches run()'s caller once every thread
