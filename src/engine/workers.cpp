@@ -107,8 +107,9 @@ struct Workers::Team {
       while (generation_of(seen) == gen) seen = wait_change(state, seen);
       if (stop.load(std::memory_order_acquire)) return;
       for (int part; claim(generation_of(seen), part);) {
+        const bool once = together;  // (read before the part is done: then start() may write the next task's)
         run_part(part);
-        if (together) break;
+        if (once) break;
       }
     }
   }
