@@ -67,6 +67,7 @@ T wait_change(const std::atomic<T>& a, T old) {
 // that is over. The task and its context are read only after a claim
 // (start() publishes no other task until every part is done).
 struct Workers::Team {
+#if PHYSICS_HAS_THREADS
   std::atomic<std::uint64_t> state{0};  // generation << 32 | parts << 16 | next part
   std::atomic<int> done{0};             // parts of the task returned
   std::atomic<bool> stop{false};
@@ -74,7 +75,6 @@ struct Workers::Team {
   void (*task)(void*, int) = nullptr;
   void* context = nullptr;
   bool together = false;  // each helper takes one part at most (Workers::run_together)
-#if PHYSICS_HAS_THREADS
   std::vector<std::thread> helpers;
   std::vector<std::exception_ptr> errors;  // by part: what it threw
 
@@ -157,7 +157,7 @@ Workers::~Workers() {
 #endif
 }
 
-void Workers::start(void (*task)(void*, int), void* context, bool together) {
+void Workers::start(void (*task)(void*, int), void* context, [[maybe_unused]] bool together) {
 #if PHYSICS_HAS_THREADS
   Team& team = *team_;
   team.task = task, team.context = context, team.together = together;
