@@ -167,6 +167,8 @@ std::vector<double> run_rain(int threads, SolverKind solver, int steps, bool fri
   def.substeps = 2;
   def.threads = threads;
   const WorldId w = create_world(def);
+  // (Counted pipelines: the helpers taken as prompt, whatever the machine's load: Workers::prompt.)
+  if (pipelined) api::world(w).world->workers.assume(Workers::Helpers::prompt);
   BodyDef wall = default_body_def();
   wall.mass = fixed_mass;
   wall.restitution = 0.5;
@@ -324,8 +326,10 @@ BOOST_AUTO_TEST_CASE(one_ended_items_go_just_before_their_bodys_next_item) {
 // among their bodies' (SweepPipeline::defer_one_ended). (A new order is
 // made beside one thread's sweeps, ContactSolver::beside: the steps whose contacts
 // changed are not pipelined.)
-std::vector<double> run_top_down_pile(int threads, SolverStats* stats) {
+std::vector<double> run_top_down_pile(int threads, SolverStats* stats,
+                                      Workers::Helpers helpers = Workers::Helpers::prompt) {
   const WorldId w = world_on_floor(threads, 800);
+  api::world(w).world->workers.assume(helpers);  // (whatever the machine's load)
   BodyDef wall = default_body_def();
   wall.mass = fixed_mass;
   for (const double x : {-40.0, 599.0}) {  // (a px short of the row's 600)
@@ -352,7 +356,20 @@ BOOST_AUTO_TEST_CASE(the_projection_and_the_y_rows_on_two_threads_give_the_same_
   BOOST_TEST(one == bits(run_top_down_pile(2, &stats)));
   BOOST_TEST(stats.projections_pipelined > 5);
   BOOST_TEST(stats.pipelined > 5);
+  BOOST_TEST(stats.pipelines_left == 0);
   BOOST_TEST(one == bits(run_top_down_pile(3, &stats)));
+}
+
+// When the helpers come late to the team's tasks (Workers::prompt: a busy
+// machine keeps them off their core), the sweeps that would be pipelined
+// run on one thread, with the same bits.
+BOOST_AUTO_TEST_CASE(with_late_helpers_the_pipelines_run_on_one_thread_with_the_same_bits) {
+  SolverStats stats;
+  const auto one = bits(run_top_down_pile(1, &stats));
+  BOOST_TEST(one == bits(run_top_down_pile(2, &stats, Workers::Helpers::late)));
+  BOOST_TEST(stats.projections_pipelined == 0);
+  BOOST_TEST(stats.pipelined == 0);
+  BOOST_TEST(stats.pipelines_left > 10);
 }
 
 // A rain's first landings: a few hundred contacts at a time, too few for

@@ -1249,7 +1249,7 @@ void ContactSolver::iterate(const SolverSettings& s) {
     for (int it = 0; it < s.iterations && (live(0) || live(1)); ++it) {
 #if PHYSICS_HAS_THREADS
       // The x rows done (a pile's, after a sweep or two): the y rows' sweeps left on both threads.
-      if (together && !live(0) && y_rows >= pipeline_rows) {
+      if (together && !live(0) && y_rows >= pipeline_rows && pipelines_pay(w)) {
         last[1] = pipelined_sweeps(w, rows.subspan(x_rows_), lambdas.subspan(x_rows_), paired.subspan(x_rows_),
                                    s.iterations - it);
         break;
@@ -2184,7 +2184,8 @@ void ContactSolver::project(Components& k, Vector g, const SolverSettings& s) {
   const auto sweeps = [&] {
 #if PHYSICS_HAS_THREADS
     Workers& w = workers_or_one(workers_);  // (none beside an order: beside())
-    if (w.splits(positions_.size(), min_parallel_items) && s.iterations > 0) return pipelined_projection(k, s, w);
+    if (w.splits(positions_.size(), min_parallel_items) && s.iterations > 0 && pipelines_pay(w))
+      return pipelined_projection(k, s, w);
 #endif
     for (int it = 0; it < s.iterations; ++it) {
       bool pushed = false;
@@ -2243,6 +2244,15 @@ void ContactSolver::plan_projection(std::size_t body_count) {
         if (ends[i].moving & 2) body(ends[i].b);
       },
       [](std::size_t) { return false; });
+}
+
+// Whether sweeps pipelined on two threads (whose blocks wait for each
+// other's) are worth running: the helpers come at once (Workers::prompt).
+// Otherwise one thread sweeps: the same bits.
+bool ContactSolver::pipelines_pay(const Workers& w) {
+  if (w.prompt()) return true;
+  ++stats.pipelines_left;
+  return false;
 }
 
 void ContactSolver::pipelined_projection(Components& k, const SolverSettings& s, Workers& w) {

@@ -118,6 +118,7 @@ struct SolverStats {
   std::int64_t pipelined = 0;      // relaxations whose y rows' last sweeps ran on two threads (pipelined_sweeps)
   std::int64_t orders_beside = 0;  // bottom-up orders made on a helper while the sweeps ran (beside())
   std::int64_t projections_pipelined = 0;  // projections whose sweeps ran on two threads (pipelined_projection)
+  std::int64_t pipelines_left = 0;  // relaxations and projections that would have been pipelined, on one thread: the helpers were late (Workers::prompt)
 };
 
 // One contact as the solver's iterations read it: the pair, its axis and
@@ -368,6 +369,7 @@ class ContactSolver {
   std::vector<std::uint32_t> projection_order_;  // indices into positions_
   void plan_projection(std::size_t body_count);
   void pipelined_projection(Components& k, const SolverSettings& s, Workers& w);
+  bool pipelines_pay(const Workers& w);
 #endif
   std::vector<std::vector<PositionContact>> position_parts_;  // prepare_positions()' lists of a team's threads
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <chrono>
 #include <cstdint>
 #include <exception>
@@ -75,6 +76,9 @@ struct Workers::Team {
   void (*task)(void*, int) = nullptr;
   void* context = nullptr;
   bool together = false;  // each helper takes one part at most (Workers::run_together)
+  std::chrono::steady_clock::time_point published;  // when the task was
+  std::atomic<bool> came{false};  // some helper claimed a part within late_after of `published`
+  std::uint32_t late = 0;         // the last tasks long enough to tell, a bit each (the newest lowest): no helper came
   std::vector<std::thread> helpers;
   std::vector<std::exception_ptr> errors;  // by part: what it threw
 
@@ -108,6 +112,7 @@ struct Workers::Team {
       if (stop.load(std::memory_order_acquire)) return;
       for (int part; claim(generation_of(seen), part);) {
         const bool once = together;  // (read before the part is done: then start() may write the next task's)
+        if (std::chrono::steady_clock::now() - published < late_after) came.store(true, std::memory_order_relaxed);
         run_part(part);
         if (once) break;
       }
@@ -135,6 +140,9 @@ Workers& Workers::operator=(const Workers& other) {
 }
 
 Workers::Workers(Workers&& other) noexcept : threads_(other.threads_), team_(std::move(other.team_)) {
+#if PHYSICS_HAS_THREADS
+  assumed_ = other.assumed_;
+#endif
   other.threads_ = 1;
 }
 
@@ -142,6 +150,9 @@ Workers& Workers::operator=(Workers&& other) noexcept {
   if (this != &other) {
     Workers old(std::move(*this));  // its helpers stop when it goes
     threads_ = other.threads_, team_ = std::move(other.team_);
+#if PHYSICS_HAS_THREADS
+    assumed_ = other.assumed_;
+#endif
     other.threads_ = 1;
   }
   return *this;
@@ -162,6 +173,8 @@ void Workers::start(void (*task)(void*, int), void* context, [[maybe_unused]] bo
   Team& team = *team_;
   team.task = task, team.context = context, team.together = together;
   team.done.store(0, std::memory_order_relaxed);
+  team.came.store(false, std::memory_order_relaxed);
+  team.published = std::chrono::steady_clock::now();
   const std::uint64_t gen = ++team.generation;
   // Together: part 0 is this thread's, the helpers claim the others.
   team.state.store(gen << 32 | static_cast<std::uint64_t>(threads_) << 16 | (together ? 1 : 0), std::memory_order_release);
@@ -169,6 +182,10 @@ void Workers::start(void (*task)(void*, int), void* context, [[maybe_unused]] bo
   if (together) team.run_part(0);
   for (int part; !together && team.claim(gen, part);) team.run_part(part);
   for (int done = team.done.load(std::memory_order_acquire); done != threads_;) done = wait_change(team.done, done);
+  if (team.came.load(std::memory_order_relaxed))
+    team.late <<= 1;
+  else if (std::chrono::steady_clock::now() - team.published >= late_after)
+    team.late = team.late << 1 | 1;
   // (The first thread's exception that there is; the others' dropped, for the next task.)
   const auto thrown =
       std::find_if(team.errors.begin(), team.errors.end(), [](const std::exception_ptr& e) { return e != nullptr; });
@@ -180,6 +197,17 @@ void Workers::start(void (*task)(void*, int), void* context, [[maybe_unused]] bo
   task(context, 0);
 #endif
 }
+
+// At most 3 late of the last 16 tasks that could tell (a helper asleep
+// after a pause of the world wakes in tens of microseconds; a helper that
+// shares its core with a busy process waits for its time slice, some
+// milliseconds, at about every other task).
+#if PHYSICS_HAS_THREADS
+bool Workers::prompt() const {
+  if (assumed_ != Helpers::measured) return assumed_ == Helpers::prompt;
+  return team_ && std::popcount(team_->late & 0xFFFFu) <= 3;
+}
+#endif
 
 // Spins only (back_off()): the threads go through the steps side by side,
 // so the waits are short, and nobody would wake a sleeper.
