@@ -93,6 +93,7 @@ struct Result {
   double peak_mb = 0; // the run's process: peak resident memory
   double map_mb = 0;  // the heap its tile map took (Engine::map_mb)
   double others = NAN; // the machine's other load during the run, in cores (others_load); NaN: unknown
+  double own = NAN;    // the cores the run's process kept busy over its life (two threads: up to 2); NaN: unknown
   Quality q;
 };
 
@@ -230,7 +231,7 @@ double percentile(std::vector<double> v, double p) {
 // steal included (/proc/stat; NaN where it cannot be read), and this
 // process's and its waited-for children's (getrusage).
 struct CpuTimes {
-  double machine_s = NAN, self_s = 0;
+  double machine_s = NAN, self_s = 0, children_s = 0;  // (self_s counts the children's too)
 };
 
 CpuTimes cpu_times() {
@@ -245,6 +246,7 @@ CpuTimes cpu_times() {
     rusage use{};
     getrusage(who, &use);
     t.self_s += seconds(use.ru_utime) + seconds(use.ru_stime);
+    if (who == RUSAGE_CHILDREN) t.children_s = seconds(use.ru_utime) + seconds(use.ru_stime);
   }
   return t;
 }
@@ -329,7 +331,10 @@ Result run_isolated(const std::string& self, const std::string& engine, const Sc
                              &r.build_ms, &r.steps_run, &r.q.escaped, &r.q.max_overlap, &r.q.energy_drift,
                              &r.q.top_moved, &r.peak_mb, &r.map_mb) == 10;
   if (pclose(pipe.release()) != 0 || !got) throw std::runtime_error("the run failed: " + cmd.str());
-  r.others = others_load(before, cpu_times(), std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  const CpuTimes after = cpu_times();
+  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.others = others_load(before, after, wall_s);
+  if (!std::isnan(r.others)) r.own = (after.children_s - before.children_s) / wall_s;
   return r;
 }
 
@@ -535,7 +540,9 @@ class Report {
     if (one.empty() || two.empty()) return;
     const auto runs = [](const std::vector<Result>& rs) {
       std::string out;
-      for (const Result& r : rs) out += (out.empty() ? "" : ", ") + fmt("%.3f", r.median_ms) + " (" + load(r) + ")";
+      for (const Result& r : rs)
+        out += (out.empty() ? "" : ", ") + fmt("%.3f", r.median_ms) + " (" + load(r) +
+               (std::isnan(r.own) ? "" : " / " + fmt("%.2f", r.own)) + ")";
       return out;
     };
     std::vector<Result> free;
@@ -556,11 +563,13 @@ class Report {
   std::string threads() const {
     if (threads_.str().empty()) return "";
     return "## Two threads\n\nEach engine's runs on one thread and on two, in turns, with the machine's other load "
-           "during each (*other load*: the cores' time spent by other processes or taken by the hypervisor, over the "
-           "run's time; near 0 the second core was free, near 1 a neighbour held it). *gain*: the median one-thread "
+           "during each and the cores the run kept busy itself (*other load / own*: the cores' time spent by other "
+           "processes or taken by the hypervisor, then by the run's process, over the run's time, its scene's making "
+           "included; other load near 0: the second core was free, near 1: a neighbour held it; - for runs under a "
+           "quarter of a second). *gain*: the median one-thread "
            "run's time over the median two-thread run's; *gain, second core free*: the same over the two-thread runs "
            "whose other load stayed under " + fmt("%.2f", free_below) + " core.\n\n"
-           "| engine | scene | N | one thread: ms a step (other load) | two threads: ms a step (other load) | gain | "
+           "| engine | scene | N | one thread: ms a step (other load / own) | two threads: ms a step (other load / own) | gain | "
            "gain, second core free |\n|---|---|---:|---|---|---:|---:|\n" + threads_.str() + "\n";
   }
 
@@ -793,8 +802,8 @@ void write_markdown(const Options& o, const std::string& command, const std::str
         "wall, at the last step, in block sides; *KE drift* is (E_end − E_start)/E_start; *top block moved* is the "
         "largest displacement of a pyramid's top block over the run; *peak MB* is the run's process's peak "
         "resident memory (the scene's description included); *other load* is how many cores the rest of the machine "
-        "kept busy during the run's steps (/proc/stat less the run's own time; a two-thread run with 1 here had one "
-        "core; - for runs under half a second).\n\n"
+        "kept busy during the run (/proc/stat less the run's own time, over its process's life; a two-thread run "
+        "with 1 here had one core; - for runs under a quarter of a second).\n\n"
      << report.table() << "\n"
      << report.threads() << report.growth() << report.tiles() << broadphase;
 }
