@@ -173,7 +173,7 @@ struct ShockRow {
 // One thread runs it: a pile's pass is some hundred levels of some hundred
 // rows each, a level's rows waiting for the levels below, and split by
 // columns over two threads it took as long as on one (the level-by-level
-// waits cost what the second thread saved: docs/performance.md).
+// waits cost what the second thread saved: docs/performance-log.md).
 struct ShockPass {
   Vector down;
   std::vector<ShockRow> rows;
