@@ -1244,15 +1244,21 @@ void ContactSolver::iterate(const SolverSettings& s) {
     const std::size_t y_rows = rows.size() - x_rows_;
     Workers& w = workers_or_one(workers_);
     const bool together = has_threads && w.splits(rows.size(), min_parallel_items);
+#if PHYSICS_HAS_THREADS
+    bool pipeline = together && y_rows >= pipeline_rows;  // (pipelines_pay() asked once, when it would start)
+#endif
     std::array<std::uint8_t, 2> last{changed, changed};  // by axis: what its last sweep found
     const auto live = [&](std::size_t axis) { return (last[axis] & changed) != 0; };
     for (int it = 0; it < s.iterations && (live(0) || live(1)); ++it) {
 #if PHYSICS_HAS_THREADS
       // The x rows done (a pile's, after a sweep or two): the y rows' sweeps left on both threads.
-      if (together && !live(0) && y_rows >= pipeline_rows && pipelines_pay(w)) {
-        last[1] = pipelined_sweeps(w, rows.subspan(x_rows_), lambdas.subspan(x_rows_), paired.subspan(x_rows_),
-                                   s.iterations - it);
-        break;
+      if (pipeline && !live(0)) {
+        pipeline = pipelines_pay(w);
+        if (pipeline) {
+          last[1] = pipelined_sweeps(w, rows.subspan(x_rows_), lambdas.subspan(x_rows_), paired.subspan(x_rows_),
+                                     s.iterations - it);
+          break;
+        }
       }
 #endif
       if (together && live(0)) {

@@ -299,8 +299,8 @@ class ContactSolver {
   // the contacts and masses, the rows the velocities or the positions: the
   // same bits.
   bool aside() const { return has_threads && workers_ && workers_->threads() > 1; }
-  // here() on this thread alone while helper() runs on a helper (aside()):
-  // neither uses the team.
+  // here() and helper() side by side on the team (aside(); a helper that
+  // does not come leaves helper() to this thread): neither uses the team.
   template <class Here, class Helper>
   void beside(Here&& here, Helper&& helper);
   void prepare_friction(const Components& k, bool any, bool kept_all);

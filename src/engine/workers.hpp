@@ -1,14 +1,15 @@
-// The engine's threads (WorldDef::threads, --threads N): a fixed team that
-// runs one task on every thread at once, for the loops of a step whose items
-// are independent (each writes its own results), so a step's results are the
+// The engine's threads (WorldDef::threads, --threads N): a fixed team whose
+// threads share each task's parts, for the loops of a step whose items are
+// independent (each writes its own results), so a step's results are the
 // same bits for any number of threads.
 //
 // A team of our own rather than a task scheduler's pool (oneTBB's): the
 // solver's stages come in bursts of a few microseconds each, many per
 // substep, and a task scheduler promises no concurrency (its tasks may run
 // one after the other on one thread), which a loop whose threads wait for
-// each other cannot live with. Here every thread of the team takes part in
-// every task; between tasks the helpers spin for a short while (the next
+// each other cannot live with. Here every thread of the team may take part in
+// every task (and run_together() has each part on a thread of its own at
+// once); between tasks the helpers spin for a short while (the next
 // stage is usually microseconds away), then sleep on an atomic wait. As
 // Box2D v3 leaves its task system to the game, a game that wants a pool of
 // its own keeps threads at 1.
@@ -84,9 +85,10 @@ class Workers {
     task(0);
   }
 
-  // Runs a() on the calling thread and b() on a helper at once, then
-  // returns (one after the other on a team of one). Two pieces of a stage
-  // that do not touch each other's data; neither may use the team.
+  // Runs a() and b() as two parts of one task (run(): side by side when a
+  // helper comes, one after the other on the calling thread when none does
+  // or on a team of one), then returns. Two pieces of a stage that do not
+  // touch each other's data; neither may use the team.
   template <class A, class B>
   void side_by_side(A&& a, B&& b) {
     if constexpr (has_threads) {
@@ -96,7 +98,7 @@ class Workers {
   }
 
   // Splits [0, n) into threads() contiguous ranges, in order, and runs
-  // body(t, begin, end) on each at once; one range [0, n) on the calling
+  // body(t, begin, end) on each as a part of one task (run()); one range [0, n) on the calling
   // thread when n < min_items (a few microseconds of work is not worth
   // waking the team for).
   template <class Body>
