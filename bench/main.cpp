@@ -228,10 +228,10 @@ double percentile(std::vector<double> v, double p) {
 }
 
 // The CPU time the machine has spent, every process and the hypervisor's
-// steal included (/proc/stat; NaN where it cannot be read), and this
-// process's and its waited-for children's (getrusage).
+// steal included (/proc/stat; NaN where it cannot be read), this process's
+// and its waited-for children's (getrusage).
 struct CpuTimes {
-  double machine_s = NAN, self_s = 0, children_s = 0;  // (self_s counts the children's too)
+  double machine_s = NAN, self_s = 0, children_s = 0;
 };
 
 CpuTimes cpu_times() {
@@ -242,12 +242,12 @@ CpuTimes cpu_times() {
   if (in >> cpu >> user >> nice >> system >> idle >> iowait >> irq >> softirq >> steal && cpu == "cpu")
     t.machine_s = static_cast<double>(user + nice + system + irq + softirq + steal) / static_cast<double>(sysconf(_SC_CLK_TCK));
   const auto seconds = [](timeval v) { return static_cast<double>(v.tv_sec) + static_cast<double>(v.tv_usec) * 1e-6; };
-  for (const int who : {RUSAGE_SELF, RUSAGE_CHILDREN}) {
+  const auto used = [&](int who) {
     rusage use{};
     getrusage(who, &use);
-    t.self_s += seconds(use.ru_utime) + seconds(use.ru_stime);
-    if (who == RUSAGE_CHILDREN) t.children_s = seconds(use.ru_utime) + seconds(use.ru_stime);
-  }
+    return seconds(use.ru_utime) + seconds(use.ru_stime);
+  };
+  t.self_s = used(RUSAGE_SELF), t.children_s = used(RUSAGE_CHILDREN);
   return t;
 }
 
@@ -257,7 +257,8 @@ CpuTimes cpu_times() {
 // window was too short for the kernel's ticks (10 ms) to tell.
 double others_load(const CpuTimes& a, const CpuTimes& b, double wall_s) {
   if (!(wall_s >= 0.25) || std::isnan(a.machine_s) || std::isnan(b.machine_s)) return NAN;
-  return std::max(0.0, ((b.machine_s - a.machine_s) - (b.self_s - a.self_s)) / wall_s);
+  const double ours = (b.self_s - a.self_s) + (b.children_s - a.children_s);
+  return std::max(0.0, ((b.machine_s - a.machine_s) - ours) / wall_s);
 }
 
 Result run(const std::string& engine, const Scene& s, const Options& o) {
@@ -548,16 +549,15 @@ class Report {
     std::vector<Result> free;
     for (const Result& r : two)
       if (r.others < free_below) free.push_back(r);
-    const double base = median_run(one).median_ms;
+    const double base = median_run(one).median_ms, gain = base / median_run(two).median_ms;
     const std::string gain_free = free.empty() ? "- (none)"
                                                : fmt("%.2f×", base / median_run(free).median_ms) + " (" +
                                                      std::to_string(free.size()) + " of " + std::to_string(two.size()) + ")";
     threads_ << "| " << two.front().engine << " | " << one.front().scene << " | " << one.front().n << " | " << runs(one)
-             << " | " << runs(two) << " | " << fmt("%.2f×", base / median_run(two).median_ms) << " | " << gain_free
+             << " | " << runs(two) << " | " << fmt("%.2f×", gain) << " | " << gain_free
              << " |\n";
     std::printf("%s %s %zu: two threads %.2fx one (median runs), %s with the second core free\n",
-                two.front().engine.c_str(), one.front().scene.c_str(), one.front().n,
-                base / median_run(two).median_ms, gain_free.c_str());
+                two.front().engine.c_str(), one.front().scene.c_str(), one.front().n, gain, gain_free.c_str());
   }
 
   std::string threads() const {
