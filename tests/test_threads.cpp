@@ -1,6 +1,7 @@
 // The engine's threads (engine/workers.hpp, WorldDef::threads, --threads):
 // the team's ranges, and the same bits for any number of threads on worlds
 // big enough for every parallel loop to split (min_parallel_items).
+#include <algorithm>
 #include <atomic>
 #include <bit>
 #include <chrono>
@@ -326,10 +327,13 @@ BOOST_AUTO_TEST_CASE(one_ended_items_go_just_before_their_bodys_next_item) {
 // among their bodies' (SweepPipeline::defer_one_ended). (A new order is
 // made beside one thread's sweeps, ContactSolver::beside: the steps whose contacts
 // changed are not pipelined.)
+// `waves` (when not 0): the fewest y rows the relaxation sweeps in waves on
+// one thread (ContactSolver::sweep_in_waves_from).
 std::vector<double> run_top_down_pile(int threads, SolverStats* stats,
-                                      Workers::Helpers helpers = Workers::Helpers::prompt) {
+                                      Workers::Helpers helpers = Workers::Helpers::prompt, std::size_t waves = 0) {
   const WorldId w = world_on_floor(threads, 800);
   api::world(w).world->workers.assume(helpers);  // (whatever the machine's load)
+  if (waves != 0) api::world(w).world->contact_solver.sweep_in_waves_from(waves);
   BodyDef wall = default_body_def();
   wall.mass = fixed_mass;
   for (const double x : {-40.0, 599.0}) {  // (a px short of the row's 600)
@@ -370,6 +374,72 @@ BOOST_AUTO_TEST_CASE(with_late_helpers_the_pipelines_run_on_one_thread_with_the_
   BOOST_TEST(stats.projections_pipelined == 0);
   BOOST_TEST(stats.pipelined == 0);
   BOOST_TEST(stats.pipelines_left > 10);
+}
+
+// The y rows' sweeps in waves on one thread (a pile of 100 000 takes them
+// so; this one's 4 800 when told to), and, with late helpers, on one of
+// two: the same bits as whole sweeps one after the other.
+BOOST_AUTO_TEST_CASE(the_y_rows_sweeps_in_waves_on_one_thread_give_the_same_bits) {
+  SolverStats stats;
+  const auto one = bits(run_top_down_pile(1, &stats));
+  BOOST_TEST(stats.in_waves == 0);
+  BOOST_TEST(one == bits(run_top_down_pile(1, &stats, Workers::Helpers::prompt, 1024)));
+  BOOST_TEST(stats.in_waves > 5);
+  BOOST_TEST(one == bits(run_top_down_pile(2, &stats, Workers::Helpers::late, 1024)));
+  BOOST_TEST(stats.in_waves > 5);
+  BOOST_TEST(stats.pipelined == 0);
+}
+
+// SweepPipeline::run_in_waves against whole sweeps one after the other, on
+// items whose results depend on their order (each changes both its bodies
+// from both): a chain of neighbours with some items reaching far back (a
+// block that waits for a whole sweep before it). Then a stop: the fourth
+// sweep finds none of the bits going on, and the sweeps after it change
+// nothing (as the solver's do).
+BOOST_AUTO_TEST_CASE(sweeps_in_waves_give_the_bits_of_whole_sweeps) {
+  constexpr std::size_t bodies = 400;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> items;
+  for (std::uint32_t i = 0; i + 3 < bodies; ++i) {
+    items.push_back({i, i + 1});
+    items.push_back({i + 3, i});
+    if (i % 97 == 50) items.push_back({i, static_cast<std::uint32_t>(bodies - 1 - i / 2)});
+  }
+  const auto apply = [&](std::vector<double>& v, std::size_t i) {
+    const auto [c, b] = items[i];
+    v[c] = v[c] * 0.5 + v[b] + 1.0;
+    v[b] = v[b] * 0.75 - v[c] * 0.125;
+  };
+  const auto start = [&] {
+    std::vector<double> v(bodies);
+    for (std::size_t i = 0; i < bodies; ++i) v[i] = 0.001 * static_cast<double>(i * i % 17);
+    return v;
+  };
+  SweepPipeline plan;
+  plan.plan(items.size(), bodies, 16, [&](std::size_t i, auto&& body) { body(items[i].first), body(items[i].second); },
+            [](std::size_t i) { return i % 5 == 0; });
+  for (const int stop_at : {-1, 3}) {  // (-1: no stop; every sweep finds bit 1)
+    const int sweeps = 8, counted = stop_at < 0 ? sweeps : stop_at;
+    std::vector<double> want = start();
+    for (int s = 0; s < counted; ++s)
+      for (std::size_t i = 0; i < items.size(); ++i) apply(want, i);
+    std::vector<double> got = start();
+    std::vector<int> times(items.size(), 0);  // by item: the sweeps that reached it (its sweep now)
+    bool too_many = false;
+    const std::uint8_t found = plan.run_in_waves(sweeps, 1, [&](std::size_t from, std::size_t count) {
+      std::uint8_t bits = 0;
+      for (std::size_t i = from; i < from + count; ++i) {
+        const int sweep = times[i]++;
+        too_many = too_many || sweep >= sweeps;
+        if (stop_at < 0 || sweep < stop_at) apply(got, i);
+        bits |= stop_at >= 0 && sweep >= stop_at ? 2 : 1;
+      }
+      return bits;
+    });
+    BOOST_TEST(!too_many);
+    BOOST_TEST(found == (stop_at < 0 ? 1 : 2));
+    BOOST_TEST(bits(want) == bits(got), boost::test_tools::per_element());
+    BOOST_TEST(*std::min_element(times.begin(), times.end()) >= counted);
+  }
 }
 
 // A rain's first landings: a few hundred contacts at a time, too few for

@@ -118,6 +118,7 @@ struct SolverStats {
   std::int64_t pipelined = 0;      // relaxations whose y rows' last sweeps ran on two threads (pipelined_sweeps)
   std::int64_t orders_beside = 0;  // bottom-up orders made on a helper while the sweeps ran (beside())
   std::int64_t projections_pipelined = 0;  // projections whose sweeps ran on two threads (pipelined_projection)
+  std::int64_t in_waves = 0;  // relaxations whose y rows' last sweeps ran in waves on one thread (pipelined_sweeps)
   std::int64_t pipelines_left = 0;  // relaxations and projections that would have been pipelined, on one thread: the helpers were late (Workers::prompt)
 };
 
@@ -218,6 +219,10 @@ class ContactSolver {
     std::size_t below, above, across;
   };
   XRowCut x_row_cut() const { return {x_below_, x_above_, x_rows_ - x_below_ - x_above_}; }
+#if PHYSICS_HAS_THREADS
+  // The fewest y rows swept in waves on one thread (tests: a small pile's; pipelined_sweeps()).
+  void sweep_in_waves_from(std::size_t y_rows) { wave_rows_ = y_rows; }
+#endif
 
   // Whether the friction sweep solves four rows at once with AVX2, where the
   // processor has it (else two with SSE2): the same bits either way. This
@@ -435,15 +440,20 @@ class ContactSolver {
   // target (iterate<false>), so its rows still are there (relax()).
   std::array<bool, 2> axis_at_targets_{};
 #if PHYSICS_HAS_THREADS  // (not in the browser's build: no threads, and each member costs bytes)
-  // The y rows' sweeps on two threads, one sweep behind the other
-  // (pipelined_sweeps(), engine/sweep_pipeline.hpp). Planned again after schedule().
+  // The y rows' sweeps on two threads, one sweep behind the other, or in
+  // waves on one (pipelined_sweeps(), engine/sweep_pipeline.hpp). Planned
+  // again after schedule().
   SweepPipeline pipeline_;
   static constexpr std::size_t pipeline_block = 1024;                // items (y rows, projection contacts)
   static constexpr std::size_t pipeline_rows = min_parallel_items;  // the fewest y rows pipelined
   bool y_rows_unplanned() const;
   void plan_y_rows();
-  std::uint8_t pipelined_sweeps(Workers& w, std::span<const SolverRow> rows, std::span<double> lambdas,
+  std::uint8_t pipelined_sweeps(Workers* w, std::span<const SolverRow> rows, std::span<double> lambdas,
                                 std::span<const std::uint8_t> paired, int sweeps);
+  // The fewest y rows swept in waves on one thread (pipelined_sweeps):
+  // about 1.6 MB of rows and bodies' values, beyond the level-2 cache.
+  std::size_t wave_rows_ = 32768;
+  bool order_kept_ = false;  // the last schedule() kept the order it found
 #endif
   bool skips_pass(const Components& k, Vector down, bool& tame);
   std::span<const std::uint32_t> row_order() const;

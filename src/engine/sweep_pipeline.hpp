@@ -65,6 +65,17 @@ class SweepPipeline {
   // of the last sweep that counts. sweep_block must not throw.
   template <class SweepBlock>
   std::uint8_t run(Workers& w, int sweeps, std::uint8_t going_on, SweepBlock&& sweep_block);
+  // The same sweeps (at least one) on this thread alone, in waves: sweep s + 1 takes each
+  // block as soon as sweep s is past its reach, and the first sweep not
+  // done leads by at most `lead` blocks. The blocks between the last sweep
+  // and the first (a few reaches a sweep) stay in the cache from sweep to
+  // sweep, where whole sweeps one after the other read every block from
+  // the level-3 cache or memory again once the items outgrow the level 2.
+  // The same bits (each body meets its items sweep after sweep in the
+  // given order), the same stop and the same result as run().
+  template <class SweepBlock>
+  std::uint8_t run_in_waves(int sweeps, std::uint8_t going_on, SweepBlock&& sweep_block);
+  static constexpr std::uint32_t lead = 4;
 
  private:
   std::vector<std::uint32_t> start_;       // block b: items [start_[b], start_[b + 1])
@@ -164,6 +175,25 @@ std::uint8_t SweepPipeline::run(Workers& w, int sweeps, std::uint8_t going_on, S
     progress.reach(t, done);  // (what the other waits for comes no more)
   });
   return found[static_cast<std::size_t>(std::min(stop.load(), sweeps - 1))];
+}
+
+template <class SweepBlock>
+std::uint8_t SweepPipeline::run_in_waves(int sweeps, std::uint8_t going_on, SweepBlock&& sweep_block) {
+  const auto blocks = static_cast<std::uint32_t>(reach_.size());
+  const auto n = static_cast<std::size_t>(sweeps);
+  std::vector<std::uint32_t> done(n, 0);  // by sweep: its blocks [0, done) are swept
+  std::vector<std::uint8_t> found(n, 0);  // by sweep: its blocks' bits so far, OR-ed
+  for (std::size_t first = 0, front = lead;; front += lead) {  // first: the first sweep not done
+    for (std::size_t s = first; s < n; ++s) {
+      const std::uint32_t limit = s == first ? static_cast<std::uint32_t>(std::min<std::size_t>(front, blocks)) : blocks;
+      std::uint32_t& b = done[s];
+      for (; b < limit && (s == first || done[s - 1] > reach_[b]); ++b)
+        found[s] |= sweep_block(std::size_t{start_[b]}, std::size_t{start_[b + 1] - start_[b]});
+      if (b == 0) break;  // (the sweeps after it have not started either)
+    }
+    for (; done[first] == blocks; ++first)
+      if (!(found[first] & going_on) || first + 1 == n) return found[first];
+  }
 }
 #endif
 
