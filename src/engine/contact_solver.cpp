@@ -908,8 +908,11 @@ void ContactSolver::schedule(const Components& k, Vector g, bool kept_all) {
   // (kept_all: the contacts are last substep's, topology_ theirs.)
   if (!kept_all) topology_.swap(topology_next_);
   same_topology_ = kept_all || topology_ == topology_next_;
-  order_kept_ = scheduled_ && g == topology_g_ && same_topology_;
-  if (order_kept_) return;
+  const bool kept = scheduled_ && g == topology_g_ && same_topology_;
+#if PHYSICS_HAS_THREADS
+  order_kept_ = kept;
+#endif
+  if (kept) return;
   have_order_ = false;
 #if PHYSICS_HAS_THREADS
   pipeline_.forget();
