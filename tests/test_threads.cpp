@@ -437,6 +437,7 @@ BOOST_AUTO_TEST_CASE(sweeps_in_waves_give_the_bits_of_whole_sweeps) {
     });
     BOOST_TEST(!too_many);
     BOOST_TEST(found == (stop_at < 0 ? 1 : 2));
+    BOOST_TEST(plan.sweeps_counted() == (stop_at < 0 ? sweeps : stop_at + 1));  // (the stop's sweep counts)
     BOOST_TEST(bits(want) == bits(got), boost::test_tools::per_element());
     BOOST_TEST(*std::min_element(times.begin(), times.end()) >= counted);
   }

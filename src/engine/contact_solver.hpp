@@ -454,6 +454,7 @@ class ContactSolver {
   // about 1.6 MB of rows and bodies' values, beyond the level-2 cache.
   std::size_t wave_rows_ = 32768;
   bool order_kept_ = false;  // the last schedule() kept the order it found
+  int y_sweeps_ = 0;         // the y rows' sweeps that counted in the last frictionless relaxation
 #endif
   bool skips_pass(const Components& k, Vector down, bool& tame);
   std::span<const std::uint32_t> row_order() const;

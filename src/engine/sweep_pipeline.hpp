@@ -76,6 +76,10 @@ class SweepPipeline {
   template <class SweepBlock>
   std::uint8_t run_in_waves(int sweeps, std::uint8_t going_on, SweepBlock&& sweep_block);
   static constexpr std::uint32_t lead = 4;
+  // How many sweeps of the last run() or run_in_waves() counted: up to the
+  // first that found none of going_on, or all. (Blocks of later sweeps may
+  // have run: in waves, most of every later sweep's.)
+  int sweeps_counted() const { return counted_; }
 
  private:
   std::vector<std::uint32_t> start_;       // block b: items [start_[b], start_[b + 1])
@@ -86,6 +90,7 @@ class SweepPipeline {
   std::vector<std::uint32_t> kept_;        // defer_one_ended()'s: the items as they came
   std::vector<Ends> ends_, kept_ends_;     // defer_one_ended()'s: by item, then as they came
   bool planned_ = false;
+  int counted_ = 0;
 };
 
 template <class Bodies, class Together>
@@ -174,7 +179,8 @@ std::uint8_t SweepPipeline::run(Workers& w, int sweeps, std::uint8_t going_on, S
     }
     progress.reach(t, done);  // (what the other waits for comes no more)
   });
-  return found[static_cast<std::size_t>(std::min(stop.load(), sweeps - 1))];
+  counted_ = std::min(stop.load(), sweeps - 1) + 1;
+  return found[static_cast<std::size_t>(counted_ - 1)];
 }
 
 template <class SweepBlock>
@@ -192,7 +198,7 @@ std::uint8_t SweepPipeline::run_in_waves(int sweeps, std::uint8_t going_on, Swee
       if (b == 0) break;  // (the sweeps after it have not started either)
     }
     for (; done[first] == blocks; ++first)
-      if (!(found[first] & going_on) || first + 1 == n) return found[first];
+      if (!(found[first] & going_on) || first + 1 == n) return counted_ = static_cast<int>(first) + 1, found[first];
   }
 }
 #endif
