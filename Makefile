@@ -379,7 +379,7 @@ CHIPMUNK_SRC := $(filter-out %/cpHastySpace.c,$(wildcard $(PEER_DIR)/chipmunk/sr
 CHIPMUNK_OBJ := $(CHIPMUNK_SRC:$(PEER_DIR)/chipmunk/src/%.c=$(PEER_DIR)/chipmunk-obj/%.o)
 # The harness (main, scenes; the broadphase comparison and our adapter, which
 # main links to) and the peers' adapters.
-PEERS_OBJ    := $(BUILD)/obj/bench/main.o $(BUILD)/obj/bench/scenes.o $(BUILD)/obj/bench/broadphase_compare.o \
+PEERS_OBJ    := $(BUILD)/obj/bench/main.o $(BUILD)/obj/bench/scenes.o $(BUILD)/obj/bench/broadphase_compare.o $(BUILD)/obj/bench/round_trip.o \
                 $(BUILD)/obj/bench/engine_ours.o \
                 $(BUILD)/obj/bench/peers/engines.o $(BUILD)/obj/bench/peers/engine_box2d3.o \
                 $(BUILD)/obj/bench/peers/engine_chipmunk_release.o

@@ -34,6 +34,7 @@
 
 #include "bench.hpp"
 #include "broadphase_compare.hpp"
+#include "round_trip.hpp"
 
 namespace {
 
@@ -76,6 +77,7 @@ struct Options {
   bool isolate = true;  // each run in a fresh process (see run_isolated)
   std::string child;    // internal: "ENGINE,SCENE,N": run only that and print its RESULT line
   bool list = false;    // internal: print the engines linked into this binary
+  bool round_trip = false;  // --round-trip: only print the cores' round trip (round_trip.hpp)
 };
 
 struct Quality {
@@ -94,6 +96,7 @@ struct Result {
   double map_mb = 0;  // the heap its tile map took (Engine::map_mb)
   double others = NAN; // the machine's other load during the run, in cores (others_load); NaN: unknown
   double own = NAN;    // the cores the run's process kept busy over its life (two threads: up to 2); NaN: unknown
+  double round_trip_ns = NAN;  // two-thread runs: the cores' round trip just before (round_trip.hpp); NaN: not measured
   Quality q;
 };
 
@@ -317,6 +320,12 @@ Result run_isolated(const std::string& self, const std::string& engine, const Sc
   std::ostringstream cmd;
   cmd << "'" << (local ? self : o.peers) << "' --child " << engine << "," << s.name << "," << s.dynamic_count() << " --steps " << o.steps
       << " --warmup " << o.warmup << " --budget " << o.budget << " --phase-budget " << o.phase_budget;
+  // A two-thread run's cores: how far apart they are now (round_trip.hpp).
+  double round_trip = NAN;
+  if (engine.ends_with("-2t")) try {
+      round_trip = bench::core_round_trip_ns();
+    } catch (const std::exception&) {
+    }
   // The machine's other load over the child's whole life (its scene's
   // making too: one thread then, but the rest of the machine is what counts).
   const auto start = std::chrono::steady_clock::now();
@@ -324,7 +333,7 @@ Result run_isolated(const std::string& self, const std::string& engine, const Sc
   std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(cmd.str().c_str(), "r"), pclose);
   if (!pipe) throw std::runtime_error("cannot start " + cmd.str());
   Result r;
-  r.engine = engine, r.scene = s.name, r.n = s.dynamic_count();
+  r.engine = engine, r.scene = s.name, r.n = s.dynamic_count(), r.round_trip_ns = round_trip;
   bool got = false;
   char line[512];
   while (std::fgets(line, sizeof line, pipe.get()))
@@ -376,6 +385,7 @@ const char* usage =
     "             [--peers build/bench-peers (adds box2d3,chipmunk-release)] [--peer-sources TEXT]\n"
     "             [--steps 600] [--warmup 60] [--out bench/RESULTS.md]\n"
     "             [--compare 0|1] [--budget 30 (s per run)] [--phase-budget 150 (s)] [--isolate 0|1]\n"
+    "             [--round-trip (only print how long a cache line takes from core 0 to core 1 and back)]\n"
     "             [--repeats 3 (runs of ours and box2d3, alternated, on scenes of at most --repeat-below\n"
     "             25000 bodies but the tile maps; each row is the median run)]\n"
     "             (engines also: ours-course, our course solver on every scene; ours-2t, ours on two\n"
@@ -425,6 +435,10 @@ Options parse(int argc, char** argv) {
     }
     if (a == "--list-engines") {
       o.list = true;
+      continue;
+    }
+    if (a == "--round-trip") {
+      o.round_trip = true;
       continue;
     }
     if (i + 1 >= argc) throw std::invalid_argument("missing value after " + a);
@@ -543,18 +557,23 @@ class Report {
       std::string out;
       for (const Result& r : rs)
         out += (out.empty() ? "" : ", ") + fmt("%.3f", r.median_ms) + " (" + load(r) +
-               (std::isnan(r.own) ? "" : " / " + fmt("%.2f", r.own)) + ")";
+               (std::isnan(r.own) ? "" : " / " + fmt("%.2f", r.own)) +
+               (std::isnan(r.round_trip_ns) ? "" : " / " + fmt("%.0f", r.round_trip_ns) + " ns") + ")";
       return out;
     };
-    std::vector<Result> free;
-    for (const Result& r : two)
-      if (r.others < free_below) free.push_back(r);
     const double base = median_run(one).median_ms, gain = base / median_run(two).median_ms;
-    const std::string gain_free = free.empty() ? "- (none)"
-                                               : fmt("%.2f×", base / median_run(free).median_ms) + " (" +
-                                                     std::to_string(free.size()) + " of " + std::to_string(two.size()) + ")";
+    const auto gain_over = [&](auto&& kept) {
+      std::vector<Result> runs_kept;
+      for (const Result& r : two)
+        if (kept(r)) runs_kept.push_back(r);
+      return runs_kept.empty() ? std::string("- (none)")
+                               : fmt("%.2f×", base / median_run(runs_kept).median_ms) + " (" +
+                                     std::to_string(runs_kept.size()) + " of " + std::to_string(two.size()) + ")";
+    };
+    const std::string gain_free = gain_over([](const Result& r) { return r.others < free_below; });
+    const std::string gain_near = gain_over([](const Result& r) { return r.others < free_below && r.round_trip_ns < near_below; });
     threads_ << "| " << two.front().engine << " | " << one.front().scene << " | " << one.front().n << " | " << runs(one)
-             << " | " << runs(two) << " | " << fmt("%.2f×", gain) << " | " << gain_free
+             << " | " << runs(two) << " | " << fmt("%.2f×", gain) << " | " << gain_free << " | " << gain_near
              << " |\n";
     std::printf("%s %s %zu: two threads %.2fx one (median runs), %s with the second core free\n",
                 two.front().engine.c_str(), one.front().scene.c_str(), one.front().n, gain, gain_free.c_str());
@@ -568,9 +587,13 @@ class Report {
            "included; other load near 0: the second core was free, near 1: a neighbour held it; - for runs under a "
            "quarter of a second). *gain*: the median one-thread "
            "run's time over the median two-thread run's; *gain, second core free*: the same over the two-thread runs "
-           "whose other load stayed under " + fmt("%.2f", free_below) + " core.\n\n"
-           "| engine | scene | N | one thread: ms a step (other load / own) | two threads: ms a step (other load / own) | gain | "
-           "gain, second core free |\n|---|---|---:|---|---|---:|---:|\n" + threads_.str() + "\n";
+           "whose other load stayed under " + fmt("%.2f", free_below) + " core; *and near*: of those, the runs whose "
+           "cores handed a cache line back and forth in under " + fmt("%.0f", near_below) + " ns just before (*round "
+           "trip*, `build/bench --round-trip`: 90-160 ns on this machine in some hours, 360-410 in others, when "
+           "two-thread runs are slow: docs/performance.md, \"Threads\").\n\n"
+           "| engine | scene | N | one thread: ms a step (other load / own) | two threads: ms a step (other load / own / "
+           "round trip) | gain | gain, second core free | and near |\n|---|---|---:|---|---|---:|---:|---:|\n" +
+           threads_.str() + "\n";
   }
 
   // The tiles scene: per engine and map, the map's heap and the step's cost
@@ -651,6 +674,7 @@ class Report {
   }
 
   static constexpr double free_below = 0.25;  // a two-thread run had the second core: others' load under this
+  static constexpr double near_below = 200;   // ... and its cores were near: their round trip under this, in ns
   static std::string load(const Result& r) { return std::isnan(r.others) ? "-" : fmt("%.2f", r.others); }
   const Options& o_;
   std::ostringstream table_, threads_;
@@ -814,6 +838,10 @@ int main(int argc, char** argv) try {
   const Options o = parse(argc, argv);
   if (o.list) {
     for (const std::string& e : bench::engine_names()) std::cout << e << "\n";
+    return 0;
+  }
+  if (o.round_trip) {
+    std::cout << "cores 0 and 1: a cache line's round trip " << fmt("%.0f", bench::core_round_trip_ns()) << " ns\n";
     return 0;
   }
   if (!o.child.empty()) return child_run(o);
