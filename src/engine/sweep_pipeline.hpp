@@ -65,14 +65,14 @@ class SweepPipeline {
   // of the last sweep that counts. sweep_block must not throw.
   template <class SweepBlock>
   std::uint8_t run(Workers& w, int sweeps, std::uint8_t going_on, SweepBlock&& sweep_block);
-  // The same sweeps (at least one) on this thread alone, in waves: sweep s + 1 takes each
-  // block as soon as sweep s is past its reach, and the first sweep not
-  // done leads by at most `lead` blocks. The blocks between the last sweep
-  // and the first (a few reaches a sweep) stay in the cache from sweep to
-  // sweep, where whole sweeps one after the other read every block from
-  // the level-3 cache or memory again once the items outgrow the level 2.
-  // The same bits (each body meets its items sweep after sweep in the
-  // given order), the same stop and the same result as run().
+  // The same sweeps (at least one) on this thread alone, in waves: sweep
+  // s + 1 takes each block as soon as sweep s is past its reach, and the
+  // first sweep not done leads by at most `lead` blocks. The blocks between
+  // the last sweep and the first (a few reaches a sweep) stay in the cache
+  // from sweep to sweep, where whole sweeps one after the other read every
+  // block from the level-3 cache or memory again once the items outgrow the
+  // level 2. The same bits (each body meets its items sweep after sweep in
+  // the given order), the same stop and the same result as run().
   template <class SweepBlock>
   std::uint8_t run_in_waves(int sweeps, std::uint8_t going_on, SweepBlock&& sweep_block);
   static constexpr std::uint32_t lead = 4;
