@@ -392,7 +392,7 @@ BOOST_AUTO_TEST_CASE(the_y_rows_sweeps_in_waves_on_one_thread_give_the_same_bits
 
 // SweepPipeline::run_in_waves against whole sweeps one after the other, on
 // items whose results depend on their order (each changes both its bodies
-// from both): a chain of neighbours with some items reaching far back (a
+// from both): a chain of neighbours with some items reaching far ahead (a
 // block that waits for a whole sweep before it). Then a stop: the fourth
 // sweep finds none of the bits going on, and the sweeps after it change
 // nothing (as the solver's do).
