@@ -346,6 +346,7 @@ void UniformGrid::fill_cells(std::span<const FloatBox> boxes, std::size_t small,
     if (c < moved_head_.size()) moved_head_[c] = -1;
   moved_cells_.clear();
   moved_.clear();
+  updated_ = 0;
   moved_head_.resize(cells, -1);
 }
 
@@ -508,6 +509,26 @@ void UniformGrid::move(std::uint32_t i, const FloatBox& box) {
   if (moved_head_[c] < 0) moved_cells_.push_back(static_cast<std::uint32_t>(c));
   moved_.push_back(Moved{Entry{box, i, static_cast<std::uint32_t>(c)}, moved_head_[c]});
   moved_head_[c] = static_cast<std::int32_t>(moved_.size() - 1);
+}
+
+// The moved bodies' new pairs, found by queries (which see the new boxes
+// and the old), tested on the boxes as they are now; those pairs() lacks
+// are merged in from the back, each list's largest first: the memory
+// behind the first new pair is moved once, and no scratch list is made.
+void UniformGrid::update(std::span<const std::uint32_t> moved, std::span<const FloatBox> boxes) {
+  for (const std::uint32_t i : moved) move(i, boxes[i]);
+  updated_ += moved.size();
+  found_.clear();  // (scratch: build() clears it before use)
+  for (const std::uint32_t i : moved)
+    query(boxes[i], [&](std::uint32_t j) {
+      if (j != i && !(fixed_[i] && fixed_[j]) && overlap(boxes[i], boxes[j])) found_.push_back(pair_key(i, j));
+    });
+  std::sort(found_.begin(), found_.end());
+  found_.erase(std::unique(found_.begin(), found_.end()), found_.end());
+  std::erase_if(found_, [&](PairKey key) { return std::binary_search(pairs_.begin(), pairs_.end(), key); });
+  std::size_t a = pairs_.size(), b = found_.size();
+  pairs_.resize(a + b);
+  for (std::size_t to = a + b; b > 0;) pairs_[--to] = a > 0 && pairs_[a - 1] > found_[b - 1] ? pairs_[--a] : found_[--b];
 }
 
 }  // namespace physics

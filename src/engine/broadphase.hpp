@@ -10,11 +10,12 @@
 // times slower than the grid, which tests each box against the few boxes of
 // its 3×3 neighbouring cells whatever n is. The grid's cost grows linearly.
 //
-// The grid is rebuilt from scratch every pass (counting sort of the boxes by
-// cell): no state survives between passes, so bodies that were moved, resized,
-// given another mass, registered or unregistered by anyone are always seen as
-// they are. Rebuilding costs O(n) and is cheaper than keeping a persistent
-// structure in sync.
+// The grid is built from scratch (counting sort of the boxes by cell), so
+// bodies that were moved, resized, given another mass, registered or
+// unregistered by anyone are always seen as they are: O(n), cheaper than
+// keeping a tree in sync. What keeps one is its owner's business: the
+// broad phase (engine/pairs.hpp) keeps its grid of fat boxes while the
+// bodies stay in them, and gives the few that leave new boxes (update()).
 #pragma once
 
 #include <bit>
@@ -143,6 +144,16 @@ class UniformGrid {
   // (queries may report it: callers must accept extra candidates).
   void move(std::uint32_t i, const FloatBox& box);
 
+  // After build(), the bodies of `moved` (each once) have new boxes, as
+  // `boxes` says (every body's, the others' as build() had them): each is
+  // moved (move()), and pairs() gains its pairs with every box it overlaps
+  // now. Its pairs of the old box stay: pairs() is then a superset of the
+  // overlapping pairs, still sorted, each pair once (its callers test the
+  // exact boxes). For a few bodies, far less than build(); queries slow as
+  // the moves add up (updated(): how many since build()).
+  void update(std::span<const std::uint32_t> moved, std::span<const FloatBox> boxes);
+  std::size_t updated() const { return updated_; }
+
   // Calls f(j) for every body j whose current box may overlap `box`; every j
   // whose box does overlap is reported at least once. j may be reported more
   // than once, and the body whose box is queried may be reported itself.
@@ -248,6 +259,7 @@ class UniformGrid {
   std::vector<std::int32_t> moved_head_;
   std::vector<std::uint32_t> moved_cells_;
   std::vector<Moved> moved_;
+  std::size_t updated_ = 0;  // bodies given new boxes by update() since build()
 
   // Pairs, unsorted then sorted (counting sort on the first index).
   std::vector<PairKey> found_;

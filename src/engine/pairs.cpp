@@ -283,8 +283,8 @@ void BroadPhase::find(const Components& k, std::span<const EntityId> entities, d
       return std::uint8_t{1 | 2 | 4};
     }
     const auto index = [&](std::size_t j) { return static_cast<std::uint32_t>(begin + j); };
-    const std::size_t few = (end - begin) / unheld_share;
-    return renew(k, end - begin, index, h, reach, known ? &unheld_[static_cast<std::size_t>(t)] : nullptr, few);
+    const std::size_t count = end - begin;
+    return renew(k, count, index, h, reach, known ? lists(t, count / unheld_share, count / regrow_share) : RenewLists{});
   });
   finish(k, entities, h, reach, out, rule, w, flags, known);
 }
@@ -301,19 +301,21 @@ void BroadPhase::find_again(const Components& k, std::span<const EntityId> entit
   if (!known) return find(k, entities, h, reach, out, rule, workers);
   ++finds_;
   clear_unheld(w);
-  const std::size_t few = entities.size() / unheld_share / static_cast<std::size_t>(w.threads());
+  const std::size_t share = entities.size() / static_cast<std::size_t>(w.threads());
   const auto flags = w.or_over_ranges(changed.size(), min_parallel_items, [&](int t, std::size_t begin, std::size_t end) {
     const auto index = [&](std::size_t j) { return index_of_[changed[begin + j]]; };
-    return renew(k, end - begin, index, h, reach, &unheld_[static_cast<std::size_t>(t)], few);
+    return renew(k, end - begin, index, h, reach, lists(t, share / unheld_share, share / regrow_share));
   });
   finish(k, entities, h, reach, out, rule, w, flags, true);
 }
 
-// One empty list per thread (a list of a range that is not split this time
+// Two empty lists per thread (a list of a range that is not split this time
 // would otherwise hold the last call's).
 void BroadPhase::clear_unheld(const Workers& w) {
   unheld_.resize(static_cast<std::size_t>(w.threads()));
+  escaped_.resize(static_cast<std::size_t>(w.threads()));
   for (std::vector<std::uint32_t>& part : unheld_) part.clear();
+  for (std::vector<std::uint32_t>& part : escaped_) part.clear();
 }
 
 // (Compared by ranges on a team: at every find, 400 KB at 100 000 bodies.)
@@ -328,18 +330,29 @@ bool BroadPhase::same_bodies(std::span<const EntityId> entities, Workers& w) con
 
 // Each listed body's swept box made again (body index(j) for j < count, of
 // entities_, the grid's bodies). Returns bit 1 when a body left its box in
-// the grid (then the grid finds not every pair of boxes) or its mass's
-// finiteness changed (a NaN fails: a rebuild, which handles it); bit 2 when
-// a box changed; bit 4 when more than `few` left their last box. Those are
-// appended to *unheld when it is given (the last boxes are the last call's
-// pairs'); none given, bit 4 is set.
+// the grid (then the grid finds not every pair of boxes: regrow() or a
+// rebuild) or its mass's finiteness changed, bit 8 too then (a rebuild);
+// bit 2 when a box changed; bit 4 when more than `lists.few` left their last
+// box, bit 16 when more than `lists.few_escaped` left their box in the grid.
+// Those are appended to *lists.unheld (the last boxes are the last call's
+// pairs'), these to *lists.escaped; a list not given, its bit is set.
 template <class Index>
 std::uint8_t BroadPhase::renew(const Components& k, std::size_t count, Index index, double h, double reach,
-                               std::vector<std::uint32_t>* unheld, std::size_t few) {
-  bool inside = true;
-  const auto stays = [&](std::uint32_t i, unsigned f) {
-    return !(f & escaped) && fixed_[i] == !std::isfinite(k.mass[entities_[i]]);
+                               RenewLists lists) {
+  // Some body left its fat box (and all were listed); some body's mass
+  // turned finite or infinite (looked at until one is: the grid lists no
+  // pair of two infinite masses).
+  bool out = false, listed = keeps_unchanged && lists.escaped, refixed = false;
+  const auto look = [&](std::uint32_t i, unsigned f) {
+    if (f & escaped) [[unlikely]] {
+      out = true;
+      listed = listed && lists.escaped->size() < lists.few_escaped;
+      if (listed) lists.escaped->push_back(i);
+    }
+    if (!refixed) refixed = fixed_[i] != !std::isfinite(k.mass[entities_[i]]);
   };
+  std::vector<std::uint32_t>* const unheld = lists.unheld;
+  const std::size_t few = lists.few;
   bool counting = keeps_unchanged && unheld, moved = false;
   std::size_t j = 0;
   for (; counting && j < count; ++j) {
@@ -350,21 +363,25 @@ std::uint8_t BroadPhase::renew(const Components& k, std::size_t count, Index ind
       counting = unheld->size() < few;
       if (counting) unheld->push_back(i);
     }
-    if (inside) inside = stays(i, f);
+    look(i, f);
   }
   if (j < count) moved = true;  // (not known, or a body left its last box: its box changed)
   for (; j < count; ++j) {
     const std::uint32_t i = index(j);
     const unsigned f = renew_swept(k, entities_[i], h, reach, current_[i], boxes_[i]);
-    if (inside) inside = stays(i, f);
+    look(i, f);
   }
-  return static_cast<std::uint8_t>((inside ? 0 : 1) | (moved ? 2 : 0) | (counting ? 0 : 4));
+  return static_cast<std::uint8_t>((out || refixed ? 1 : 0) | (moved ? 2 : 0) | (counting ? 0 : 4) | (refixed ? 8 : 0) |
+                                   (out && !listed ? 16 : 0));
 }
 
 // find()'s pairs once renew() has made the boxes and said what changed.
 void BroadPhase::finish(const Components& k, std::span<const EntityId> entities, double h, double reach,
                         std::vector<Pair>& out, PairRule rule, Workers& w, std::uint8_t flags, bool known) {
   last_h_ = h, last_reach_ = reach;
+  // (The browser's build, short of room, builds the grid again.)
+  if ((flags & 1) && keeps_unchanged && known && !(flags & (8 | 16)) && regrow(k, h))
+    flags &= ~1;  // every body in its fat box again
   if (flags & 1) fat_rebuild(k, entities, h, w);
   if (known && flags == 0) {
     out.assign(last_found_.begin(), last_found_.end());
@@ -481,19 +498,12 @@ void BroadPhase::find_selected(const Components& k, std::span<const EntityId> en
 
 void BroadPhase::fat_rebuild(const Components& k, std::span<const EntityId> entities, double h, Workers& w) {
   const std::size_t n = entities.size();
+  ++builds_;
   boxes_.resize(n);
   fixed_.resize(n);
   w.for_ranges(n, min_parallel_items, [&](int, std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
-      const Bounds& c = current_[i];
-      // Ahead along the velocity too, and only ahead: a falling body stays in
-      // its box for a few calls instead of leaving it at every one, and the
-      // box does not grow behind it (where it only adds candidate pairs).
-      const Vector d = (fat_steps * h) * k.velocity[entities[i]];
-      // Rounded outwards to float: the grid's boxes contain the exact ones, so
-      // it finds a superset of the pairs, which the exact test trims.
-      boxes_[i] = FloatBox::outward(c.x0 - fat_margin + std::min(d.x, 0.0), c.y0 - fat_margin + std::min(d.y, 0.0),
-                                    c.x1 + fat_margin + std::max(d.x, 0.0), c.y1 + fat_margin + std::max(d.y, 0.0));
+      boxes_[i] = fat_box(current_[i], k.velocity[entities[i]], h);
       fixed_[i] = !std::isfinite(k.mass[entities[i]]);
     }
   });
@@ -504,6 +514,40 @@ void BroadPhase::fat_rebuild(const Components& k, std::span<const EntityId> enti
     for (std::size_t i = 0; i < n; ++i) index_of_[entities[i]] = static_cast<std::uint32_t>(i);
   }
   fat_built_ = true;
+}
+
+// A body's fat box: its swept box grown by fat_margin, and ahead along its
+// velocity by fat_steps calls of h ms, only ahead: a falling body stays in
+// its box for a few calls instead of leaving it at every one, and the box
+// does not grow behind it (where it only adds candidate pairs). Rounded
+// outwards to float: the grid's boxes contain the exact ones, so it finds a
+// superset of the pairs, which the exact test trims.
+FloatBox BroadPhase::fat_box(const Bounds& c, Vector v, double h) const {
+  const Vector d = (fat_steps * h) * v;
+  return FloatBox::outward(c.x0 - fat_margin + std::min(d.x, 0.0), c.y0 - fat_margin + std::min(d.y, 0.0),
+                           c.x1 + fat_margin + std::max(d.x, 0.0), c.y1 + fat_margin + std::max(d.y, 0.0));
+}
+
+// When but a few bodies left their fat boxes (renew() listed them all in
+// escaped_ and said none's mass turned finite or infinite), only those
+// take new fat boxes in the grid (UniformGrid::update)
+// instead of a build of every body's: a landing rain of 100 000 has some
+// hundred bodies bounce out of their boxes at nearly every step, where a
+// build took 3.7 ms. The same pairs either way: the grid's candidates are
+// a superset of the fat boxes' overlapping pairs, and the pairs are those
+// of the exact boxes. False, with nothing changed, where a build is due: a
+// box with a NaN bound (a build keeps it out of the grid), or more than one
+// body in regrow_share moved since the last build (the moved boxes slow the
+// grid's queries, and their old pairs stay among its candidates).
+bool BroadPhase::regrow(const Components& k, double h) {
+  moving_.clear();
+  for (const std::vector<std::uint32_t>& part : escaped_) moving_.insert(moving_.end(), part.begin(), part.end());
+  if (grid_.updated() + moving_.size() > entities_.size() / regrow_share) return false;
+  for (const std::uint32_t i : moving_)
+    if (!fat_box(current_[i], k.velocity[entities_[i]], h).valid()) return false;
+  for (const std::uint32_t i : moving_) boxes_[i] = fat_box(current_[i], k.velocity[entities_[i]], h);
+  grid_.update(moving_, boxes_);
+  return true;
 }
 
 void candidate_pairs(const Components& k, std::span<const EntityId> entities, double h, double reach,

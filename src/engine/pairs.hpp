@@ -19,7 +19,10 @@
 //    definition brute_force_pairs() keeps for the tests. The grid is built
 //    on boxes grown by `fat_margin` (and by `fat_steps` calls' motion along
 //    the velocity) and kept while every body stays inside its fat box: a
-//    resting pile, or bodies falling together, cost a filter per call, not a grid.
+//    resting pile, or bodies falling together, cost a filter per call, not a
+//    grid. The few bodies that leave theirs (bouncing off a pile) are given
+//    new ones in the kept grid (regrow()); many, or a mass turned finite or
+//    infinite, build it again.
 // Pairs of two infinite masses are never listed (two walls never collide),
 // nor pairs the bodies' contact rules exclude (engine/rules.hpp: filters,
 // sensors, one-way platforms), tested only while some body has rules.
@@ -71,6 +74,9 @@ class BroadPhase {
   // `finds()` counts the calls of find(), to tell whose that last one was.
   bool holds(const Components& k, std::span<const EntityId> entities, Workers* workers = nullptr) const;
   std::uint64_t finds() const { return finds_; }
+  // How many times find() built its grid (not counting the few bodies
+  // given new boxes in it: regrow()).
+  std::uint64_t builds() const { return builds_; }
   // The pairs of find(h, 0) that include a selected body (`selected`, by
   // entity id; CCD's fast bodies in the auto mode). A few selected bodies
   // are each tested against every body, which costs less than a grid of the
@@ -146,11 +152,27 @@ class BroadPhase {
   bool row_refresh(const Components& k, std::uint32_t i);
   // find().
   void fat_rebuild(const Components& k, std::span<const EntityId> entities, double h, Workers& w);
+  FloatBox fat_box(const Bounds& swept, Vector v, double h) const;
+  bool regrow(const Components& k, double h);
+  // Past one body in this many given new fat boxes since the grid was built,
+  // it is built again (regrow()).
+  static constexpr std::size_t regrow_share = 16;
+  std::vector<std::uint32_t> moving_;  // regrow(): the bodies that left their fat boxes
   bool same_bodies(std::span<const EntityId> entities, Workers& w) const;  // the grid's, fat_built_
   void clear_unheld(const Workers& w);
+  // renew()'s lists of a range: the bodies whose box left its last one (up
+  // to `few`), those that left their fat box (up to `few_escaped`).
+  struct RenewLists {
+    std::vector<std::uint32_t>* unheld = nullptr;
+    std::vector<std::uint32_t>* escaped = nullptr;
+    std::size_t few = 0, few_escaped = 0;
+  };
+  RenewLists lists(int t, std::size_t few, std::size_t few_escaped) {
+    const auto at = static_cast<std::size_t>(t);
+    return {&unheld_[at], &escaped_[at], few, few_escaped};
+  }
   template <class Index>
-  std::uint8_t renew(const Components& k, std::size_t count, Index index, double h, double reach,
-                     std::vector<std::uint32_t>* unheld, std::size_t few);
+  std::uint8_t renew(const Components& k, std::size_t count, Index index, double h, double reach, RenewLists lists);
   void finish(const Components& k, std::span<const EntityId> entities, double h, double reach, std::vector<Pair>& out,
               PairRule rule, Workers& w, std::uint8_t flags, bool known);
   void pairs_of_candidates(std::span<const EntityId> entities, std::vector<Pair>& out, Workers& w);
@@ -187,6 +209,7 @@ class BroadPhase {
   std::vector<Bounds> current_;  // this call's exact boxes
   double last_h_ = 0.0, last_reach_ = 0.0;  // this call's h and reach
   std::uint64_t finds_ = 0;      // calls of find()
+  std::uint64_t builds_ = 0;     // fat_rebuild()s
   std::vector<Bounds> scan_;     // find_selected()'s swept boxes
   std::vector<std::vector<Pair>> range_pairs_;  // find() with threads: each range's pairs, joined in order
   std::vector<Pair>& range_list(int t, const Workers& w) { return part_of(range_pairs_, t, w.threads()); }
@@ -197,6 +220,7 @@ class BroadPhase {
   std::vector<Pair> last_found_;
   bool found_valid_ = false;  // (never with contact rules: they read more than the boxes)
   std::vector<std::vector<std::uint32_t>> unheld_;  // by thread: its range's bodies whose box left its last one
+  std::vector<std::vector<std::uint32_t>> escaped_;  // by thread: its range's bodies whose box left its fat box
   std::vector<PairKey> late_;                        // pairs_near_last(): the unheld bodies' pairs
   std::vector<Pair> merged_;                         // pairs_near_last(): scratch
 };
