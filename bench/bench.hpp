@@ -93,6 +93,16 @@ class Engine {
   // Centre and velocity of every body, in the scene's units and order
   // (fixed ones included). out is resized to the scene's body count.
   virtual void read(std::vector<Body>& out) const = 0;
+  // The engine's own time a stage, step by step (`--stages`): the harness
+  // calls keep_stage_times() after each step, outside the step's timing, and
+  // stages() has the stages' names and each step's ms in each. Ours alone
+  // (physics::profile); the peers keep none.
+  struct StageSteps {
+    std::vector<std::string> names;
+    std::vector<std::vector<double>> steps;  // by step, by stage
+  };
+  virtual void keep_stage_times() {}
+  virtual const StageSteps* stages() const { return nullptr; }
   // The heap the scene's map took when the adapter built it (ours: the tile
   // layer; the peers: its static boxes), MB (2^20 bytes); 0 without a map.
   double map_mb = 0;

@@ -41,6 +41,20 @@ class Ours final : public Engine {
   Ours& operator=(const Ours&) = delete;
 
   void step() override { physics::step(world_); }
+  const StageSteps* stages() const override { return &stages_; }
+  // The last step's time a stage: the profile's totals (its means times the
+  // steps taken) less the step before's. Called after every step.
+  void keep_stage_times() override {
+    const std::vector<physics::StageTime> p = physics::profile(world_);
+    const double steps = static_cast<double>(stages_.steps.size() + 1);
+    if (stages_.names.empty())
+      for (const physics::StageTime& t : p) stages_.names.emplace_back(t.stage), totals_.push_back(0.0);
+    std::vector<double>& now = stages_.steps.emplace_back(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const double total = p[i].ms_per_step * steps;
+      now[i] = total - totals_[i], totals_[i] = total;
+    }
+  }
 
   // The map as one tile layer (its definition freed before the heap is measured again).
   void add_map(const Scene& s) {
@@ -88,6 +102,8 @@ class Ours final : public Engine {
   double height_;
   physics::WorldId world_;
   std::vector<physics::BodyId> ids_;
+  StageSteps stages_;
+  std::vector<double> totals_;  // by stage: ms up to the last step kept
 };
 
 }  // namespace

@@ -78,6 +78,7 @@ struct Options {
   std::string child;    // internal: "ENGINE,SCENE,N": run only that and print its RESULT line
   bool list = false;    // internal: print the engines linked into this binary
   bool round_trip = false;  // --round-trip: only print the cores' round trip (round_trip.hpp)
+  bool stages = false;      // --stages (with --child): the engine's stage times over the median tenth of the steps
 };
 
 struct Quality {
@@ -264,6 +265,36 @@ double others_load(const CpuTimes& a, const CpuTimes& b, double wall_s) {
   return std::max(0.0, ((b.machine_s - a.machine_s) - ours) / wall_s);
 }
 
+// --stages: the engine's own time a stage over the median tenth of the timed
+// steps (ranked by their time; `first`: the first timed step's index), to
+// stderr: what a median step is made of, where the means over a run mix
+// its phases (a landing step and a settled one).
+void print_stages(const bench::Engine& e, const std::vector<double>& times, std::size_t first) {
+  const bench::Engine::StageSteps* st = e.stages();
+  if (!st || st->steps.size() < first + times.size() || times.empty()) {
+    std::fprintf(stderr, "stages: none kept (ours and ours-2t keep them)\n");
+    return;
+  }
+  std::vector<std::size_t> rank(times.size());
+  for (std::size_t i = 0; i < rank.size(); ++i) rank[i] = i;
+  std::sort(rank.begin(), rank.end(), [&](std::size_t a, std::size_t b) { return times[a] < times[b]; });
+  const std::size_t from = times.size() * 45 / 100, to = std::max(from + 1, times.size() * 55 / 100);
+  std::vector<double> mean(st->names.size(), 0.0);
+  double step_ms = 0.0;
+  for (std::size_t k = from; k < to; ++k) {
+    step_ms += times[rank[k]] / static_cast<double>(to - from);
+    for (std::size_t j = 0; j < mean.size(); ++j) mean[j] += st->steps[first + rank[k]][j] / static_cast<double>(to - from);
+  }
+  std::fprintf(stderr, "stages over the median tenth of the timed steps (%zu of %zu, %.4f ms a step):\n", to - from,
+               times.size(), step_ms);
+  double sum = 0.0;
+  for (std::size_t j = 0; j < mean.size(); ++j) {
+    sum += mean[j];
+    if (mean[j] > 0.0) std::fprintf(stderr, "  %-12s %.4f ms\n", st->names[j].c_str(), mean[j]);
+  }
+  std::fprintf(stderr, "  (the stages' sum %.4f ms)\n", sum);
+}
+
 Result run(const std::string& engine, const Scene& s, const Options& o) {
   using clock = std::chrono::steady_clock;
   Result r;
@@ -285,10 +316,13 @@ Result run(const std::string& engine, const Scene& s, const Options& o) {
     e->step();
     const auto b = clock::now();
     times.push_back(std::chrono::duration<double, std::milli>(b - a).count());
+    if (o.stages) e->keep_stage_times();
     r.steps_run = i + 1;
     if (std::chrono::duration<double>(b - start).count() > budget) break;
   }
-  if (static_cast<int>(times.size()) > warmup) times.erase(times.begin(), times.begin() + warmup);
+  const bool past_warmup = static_cast<int>(times.size()) > warmup;
+  if (past_warmup) times.erase(times.begin(), times.begin() + warmup);
+  if (o.stages) print_stages(*e, times, past_warmup ? static_cast<std::size_t>(warmup) : 0);
   r.median_ms = percentile(times, 0.5);
   r.p95_ms = percentile(times, 0.95);
   std::vector<Body> end;
@@ -386,6 +420,8 @@ const char* usage =
     "             [--steps 600] [--warmup 60] [--out bench/RESULTS.md]\n"
     "             [--compare 0|1] [--budget 30 (s per run)] [--phase-budget 150 (s)] [--isolate 0|1]\n"
     "             [--round-trip (only print how long a cache line takes from core 0 to core 1 and back)]\n"
+    "             [--child ENGINE,SCENE,N (run that alone, print its RESULT line) [--stages (and, to stderr,\n"
+    "             ours' stage times over the median tenth of its steps)]]\n"
     "             [--repeats 3 (runs of ours and box2d3, alternated, on scenes of at most --repeat-below\n"
     "             25000 bodies but the tile maps; each row is the median run)]\n"
     "             (engines also: ours-course, our course solver on every scene; ours-2t, ours on two\n"
@@ -441,11 +477,16 @@ Options parse(int argc, char** argv) {
       o.round_trip = true;
       continue;
     }
+    if (a == "--stages") {
+      o.stages = true;
+      continue;
+    }
     if (i + 1 >= argc) throw std::invalid_argument("missing value after " + a);
     if (!set_option(o, a, argv[++i])) throw std::invalid_argument("unknown option " + a);
   }
   if (o.steps <= o.warmup || o.warmup < 0) throw std::invalid_argument("--steps must exceed --warmup >= 0");
   if (o.repeats < 1) throw std::invalid_argument("--repeats must be at least 1");
+  if (o.stages && o.child.empty()) throw std::invalid_argument("--stages goes with --child ENGINE,SCENE,N");
   // The strongest peers first, right after ours.
   if (!o.peers.empty() && !o.engines_given) o.engines = {"ours", "box2d3", "chipmunk-release", "box2d", "chipmunk"};
   return o;
