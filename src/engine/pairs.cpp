@@ -535,17 +535,17 @@ FloatBox BroadPhase::fat_box(const Bounds& c, Vector v, double h) const {
 // hundred bodies bounce out of their boxes at nearly every step, where a
 // build took 3.7 ms. The same pairs either way: the grid's candidates are
 // a superset of the fat boxes' overlapping pairs, and the pairs are those
-// of the exact boxes. False, with nothing changed, where a build is due: a
-// box with a NaN bound (a build keeps it out of the grid), or more than one
-// body in regrow_share moved since the last build (the moved boxes slow the
-// grid's queries, and their old pairs stay among its candidates).
+// of the exact boxes. False where a build is due (the grid untouched; it
+// makes every fat box again): a box with a NaN bound (a build keeps it out
+// of the grid), or more than one body in regrow_share moved since the last
+// build (the moved boxes slow the grid's queries, and their old pairs stay
+// among its candidates).
 bool BroadPhase::regrow(const Components& k, double h) {
   moving_.clear();
   for (const std::vector<std::uint32_t>& part : escaped_) moving_.insert(moving_.end(), part.begin(), part.end());
   if (grid_.updated() + moving_.size() > entities_.size() / regrow_share) return false;
   for (const std::uint32_t i : moving_)
-    if (!fat_box(current_[i], k.velocity[entities_[i]], h).valid()) return false;
-  for (const std::uint32_t i : moving_) boxes_[i] = fat_box(current_[i], k.velocity[entities_[i]], h);
+    if (!(boxes_[i] = fat_box(current_[i], k.velocity[entities_[i]], h)).valid()) return false;
   grid_.update(moving_, boxes_);
   return true;
 }
