@@ -42,11 +42,12 @@ class Ours final : public Engine {
 
   void step() override { physics::step(world_); }
   const StageSteps* stages() const override { return &stages_; }
-  // The last step's time a stage: the profile's totals (its means times the
-  // steps taken) less the step before's. Called after every step.
+  // The time a stage since the last call (the last step's, called after
+  // every step): the profile's totals (its means times the world's steps)
+  // less the last call's.
   void keep_stage_times() override {
     const std::vector<physics::StageTime> p = physics::profile(world_);
-    const double steps = static_cast<double>(stages_.steps.size() + 1);
+    const auto steps = static_cast<double>(physics::frame(world_));
     if (stages_.names.empty())
       for (const physics::StageTime& t : p) stages_.names.emplace_back(t.stage), totals_.push_back(0.0);
     std::vector<double>& now = stages_.steps.emplace_back(p.size());
